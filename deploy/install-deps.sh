@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages clearsky builds, tests and runs with, when any is missing.
+# Idempotent: does nothing (and needs no network) when everything is present.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git
+  libcpp-httplib-dev libssl-dev zlib1g-dev nlohmann-json3-dev
+  libopenexr-dev openexr libgeographiclib-dev
+  libsqlite3-dev sqlite3 libarchive-dev p7zip-full
+  prometheus-cpp-dev libspdlog-dev libcli11-dev libnlopt-cxx-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  wrk curl python3
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "install-deps: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
+fi

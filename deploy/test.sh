@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds, and runs the whole test suite with CTest, then the unit
+# tests again under AddressSanitizer + UndefinedBehaviorSanitizer.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+deploy/install-deps.sh
+
+if [ "${CI:-}" = "true" ] && [ ! -d ../shared/data/kider2014 ]; then
+  echo "test.sh: CI=true and ../shared/data/kider2014 is missing" >&2
+  exit 1
+fi
+
+jobs=$(nproc)
+deploy/build.sh
+(cd build && ctest --output-on-failure -j "$jobs" --timeout 1200)
+
+# Sanitizer build of the unit tests (no benchmarks), kept apart from the Release tree.
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCLEARSKY_SANITIZE=ON \
+  -DCLEARSKY_BUILD_BENCHMARKS=OFF
+cmake --build build-asan -j "$jobs"
+(cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  ctest --output-on-failure -j "$jobs" -L unit --timeout 1200)

@@ -1,0 +1,57 @@
+// What a model is and what it can answer, published as is by the API (STYLE.md
+// "Architecture"): id, version, citation, spectral range, parameter table, capabilities.
+// A request outside the capabilities is refused before anything is computed.
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace clearsky {
+
+struct ParameterSpec {
+  std::string name;         // as in requests, e.g. "turbidity"
+  std::string unit;         // "" for dimensionless
+  std::string description;
+  double default_value = 0;
+  double min_value = 0;     // inclusive
+  double max_value = 0;     // inclusive
+  bool integer = false;
+  // True for the shared atmosphere parameters (alpha, beta, g, turbidity, albedo), which map to
+  // AtmosphereParameters; false for options of this model (ModelConfig::options).
+  bool atmosphere = false;
+};
+
+struct ModelCapabilities {
+  double min_altitude_m = 0;   // observer altitudes answered
+  double max_altitude_m = 0;   // 0: ground only; > top of atmosphere: space views
+  bool view_from_space = false;
+  bool view_below_horizon = false;   // views with zenith > 90 degrees
+  bool aerial_perspective = false;   // radiance/transmittance to a point at a distance
+  double max_sun_zenith_deg = 90.0;  // > 90: the sun below the horizon is answered
+  int scattering_orders = 1;         // -1: all orders (e.g. fitted to a full solver)
+  bool per_sun_precomputation = false;
+  bool sun_irradiance = true;
+  bool sky_irradiance = true;
+};
+
+struct ModelDescriptor {
+  std::string id;        // "bruneton"
+  std::string name;      // "Bruneton 2008"
+  std::string version;   // bumped when numbers change; part of every cache key
+  std::string citation;
+  std::string summary;   // one paragraph: method and the 2016 study's choices
+  std::vector<double> native_wavelengths_nm;  // empty: any wavelength
+  double min_wavelength_nm = 0;   // answered spectral range
+  double max_wavelength_nm = std::numeric_limits<double>::infinity();
+  std::vector<ParameterSpec> parameters;
+  ModelCapabilities capabilities;
+
+  const ParameterSpec* find_parameter(const std::string& parameter_name) const {
+    for (const auto& p : parameters)
+      if (p.name == parameter_name) return &p;
+    return nullptr;
+  }
+};
+
+}  // namespace clearsky

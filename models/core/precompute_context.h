@@ -1,0 +1,47 @@
+// What a precomputation receives besides its parameters: a progress sink, a cancellation
+// flag, and an optional byte cache for its tables (the server backs it with versioned,
+// checksummed files; models/ never opens files itself).
+// Thread-safety: report() and cancelled() may be called from any worker thread.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace clearsky {
+
+class PrecomputeCancelled : public std::runtime_error {
+ public:
+  PrecomputeCancelled() : std::runtime_error("precomputation cancelled") {}
+};
+
+// A store of immutable blobs by key. load() returns nothing for a missing, stale or corrupt
+// entry (the implementation verifies version and checksum); store() failures are not fatal.
+class TableCache {
+ public:
+  virtual ~TableCache() = default;
+  virtual std::optional<std::string> load(const std::string& key) const = 0;
+  virtual void store(const std::string& key, std::string_view bytes) const = 0;
+};
+
+struct PrecomputeContext {
+  // fraction in [0, 1], stage a short human-readable name ("transmittance", "order 3", ...).
+  std::function<void(double fraction, std::string_view stage)> progress;
+  const std::atomic<bool>* cancel = nullptr;
+  const TableCache* cache = nullptr;
+  unsigned threads = 0;  // 0: all cores
+
+  void report(double fraction, std::string_view stage) const {
+    if (progress) progress(fraction, stage);
+  }
+  bool cancelled() const { return cancel != nullptr && cancel->load(std::memory_order_relaxed); }
+  // Throws PrecomputeCancelled when cancellation was requested.
+  void check_cancelled() const {
+    if (cancelled()) throw PrecomputeCancelled();
+  }
+};
+
+}  // namespace clearsky

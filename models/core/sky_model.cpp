@@ -1,0 +1,249 @@
+// The checks around every model query, and the default sky irradiance quadrature.
+#include "models/core/sky_model.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "models/core/quadrature.h"
+
+namespace clearsky {
+
+std::string ModelConfig::canonical_string() const {
+  std::ostringstream out;
+  out.precision(17);
+  out << atmosphere.canonical_string() << ";grid=" << wavelengths.canonical_string();
+  for (const auto& [name, value] : options) out << ';' << name << '=' << value;
+  return out.str();
+}
+
+void SpectralBatch::resize(std::size_t samples, std::size_t wavelengths) {
+  wavelength_count = wavelengths;
+  values.assign(samples * wavelengths, 0.0);
+  status.assign(samples, SampleStatus::ok);
+}
+
+SkyModel::SkyModel(ModelConfig config)
+    : config_(std::move(config)), atmosphere_(AtmosphereSpectra::build(config_.atmosphere, config_.wavelengths)) {}
+
+bool SkyModel::answers_wavelength(std::size_t i) const {
+  const double w = config_.wavelengths[i];
+  return w >= descriptor().min_wavelength_nm - 1e-9 && w <= descriptor().max_wavelength_nm + 1e-9;
+}
+
+SampleStatus SkyModel::check_sun(const SunPosition& sun) const {
+  if (!(std::isfinite(sun.zenith_rad) && std::isfinite(sun.azimuth_rad)) || sun.zenith_rad < 0.0 ||
+      sun.zenith_rad > kPi) {
+    return SampleStatus::invalid_input;
+  }
+  if (sun.zenith_rad > degrees_to_radians(descriptor().capabilities.max_sun_zenith_deg) + 1e-12) {
+    return SampleStatus::sun_below_horizon_unsupported;
+  }
+  return SampleStatus::ok;
+}
+
+SampleStatus SkyModel::check_viewpoint(const Viewpoint& viewpoint) const {
+  const auto& caps = descriptor().capabilities;
+  if (!std::isfinite(viewpoint.altitude_m)) return SampleStatus::invalid_input;
+  if (viewpoint.altitude_m < caps.min_altitude_m - 1e-9 || viewpoint.altitude_m > caps.max_altitude_m + 1e-9) {
+    return SampleStatus::viewpoint_unsupported;
+  }
+  return SampleStatus::ok;
+}
+
+SampleStatus SkyModel::check_view(const ViewDirection& view) const {
+  if (!(std::isfinite(view.zenith_rad) && std::isfinite(view.azimuth_rad)) || view.zenith_rad < 0.0 ||
+      view.zenith_rad > kPi) {
+    return SampleStatus::invalid_input;
+  }
+  if (view.zenith_rad > 0.5 * kPi + 1e-12 && !descriptor().capabilities.view_below_horizon) {
+    return SampleStatus::view_below_horizon_unsupported;
+  }
+  return SampleStatus::ok;
+}
+
+std::shared_ptr<const SunState> SkyModel::prepare_sun(const SunPosition& sun,
+                                                      const PrecomputeContext& context) const {
+  const SampleStatus status = check_sun(sun);
+  if (status != SampleStatus::ok) {
+    throw std::invalid_argument("sun_zenith: " + std::string(describe(status)));
+  }
+  return compute_sun_state(sun, context);
+}
+
+std::shared_ptr<const SunState> SkyModel::compute_sun_state(const SunPosition& sun,
+                                                            const PrecomputeContext&) const {
+  return std::make_shared<const SunState>(sun);
+}
+
+namespace {
+
+// Non-finite values are failures; negative values within rounding of zero are zeroed, others
+// are failures (the model has a bug that must not reach a user as a number).
+SampleStatus sanitize(std::span<double> values) {
+  double largest = 0.0;
+  for (double v : values) {
+    if (!std::isfinite(v)) return SampleStatus::numerical_failure;
+    largest = std::max(largest, std::abs(v));
+  }
+  for (double& v : values) {
+    if (v < 0.0) {
+      if (v < -1e-9 * largest - 1e-300) return SampleStatus::numerical_failure;
+      v = 0.0;
+    }
+  }
+  return SampleStatus::ok;
+}
+
+void zero_out_of_range(const SkyModel& model, std::span<double> values) {
+  for (std::size_t w = 0; w < values.size(); ++w) {
+    if (!model.answers_wavelength(w)) values[w] = 0.0;
+  }
+}
+
+}  // namespace
+
+void SkyModel::sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
+                            std::span<const ViewDirection> views, SpectralBatch& out) const {
+  const std::size_t n_wavelengths = wavelengths().size();
+  out.resize(views.size(), n_wavelengths);
+  const SampleStatus sun_status = check_sun(sun.sun());
+  const SampleStatus viewpoint_status = check_viewpoint(viewpoint);
+  // Gather the answerable views so that the model computes only those, in one batch.
+  std::vector<ViewDirection> answerable;
+  std::vector<std::size_t> index;
+  answerable.reserve(views.size());
+  index.reserve(views.size());
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    SampleStatus s = sun_status != SampleStatus::ok ? sun_status : viewpoint_status;
+    if (s == SampleStatus::ok) s = check_view(views[i]);
+    out.status[i] = s;
+    if (s == SampleStatus::ok) {
+      answerable.push_back(views[i]);
+      index.push_back(i);
+    }
+  }
+  if (answerable.empty()) return;
+  if (answerable.size() == views.size()) {
+    compute_sky_radiance(sun, viewpoint, views, out);
+  } else {
+    SpectralBatch partial;
+    partial.resize(answerable.size(), n_wavelengths);
+    compute_sky_radiance(sun, viewpoint, answerable, partial);
+    for (std::size_t k = 0; k < index.size(); ++k) {
+      std::copy(partial.spectrum(k).begin(), partial.spectrum(k).end(), out.spectrum(index[k]).begin());
+      out.status[index[k]] = partial.status[k];
+    }
+  }
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    auto spectrum = out.spectrum(i);
+    if (out.status[i] == SampleStatus::ok) {
+      zero_out_of_range(*this, spectrum);
+      out.status[i] = sanitize(spectrum);
+    }
+    if (out.status[i] != SampleStatus::ok) std::fill(spectrum.begin(), spectrum.end(), 0.0);
+  }
+}
+
+SpectralSample SkyModel::sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const {
+  SpectralSample sample{Spectrum(wavelengths().size(), 0.0), check_viewpoint(viewpoint)};
+  if (sample.status == SampleStatus::ok) sample.status = check_sun(sun.sun());
+  if (sample.status != SampleStatus::ok) return sample;
+  if (!descriptor().capabilities.sun_irradiance) {
+    sample.status = SampleStatus::invalid_input;
+    return sample;
+  }
+  sample.value = compute_sun_irradiance(sun, viewpoint);
+  zero_out_of_range(*this, {sample.value.data(), sample.value.size()});
+  sample.status = sanitize({sample.value.data(), sample.value.size()});
+  if (sample.status != SampleStatus::ok) sample.value = Spectrum(wavelengths().size(), 0.0);
+  return sample;
+}
+
+SpectralSample SkyModel::sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
+                                        const PlaneOrientation& plane) const {
+  SpectralSample sample{Spectrum(wavelengths().size(), 0.0), check_viewpoint(viewpoint)};
+  if (sample.status == SampleStatus::ok) sample.status = check_sun(sun.sun());
+  if (!(std::isfinite(plane.tilt_rad) && std::isfinite(plane.azimuth_rad)) || plane.tilt_rad < 0.0 ||
+      plane.tilt_rad > kPi) {
+    sample.status = SampleStatus::invalid_input;
+  }
+  if (sample.status != SampleStatus::ok) return sample;
+  sample.value = compute_sky_irradiance(sun, viewpoint, plane);
+  zero_out_of_range(*this, {sample.value.data(), sample.value.size()});
+  sample.status = sanitize({sample.value.data(), sample.value.size()});
+  if (sample.status != SampleStatus::ok) sample.value = Spectrum(wavelengths().size(), 0.0);
+  return sample;
+}
+
+Spectrum SkyModel::compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
+                                          const PlaneOrientation& plane) const {
+  return sky_irradiance_by_quadrature(sun, viewpoint, plane);
+}
+
+Spectrum SkyModel::sky_irradiance_by_quadrature(const SunState& sun, const Viewpoint& viewpoint,
+                                                const PlaneOrientation& plane, int zenith_nodes,
+                                                int azimuth_nodes) const {
+  // Directions on the plane's hemisphere: Gauss-Legendre in cos(theta') over (0, 1] times
+  // the midpoint rule in azimuth (exact for trigonometric polynomials of degree <
+  // azimuth_nodes), theta' measured from the plane normal. Each is rotated to the local sky
+  // frame; directions the model does not answer (below the horizon for ground-only models)
+  // contribute nothing, which is the sky-only irradiance.
+  const Vec3 normal = SkyDirection{plane.tilt_rad, plane.azimuth_rad}.unit_vector();
+  // An orthonormal frame (t, b, normal).
+  const Vec3 helper = std::abs(normal.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{0, 1, 0};
+  const Vec3 t = normalize(cross(helper, normal));
+  const Vec3 b = cross(normal, t);
+  const auto nodes = gauss_legendre(zenith_nodes, 0.0, 1.0);
+  std::vector<ViewDirection> views;
+  std::vector<double> weights;
+  views.reserve(static_cast<std::size_t>(zenith_nodes * azimuth_nodes));
+  for (const auto& [mu, w_mu] : nodes) {
+    const double sin_theta = safe_sqrt(1.0 - mu * mu);
+    for (int j = 0; j < azimuth_nodes; ++j) {
+      const double phi = 2.0 * kPi * (j + 0.5) / azimuth_nodes;
+      const Vec3 d = (sin_theta * std::cos(phi)) * t + (sin_theta * std::sin(phi)) * b + mu * normal;
+      views.push_back(SkyDirection::from_unit_vector(d));
+      weights.push_back(w_mu * mu * 2.0 * kPi / azimuth_nodes);
+    }
+  }
+  SpectralBatch radiance;
+  sky_radiance(sun, viewpoint, views, radiance);
+  Spectrum irradiance(wavelengths().size(), 0.0);
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    if (radiance.status[i] != SampleStatus::ok) continue;
+    const auto l = radiance.spectrum(i);
+    for (std::size_t w = 0; w < irradiance.size(); ++w) irradiance[w] += weights[i] * l[w];
+  }
+  return irradiance;
+}
+
+void validate_config(const ModelDescriptor& descriptor, const ModelConfig& config) {
+  config.atmosphere.validate();
+  for (const auto& [name, value] : config.options) {
+    const ParameterSpec* spec = descriptor.find_parameter(name);
+    if (spec == nullptr) {
+      throw std::invalid_argument(name + ": not a parameter of model " + descriptor.id);
+    }
+    if (!(value >= spec->min_value && value <= spec->max_value)) {
+      std::ostringstream msg;
+      msg << name << ": must be in [" << spec->min_value << ", " << spec->max_value << "]";
+      throw std::invalid_argument(msg.str());
+    }
+    if (spec->integer && value != std::floor(value)) {
+      throw std::invalid_argument(name + ": must be an integer");
+    }
+  }
+}
+
+double option_or_default(const ModelDescriptor& descriptor, const ModelConfig& config,
+                         const std::string& name) {
+  if (auto it = config.options.find(name); it != config.options.end()) return it->second;
+  const ParameterSpec* spec = descriptor.find_parameter(name);
+  if (spec == nullptr) throw std::logic_error("model " + descriptor.id + " has no parameter " + name);
+  return spec->default_value;
+}
+
+}  // namespace clearsky

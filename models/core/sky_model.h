@@ -1,0 +1,159 @@
+// The interface every model implements (STYLE.md "Architecture").
+//
+// Life cycle: a ModelFactory turns a ModelConfig (atmosphere, wavelength grid, model options)
+// into an immutable SkyModel; that is the model's precomputation (tables), explicit and
+// cancellable. Models whose precomputation depends on the sun (Nishita96, Haber) build an
+// immutable SunState per sun position in prepare_sun(); for the others a SunState just holds
+// the sun. Queries are const, thread-safe and batch-first, with a status per sample.
+//
+// The public query functions are non-virtual: they check each request against the
+// descriptor's capabilities before any computation and check every value the model produced
+// (no NaN, infinity or negative radiance leaves them), then call the protected compute_*
+// functions only for the samples the model can answer.
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "models/atmosphere/atmosphere_parameters.h"
+#include "models/atmosphere/atmosphere_spectra.h"
+#include "models/core/geometry.h"
+#include "models/core/model_descriptor.h"
+#include "models/core/precompute_context.h"
+#include "models/core/sample_status.h"
+#include "models/spectral/spectrum.h"
+#include "models/spectral/wavelength_grid.h"
+
+namespace clearsky {
+
+// Everything that selects a model's tables: the cache key is built from it.
+struct ModelConfig {
+  AtmosphereParameters atmosphere;
+  WavelengthGrid wavelengths = WavelengthGrid::paper_bins();
+  std::map<std::string, double> options;  // model-specific, named in the descriptor
+
+  std::string canonical_string() const;
+};
+
+// N spectra on one grid, row-major (sample i at values[i * wavelength_count]), with a status
+// per sample. Samples whose status is not ok hold zeros.
+struct SpectralBatch {
+  std::size_t wavelength_count = 0;
+  std::vector<double> values;
+  std::vector<SampleStatus> status;
+
+  void resize(std::size_t samples, std::size_t wavelengths);
+  std::size_t size() const { return status.size(); }
+  std::span<double> spectrum(std::size_t i) {
+    return {values.data() + i * wavelength_count, wavelength_count};
+  }
+  std::span<const double> spectrum(std::size_t i) const {
+    return {values.data() + i * wavelength_count, wavelength_count};
+  }
+};
+
+struct SpectralSample {
+  Spectrum value;
+  SampleStatus status = SampleStatus::ok;
+};
+
+// Orientation of a receiving plane: tilt from horizontal and azimuth of its normal (clockwise
+// from North), radians.
+struct PlaneOrientation {
+  double tilt_rad = 0;
+  double azimuth_rad = 0;
+};
+
+class SunState {
+ public:
+  explicit SunState(const SunPosition& sun) : sun_(sun) {}
+  virtual ~SunState() = default;
+  const SunPosition& sun() const { return sun_; }
+  virtual std::size_t memory_bytes() const { return sizeof(*this); }
+
+ private:
+  SunPosition sun_;
+};
+
+class SkyModel {
+ public:
+  virtual ~SkyModel() = default;
+  SkyModel(const SkyModel&) = delete;
+  SkyModel& operator=(const SkyModel&) = delete;
+
+  virtual const ModelDescriptor& descriptor() const = 0;
+  const ModelConfig& config() const { return config_; }
+  const WavelengthGrid& wavelengths() const { return config_.wavelengths; }
+  const AtmosphereSpectra& atmosphere() const { return atmosphere_; }
+  // Whether wavelength i of wavelengths() lies in the descriptor's spectral range. Values at
+  // other wavelengths are 0 and must be reported as wavelength_out_of_range by callers.
+  bool answers_wavelength(std::size_t i) const;
+  // Bytes held by the precomputed tables.
+  virtual std::size_t table_bytes() const { return 0; }
+
+  // Status of a sun position for this model (ok, sun_below_horizon_unsupported, invalid_input).
+  SampleStatus check_sun(const SunPosition& sun) const;
+  // Per-sun preparation; throws std::invalid_argument when check_sun() is not ok.
+  std::shared_ptr<const SunState> prepare_sun(const SunPosition& sun,
+                                              const PrecomputeContext& context = {}) const;
+
+  // Spectral sky radiance, W/(m2.sr.nm), for each view, on wavelengths().
+  void sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
+                    std::span<const ViewDirection> views, SpectralBatch& out) const;
+  // Direct solar irradiance on a plane normal to the sun, W/(m2.nm), at the viewpoint.
+  SpectralSample sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const;
+  // Diffuse irradiance from the sky on a plane, W/(m2.nm): the sky radiance integrated over
+  // the part of the sky the plane sees (ground-reflected light excluded).
+  SpectralSample sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
+                                const PlaneOrientation& plane = {}) const;
+
+ protected:
+  // Builds atmosphere() from config.atmosphere and config.wavelengths (validating both).
+  explicit SkyModel(ModelConfig config);
+
+  virtual std::shared_ptr<const SunState> compute_sun_state(const SunPosition& sun,
+                                                            const PrecomputeContext& context) const;
+  // Called with views whose status is ok; write out.spectrum(i) and may set out.status[i].
+  virtual void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
+                                    std::span<const ViewDirection> views,
+                                    SpectralBatch& out) const = 0;
+  virtual Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const = 0;
+  // Default: sky_irradiance_by_quadrature(). Models with an irradiance table override it.
+  virtual Spectrum compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
+                                          const PlaneOrientation& plane) const;
+
+  // Gauss-Legendre quadrature of L cos(theta) over the plane's hemisphere (restricted to the
+  // directions the model answers), zenith_nodes x azimuth_nodes directions.
+  Spectrum sky_irradiance_by_quadrature(const SunState& sun, const Viewpoint& viewpoint,
+                                        const PlaneOrientation& plane, int zenith_nodes = 24,
+                                        int azimuth_nodes = 48) const;
+
+ private:
+  SampleStatus check_viewpoint(const Viewpoint& viewpoint) const;
+  SampleStatus check_view(const ViewDirection& view) const;
+
+  ModelConfig config_;
+  AtmosphereSpectra atmosphere_;
+};
+
+// How a model is made: its descriptor and its precomputation.
+struct ModelFactory {
+  const ModelDescriptor* descriptor = nullptr;
+  // Validates config against the descriptor (std::invalid_argument naming the parameter),
+  // then precomputes. May throw PrecomputeCancelled.
+  std::shared_ptr<const SkyModel> (*create)(const ModelConfig& config,
+                                            const PrecomputeContext& context) = nullptr;
+};
+
+// Checks config.options names and ranges and the atmosphere against the descriptor; throws
+// std::invalid_argument naming the first offending parameter.
+void validate_config(const ModelDescriptor& descriptor, const ModelConfig& config);
+// The option value, or the descriptor's default.
+double option_or_default(const ModelDescriptor& descriptor, const ModelConfig& config,
+                         const std::string& name);
+
+}  // namespace clearsky

@@ -1,0 +1,20 @@
+// The list of registered models. Models are added here as their issues land.
+#include "models/registry.h"
+
+#include <vector>
+
+namespace clearsky {
+
+std::span<const ModelFactory> registered_models() {
+  static const std::vector<ModelFactory> factories = {};
+  return factories;
+}
+
+const ModelFactory* find_model(std::string_view id) {
+  for (const ModelFactory& factory : registered_models()) {
+    if (factory.descriptor->id == id) return &factory;
+  }
+  return nullptr;
+}
+
+}  // namespace clearsky

@@ -1,0 +1,7 @@
+// Test entry point: plain GoogleTest main, so every test program behaves the same under CTest.
+#include <gtest/gtest.h>
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
