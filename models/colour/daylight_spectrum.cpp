@@ -7,7 +7,7 @@ namespace clearsky {
 
 DaylightWeights daylight_weights(double x, double y) {
   const double m = 0.0241 + 0.2562 * x - 0.7341 * y;
-  return {(-1.3515 - 1.7703 * x + 2.9456 * y) / m, (0.0300 - 31.4424 * x + 30.0717 * y) / m};
+  return {(-1.3515 - 1.7703 * x + 5.9114 * y) / m, (0.0300 - 31.4424 * x + 30.0717 * y) / m};
 }
 
 Spectrum daylight_relative_spectrum(const DaylightWeights& w, const WavelengthGrid& grid) {
