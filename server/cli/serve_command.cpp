@@ -1,0 +1,109 @@
+// `clearsky serve`: the HTTP service. Options (or the same keys in --config, an INI/TOML
+// file) fill ServerConfig (server/config/server_config.h). At start the default tables of
+// every registered model are loaded from --cache-dir or built in the background, with
+// progress in the log; /healthz answers at once, /readyz once they are ready. SIGINT/SIGTERM
+// stop the server gracefully.
+#include <csignal>
+#include <filesystem>
+#include <thread>
+
+#include <pthread.h>
+#include <spdlog/spdlog.h>
+
+#include "models/registry.h"
+#include "server/cache/file_table_cache.h"
+#include "server/cli/commands.h"
+#include "server/http/http_server.h"
+
+namespace clearsky::cli {
+
+namespace {
+
+void run_server(const server::ServerConfig& config) {
+  // Signals are taken by one thread with sigwait (a handler may not call into the server).
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+
+  const std::filesystem::path db_parent = std::filesystem::path(config.db_path).parent_path();
+  if (!db_parent.empty()) std::filesystem::create_directories(db_parent);
+  server::FileTableCache cache(config.cache_dir);
+  server::Metrics metrics;
+  cache.set_observer([&metrics](bool hit) { metrics.observe_cache_lookup(hit); });
+
+  server::TableStore::Options options;
+  options.capacity = config.table_capacity;
+  options.build_wait = std::chrono::milliseconds(config.build_wait_ms);
+  options.retry_after_s = config.retry_after_s;
+  options.builder_threads = config.builder_threads;
+  options.cache = &cache;
+  const auto registered = registered_models();
+  server::TableStore tables({registered.begin(), registered.end()}, options);
+  tables.set_build_observer([&metrics](const std::string& id, double seconds, bool from_cache) {
+    metrics.observe_build(id, seconds, from_cache);
+  });
+  tables.start_default_builds();
+
+  server::HttpServer http(config, tables, metrics);
+  const int port = http.bind();
+  spdlog::info("clearsky serving on http://{}:{} ({} workers, {} models, cache {}, database {})", config.host, port,
+               config.worker_threads(), registered.size(), config.cache_dir, config.db_path);
+
+  std::thread signal_thread([&] {
+    int received = 0;
+    sigwait(&signals, &received);
+    spdlog::info("signal {}: stopping", received);
+    http.stop();
+  });
+  std::atomic<bool> done{false};
+  std::thread progress_thread([&] {
+    while (!done && !tables.ready()) {
+      for (int i = 0; i < 50 && !done; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      for (const ModelFactory& f : tables.factories()) {
+        const api::ModelState s = tables.default_state(f);
+        if (s.status == api::ModelState::Status::precomputing) {
+          spdlog::info("tables: {} {:.0f}% ({})", f.descriptor->id, 100.0 * s.progress, s.stage);
+        }
+      }
+    }
+    if (tables.ready()) spdlog::info("tables: every model is ready");
+  });
+
+  http.listen();
+  done = true;
+  progress_thread.join();
+  // The signal thread waits for a signal; after a stop from elsewhere, send it one.
+  pthread_kill(signal_thread.native_handle(), SIGTERM);
+  signal_thread.join();
+}
+
+}  // namespace
+
+void add_serve_command(CLI::App& app) {
+  auto* command = app.add_subcommand("serve", "Serve the HTTP API");
+  auto config = std::make_shared<server::ServerConfig>();
+  command->set_config("--config", "", "INI/TOML file with the options below as keys");
+  command->add_option("--host", config->host, "Address to listen on")->capture_default_str();
+  command->add_option("--port", config->port, "Port (0: any free port)")->capture_default_str()->check(CLI::Range(0, 65535));
+  command->add_option("--db", config->db_path, "SQLite database")->capture_default_str();
+  command->add_option("--cache-dir", config->cache_dir, "Disk cache of model tables")->capture_default_str();
+  command->add_option("--threads", config->threads, "HTTP worker threads (0: 4 per core, at least 8)")->capture_default_str();
+  command->add_option("--max-queued", config->max_queued, "Connections waiting for a worker")->capture_default_str();
+  command->add_option("--payload-max-bytes", config->payload_max_bytes, "Request body limit")->capture_default_str();
+  command->add_option("--read-timeout", config->read_timeout_s, "Socket read timeout, s")->capture_default_str();
+  command->add_option("--write-timeout", config->write_timeout_s, "Socket write timeout, s")->capture_default_str();
+  command->add_option("--keep-alive-max-count", config->keep_alive_max_count, "Requests per connection")->capture_default_str();
+  command->add_option("--keep-alive-timeout", config->keep_alive_timeout_s, "Idle keep-alive timeout, s")->capture_default_str();
+  command->add_option("--max-views", config->max_views, "Views per batch")->capture_default_str();
+  command->add_option("--max-wavelengths", config->max_wavelengths, "Wavelengths per request")->capture_default_str();
+  command->add_option("--max-skydome-size", config->max_skydome_size, "Skydome size limit, pixels")->capture_default_str();
+  command->add_option("--table-capacity", config->table_capacity, "Non-default table configurations kept")->capture_default_str();
+  command->add_option("--build-wait-ms", config->build_wait_ms, "Wait for a table build before 503, ms")->capture_default_str();
+  command->add_option("--retry-after", config->retry_after_s, "Retry-After of a 503, s")->capture_default_str();
+  command->add_option("--builder-threads", config->builder_threads, "Concurrent table builds")->capture_default_str();
+  command->callback([config] { run_server(*config); });
+}
+
+}  // namespace clearsky::cli
