@@ -78,6 +78,8 @@ HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& 
   http_->set_write_timeout(config_.write_timeout_s, 0);
   http_->set_keep_alive_max_count(config_.keep_alive_max_count);
   http_->set_keep_alive_timeout(config_.keep_alive_timeout_s);
+  // Small responses go out at once (no Nagle delay waiting for the client's delayed ACK).
+  http_->set_tcp_nodelay(true);
   install_routes();
 }
 

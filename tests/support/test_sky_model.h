@@ -25,25 +25,20 @@ inline std::atomic<int>& test_sky_builds() {
 }
 
 inline const ModelDescriptor& test_sky_descriptor() {
-  static const ModelDescriptor d = [] {
-    ModelDescriptor x;
-    x.id = "testsky";
-    x.name = "Analytic test sky";
-    x.version = "1";
-    x.citation = "tests/support/test_sky_model.h";
-    x.summary = "A closed-form sky for tests.";
-    x.min_wavelength_nm = 360.0;
-    x.max_wavelength_nm = 830.0;
-    x.parameters = {
-        {"turbidity", "", "scales the radiance", 2.53, 1.0, 10.0, false, true},
-        {"gain", "", "scales everything", 1.0, 0.1, 10.0, false, false},
-        {"build_ms", "ms", "build delay", 0.0, 0.0, 60000.0, true, false},
-    };
-    x.capabilities.min_altitude_m = 0.0;
-    x.capabilities.max_altitude_m = 1000.0;
-    x.capabilities.max_sun_zenith_deg = 90.0;
-    return x;
-  }();
+  static const ModelDescriptor d{
+      .id = "testsky",
+      .name = "Analytic test sky",
+      .version = "1",
+      .citation = "tests/support/test_sky_model.h",
+      .summary = "A closed-form sky for tests.",
+      .native_wavelengths_nm = {},
+      .min_wavelength_nm = 360.0,
+      .max_wavelength_nm = 830.0,
+      .parameters = {{"turbidity", "", "scales the radiance", 2.53, 1.0, 10.0, false, true},
+                     {"gain", "", "scales everything", 1.0, 0.1, 10.0, false, false},
+                     {"build_ms", "ms", "build delay", 0.0, 0.0, 60000.0, true, false}},
+      .capabilities = {.min_altitude_m = 0.0, .max_altitude_m = 1000.0, .max_sun_zenith_deg = 90.0},
+  };
   return d;
 }
 
