@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include "api/handlers/handlers.h"
+#include "api/skydome/skydome_render.h"
 #include "server/http/bounded_task_queue.h"
 
 namespace clearsky::server {
@@ -169,6 +170,24 @@ void HttpServer::install_routes() {
   s.Get("/v1/irradiance", handle(api::irradiance));
   s.Get("/v1/rgb", handle(api::rgb));
   s.Post("/v1/rgb", handle(api::rgb));
+
+  // The skydome is checked completely before the response starts; then it is computed band by
+  // band and streamed (chunked) from the content provider, which owns the render job.
+  s.Get("/v1/skydome", [this, limits](const httplib::Request& req, httplib::Response& res) {
+    const api::ApiContext context{tables_, limits};
+    auto job = std::make_shared<const api::SkydomeRender>(api::prepare_skydome(context, to_api_request(req)));
+    current_request.model = job->model_id();
+    res.set_header("Content-Disposition", "inline; filename=\"sky.exr\"");
+    res.set_chunked_content_provider("image/x-exr", [job](std::size_t, httplib::DataSink& sink) {
+      std::size_t unanswered = 0;
+      const bool complete = job->write(
+          [&sink](const char* data, std::size_t size) { return sink.is_writable() && sink.write(data, size); }, 0,
+          &unanswered);
+      if (unanswered > 0) spdlog::warn("skydome {}: {} pixels without a value, written as 0", job->model_id(), unanswered);
+      if (complete) sink.done();
+      return complete;
+    });
+  });
 
   s.Get("/healthz", [](const httplib::Request&, httplib::Response& res) {
     res.set_content(R"({"status":"ok"})", "application/json");
