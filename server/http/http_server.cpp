@@ -8,6 +8,7 @@
 #include <spdlog/spdlog.h>
 
 #include "api/handlers/handlers.h"
+#include "api/openapi/openapi_document.h"
 #include "api/skydome/skydome_render.h"
 #include "server/http/bounded_task_queue.h"
 
@@ -208,6 +209,10 @@ void HttpServer::install_routes() {
     body["models"] = models;
     response.body = body.dump();
     send(res, response);
+  });
+  s.Get("/openapi.json", [](const httplib::Request&, httplib::Response& res) {
+    static const std::string document = api::openapi_document().dump(2);
+    res.set_content(document, "application/json");
   });
   s.Get("/metrics", [this](const httplib::Request&, httplib::Response& res) {
     res.set_content(metrics_.scrape(tables_.table_bytes()), "text/plain; version=0.0.4");
