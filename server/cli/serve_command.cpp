@@ -1,5 +1,5 @@
-// `clearsky serve`: the HTTP service. Options (or the same keys in --config, an INI/TOML
-// file) fill ServerConfig (server/config/server_config.h). At start the default tables of
+// `clearsky serve`: the HTTP service. Options (or the same keys in the [serve] section of
+// `clearsky --config FILE serve`, an INI/TOML file) fill ServerConfig (server/config/server_config.h). At start the default tables of
 // every registered model are loaded from --cache-dir or built in the background, with
 // progress in the log; /healthz answers at once, /readyz once they are ready. SIGINT/SIGTERM
 // stop the server gracefully.
@@ -84,7 +84,9 @@ void run_server(const server::ServerConfig& config) {
 void add_serve_command(CLI::App& app) {
   auto* command = app.add_subcommand("serve", "Serve the HTTP API");
   auto config = std::make_shared<server::ServerConfig>();
-  command->set_config("--config", "", "INI/TOML file with the options below as keys");
+  // The configuration file belongs to the top-level command (CLI11 reads it there); the serve
+  // options are its [serve] section.
+  app.set_config("--config", "", "INI/TOML file; `clearsky serve` reads its [serve] section (keys: the long option names)");
   command->add_option("--host", config->host, "Address to listen on")->capture_default_str();
   command->add_option("--port", config->port, "Port (0: any free port)")->capture_default_str()->check(CLI::Range(0, 65535));
   command->add_option("--db", config->db_path, "SQLite database")->capture_default_str();
