@@ -58,12 +58,32 @@ TableStore::TableStore(std::vector<ModelFactory> factories, Options options)
 }
 
 TableStore::~TableStore() {
+  std::vector<OnDemandBuild> on_demand;
   {
     std::lock_guard lock(mutex_);
     stopping_ = true;
+    on_demand.swap(on_demand_);
   }
   changed_.notify_all();
   for (auto& t : builders_) t.join();
+  for (auto& b : on_demand) b.thread.join();
+}
+
+void TableStore::launch_locked(const std::shared_ptr<Entry>& entry) const {
+  // Join the builds that have finished, so that threads do not accumulate.
+  std::erase_if(on_demand_, [](OnDemandBuild& b) {
+    if (!b.done->load()) return false;
+    b.thread.join();
+    return true;
+  });
+  entry->status = api::ModelState::Status::precomputing;
+  auto done = std::make_shared<std::atomic<bool>>(false);
+  on_demand_.push_back({std::thread([this, entry, done] {
+                          build(*entry);
+                          changed_.notify_all();
+                          *done = true;
+                        }),
+                        done});
 }
 
 std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory& factory, const ModelConfig& config,
@@ -78,7 +98,9 @@ std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory&
   }
   if (!pinned) {
     std::size_t pending = 0;
-    for (const auto& e : queue_) pending += e->pinned ? 0 : 1;
+    for (const auto& [k, e] : entries_) {
+      pending += !e->pinned && e->status != api::ModelState::Status::ready && e->status != api::ModelState::Status::failed;
+    }
     if (pending >= options_.capacity) {
       throw api::not_ready(factory.descriptor->id, "too many table builds are pending; try again later",
                            options_.retry_after_s);
@@ -91,8 +113,12 @@ std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory&
   entry->pinned = pinned;
   entry->last_used = ++clock_;
   entries_.emplace(key, entry);
-  queue_.push_back(entry);
-  changed_.notify_all();
+  if (pinned) {
+    queue_.push_back(entry);
+    changed_.notify_all();
+  } else {
+    launch_locked(entry);
+  }
   return entry;
 }
 
@@ -105,10 +131,19 @@ std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory, c
   std::unique_lock lock(mutex_);
   const bool is_default = config.canonical_string() == ModelConfig{}.canonical_string();
   std::shared_ptr<Entry> entry = find_or_queue(factory, config, is_default);
+  bool launched_now = false;
+  if (entry->status == api::ModelState::Status::queued) {
+    // A request needs a queued default: build it now rather than after the queue.
+    std::erase(queue_, entry);
+    launch_locked(entry);
+    launched_now = true;
+  }
   const auto settled = [&] {
     return entry->status == api::ModelState::Status::ready || entry->status == api::ModelState::Status::failed;
   };
-  if (!settled() && !is_default) changed_.wait_for(lock, options_.build_wait, settled);
+  // Wait for a build that may be short (a non-default one, or one started by this request); a
+  // default build already under way since start is long: answer 503 at once.
+  if (!settled() && (launched_now || !is_default)) changed_.wait_for(lock, options_.build_wait, settled);
   if (entry->status == api::ModelState::Status::ready) return entry->model;
   if (entry->status == api::ModelState::Status::failed) {
     const std::string error = entry->error;
@@ -179,7 +214,7 @@ void TableStore::builder_loop() {
   }
 }
 
-void TableStore::build(Entry& entry) {
+void TableStore::build(Entry& entry) const {
   const std::string& id = entry.factory->descriptor->id;
   ObservedCache cache(options_.cache);
   PrecomputeContext context;

@@ -1,6 +1,9 @@
 // The server's built models, keyed by (model id, ModelConfig::canonical_string()): each
 // configuration is built once (single-flight: concurrent requests for it wait on the same
-// build), by background builder threads, with the disk TableCache passed to the model.
+// build), in the background, with the disk TableCache passed to the model. The default
+// configurations queued at start are built by `builder_threads` builders in registry order;
+// a configuration a request asks for (or a queued default a request needs) is built at once on
+// its own thread, so a cheap build never waits behind an expensive one.
 // A request waits up to build_wait for a build; past that it gets a 503 with Retry-After while
 // the build goes on. The default configuration of every model is pinned; other configurations
 // are evicted least-recently-used beyond `capacity` ready entries, and at most `capacity`
@@ -58,7 +61,9 @@ class TableStore final : public api::ModelProvider {
   struct Entry;
   std::shared_ptr<Entry> find_or_queue(const ModelFactory& factory, const ModelConfig& config, bool pinned) const;
   void builder_loop();
-  void build(Entry& entry);
+  // Starts entry's build on its own thread (caller holds mutex_).
+  void launch_locked(const std::shared_ptr<Entry>& entry) const;
+  void build(Entry& entry) const;
   void evict_locked() const;
 
   std::vector<ModelFactory> factories_;
@@ -71,6 +76,11 @@ class TableStore final : public api::ModelProvider {
   mutable std::uint64_t clock_ = 0;
   std::atomic<bool> stopping_{false};
   std::vector<std::thread> builders_;
+  struct OnDemandBuild {
+    std::thread thread;
+    std::shared_ptr<std::atomic<bool>> done;
+  };
+  mutable std::vector<OnDemandBuild> on_demand_;
 };
 
 }  // namespace clearsky::server

@@ -104,3 +104,36 @@ TEST(TableStore, EvictsLeastRecentlyUsedBeyondCapacity) {
 
 }  // namespace
 }  // namespace clearsky::server
+
+namespace clearsky::server {
+namespace {
+
+TEST(TableStore, OnDemandBuildsDoNotWaitBehindTheStartQueue) {
+  // The default build (slow here) occupies the only builder; a request for another
+  // configuration is built at once on its own thread.
+  std::vector<ModelFactory> factories = clearsky::testing::test_factories();
+  factories[0].create = [](const ModelConfig& config, const PrecomputeContext& context) {
+    if (config.options.empty()) {  // the default configuration: 2 s, cancellable
+      for (int i = 0; i < 200; ++i) {
+        context.check_cancelled();
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      }
+    }
+    return clearsky::testing::create_test_sky(config, context);
+  };
+  TableStore::Options options;
+  options.builder_threads = 1;
+  options.build_wait = std::chrono::milliseconds(3000);
+  TableStore store(factories, options);
+  store.start_default_builds();
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  EXPECT_EQ(store.default_state(store.factories()[0]).status, api::ModelState::Status::precomputing);
+  const auto start = std::chrono::steady_clock::now();
+  const auto model = store.model(store.factories()[0], with_options({{"gain", 3}}));
+  EXPECT_TRUE(model);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+  EXPECT_FALSE(store.ready());
+}
+
+}  // namespace
+}  // namespace clearsky::server
