@@ -10,6 +10,7 @@
 #include <pthread.h>
 #include <spdlog/spdlog.h>
 
+#include "models/colour/three_wavelength_rgb.h"
 #include "models/registry.h"
 #include "server/cache/file_table_cache.h"
 #include "server/cli/commands.h"
@@ -45,6 +46,18 @@ void run_server(const server::ServerConfig& config) {
     metrics.observe_build(id, seconds, from_cache);
   });
   tables.start_default_builds();
+  if (config.prebuild_three) {
+    // The paper's 3-wavelength colour method needs each model on its 3-point grid.
+    const ThreeWavelengthRgb three;
+    ModelConfig on_three_points;
+    on_three_points.wavelengths = three.grid();
+    for (const ModelFactory& f : tables.factories()) {
+      if (f.descriptor->min_wavelength_nm <= on_three_points.wavelengths[0] &&
+          f.descriptor->max_wavelength_nm >= on_three_points.wavelengths[2]) {
+        tables.prebuild(f, on_three_points);
+      }
+    }
+  }
 
   server::HttpServer http(config, tables, metrics);
   const int port = http.bind();
@@ -91,7 +104,7 @@ void add_serve_command(CLI::App& app) {
   command->add_option("--port", config->port, "Port (0: any free port)")->capture_default_str()->check(CLI::Range(0, 65535));
   command->add_option("--db", config->db_path, "SQLite database")->capture_default_str();
   command->add_option("--cache-dir", config->cache_dir, "Disk cache of model tables")->capture_default_str();
-  command->add_option("--threads", config->threads, "HTTP worker threads (0: 4 per core, at least 8)")->capture_default_str();
+  command->add_option("--threads", config->threads, "HTTP worker threads (0: 32 per core, at least 64)")->capture_default_str();
   command->add_option("--max-queued", config->max_queued, "Connections waiting for a worker")->capture_default_str();
   command->add_option("--payload-max-bytes", config->payload_max_bytes, "Request body limit")->capture_default_str();
   command->add_option("--read-timeout", config->read_timeout_s, "Socket read timeout, s")->capture_default_str();
@@ -105,6 +118,8 @@ void add_serve_command(CLI::App& app) {
   command->add_option("--build-wait-ms", config->build_wait_ms, "Wait for a table build before 503, ms")->capture_default_str();
   command->add_option("--retry-after", config->retry_after_s, "Retry-After of a 503, s")->capture_default_str();
   command->add_option("--builder-threads", config->builder_threads, "Concurrent table builds")->capture_default_str();
+  command->add_option("--prebuild-three", config->prebuild_three,
+                      "Also build the 3-wavelength tables of rgb method=three at start")->capture_default_str();
   command->callback([config] { run_server(*config); });
 }
 

@@ -9,7 +9,7 @@ namespace clearsky::server {
 unsigned ServerConfig::worker_threads() const {
   if (threads > 0) return threads;
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  return std::max(8u, 4u * cores);
+  return std::max(64u, 32u * cores);
 }
 
 }  // namespace clearsky::server

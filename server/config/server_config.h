@@ -6,7 +6,7 @@
 // | host, port            |       | 127.0.0.1, 8080 | where to listen (port 0: any free port)            |
 // | db                    | path  | var/clearsky.db | SQLite database (its parent directory is created)  |
 // | cache_dir             | path  | var/cache   | disk cache of model tables                             |
-// | threads               |       | 0           | HTTP worker threads; 0: 4 per core, at least 8 (a worker holds a keep-alive connection) |
+// | threads               |       | 0           | HTTP worker threads; 0: 32 per core, at least 64 (cpp-httplib holds a worker per keep-alive connection, so workers are connection slots; computations parallelise over the cores themselves) |
 // | max_queued            |       | 256         | accepted connections waiting for a worker (the acceptor waits beyond) |
 // | payload_max_bytes     | byte  | 8 MiB       | request body limit (413 beyond)                        |
 // | read/write_timeout_s  | s     | 10 / 30     | socket timeouts                                        |
@@ -18,7 +18,8 @@
 // | table_capacity        |       | 16          | non-default table configurations kept / pending        |
 // | build_wait_ms         | ms    | 2000        | how long a request waits for a table build before 503  |
 // | retry_after_s         | s     | 5           | Retry-After of a 503                                   |
-// | builder_threads       |       | 1           | concurrent table builds                                |
+// | builder_threads       |       | 1           | concurrent builds of the tables queued at start        |
+// | prebuild_three        |       | true        | also build each model on the 3-wavelength grid of /v1/rgb?method=three at start (after the defaults) |
 #pragma once
 
 #include <cstddef>
@@ -45,6 +46,7 @@ struct ServerConfig {
   int build_wait_ms = 2000;
   int retry_after_s = 5;
   unsigned builder_threads = 1;
+  bool prebuild_three = true;
 
   // The worker count threads resolves to.
   unsigned worker_threads() const;

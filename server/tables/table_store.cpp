@@ -46,8 +46,17 @@ class ObservedCache final : public TableCache {
   const TableCache* inner_;
 };
 
+const std::string& default_canonical_string() {
+  static const std::string canonical = ModelConfig{}.canonical_string();
+  return canonical;
+}
+
+std::string entry_key(const ModelFactory& factory, const std::string& canonical) {
+  return factory.descriptor->id + "|" + factory.descriptor->version + "|" + canonical;
+}
+
 std::string entry_key(const ModelFactory& factory, const ModelConfig& config) {
-  return factory.descriptor->id + "|" + factory.descriptor->version + "|" + config.canonical_string();
+  return entry_key(factory, config.canonical_string());
 }
 
 }  // namespace
@@ -87,8 +96,7 @@ void TableStore::launch_locked(const std::shared_ptr<Entry>& entry) const {
 }
 
 std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory& factory, const ModelConfig& config,
-                                                             bool pinned) const {
-  const std::string key = entry_key(factory, config);
+                                                             const std::string& key, bool pinned) const {
   // Caller holds mutex_.
   auto it = entries_.find(key);
   if (it != entries_.end()) {
@@ -128,9 +136,11 @@ std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory, c
   } catch (const std::invalid_argument& e) {
     throw api::from_invalid_argument(e);
   }
+  const std::string canonical = config.canonical_string();
+  const bool is_default = canonical == default_canonical_string();
+  const std::string key = entry_key(factory, canonical);
   std::unique_lock lock(mutex_);
-  const bool is_default = config.canonical_string() == ModelConfig{}.canonical_string();
-  std::shared_ptr<Entry> entry = find_or_queue(factory, config, is_default);
+  std::shared_ptr<Entry> entry = find_or_queue(factory, config, key, is_default);
   bool launched_now = false;
   if (entry->status == api::ModelState::Status::queued) {
     // A request needs a queued default: build it now rather than after the queue.
@@ -161,7 +171,7 @@ std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory, c
 api::ModelState TableStore::default_state(const ModelFactory& factory) const {
   std::lock_guard lock(mutex_);
   api::ModelState state;
-  const auto it = entries_.find(entry_key(factory, ModelConfig{}));
+  const auto it = entries_.find(entry_key(factory, default_canonical_string()));
   if (it == entries_.end()) return state;
   const Entry& e = *it->second;
   state.status = e.status;
@@ -176,13 +186,19 @@ api::ModelState TableStore::default_state(const ModelFactory& factory) const {
 
 void TableStore::start_default_builds() {
   std::lock_guard lock(mutex_);
-  for (const ModelFactory& f : factories_) find_or_queue(f, ModelConfig{}, true);
+  for (const ModelFactory& f : factories_) find_or_queue(f, ModelConfig{}, entry_key(f, default_canonical_string()), true);
+}
+
+void TableStore::prebuild(const ModelFactory& factory, const ModelConfig& config) {
+  validate_config(*factory.descriptor, config);
+  std::lock_guard lock(mutex_);
+  find_or_queue(factory, config, entry_key(factory, config), true);
 }
 
 bool TableStore::ready() const {
   std::lock_guard lock(mutex_);
   for (const ModelFactory& f : factories_) {
-    const auto it = entries_.find(entry_key(f, ModelConfig{}));
+    const auto it = entries_.find(entry_key(f, default_canonical_string()));
     if (it == entries_.end() || it->second->status != api::ModelState::Status::ready) return false;
   }
   return true;

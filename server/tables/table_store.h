@@ -51,6 +51,9 @@ class TableStore final : public api::ModelProvider {
 
   // Queues the default configuration of every model (the server does this at start).
   void start_default_builds();
+  // Queues another configuration to build in the background and keep (after the defaults;
+  // readiness does not wait for it). std::invalid_argument for an invalid configuration.
+  void prebuild(const ModelFactory& factory, const ModelConfig& config);
   // Whether the default tables of every model are ready.
   bool ready() const;
   // Bytes held by the tables of the ready entries, per model id.
@@ -59,7 +62,8 @@ class TableStore final : public api::ModelProvider {
 
  private:
   struct Entry;
-  std::shared_ptr<Entry> find_or_queue(const ModelFactory& factory, const ModelConfig& config, bool pinned) const;
+  std::shared_ptr<Entry> find_or_queue(const ModelFactory& factory, const ModelConfig& config, const std::string& key,
+                                       bool pinned) const;
   void builder_loop();
   // Starts entry's build on its own thread (caller holds mutex_).
   void launch_locked(const std::shared_ptr<Entry>& entry) const;
