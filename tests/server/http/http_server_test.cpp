@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "api/handlers/handlers.h"
+#include "models/colour/colour_spaces.h"
 #include "models/core/numeric.h"
 #include "tests/server/http/server_fixture.h"
 
@@ -47,6 +48,31 @@ TEST_F(HttpServerTest, RadianceEqualsTheDirectCall) {
   ASSERT_TRUE(post);
   ASSERT_EQ(post->status, 200) << post->body;
   EXPECT_EQ(nlohmann::json::parse(post->body)["samples"][0]["radiance"], j["samples"][0]["radiance"]);
+}
+
+TEST_F(HttpServerTest, IrradianceAndRgbEqualTheDirectCalls) {
+  auto c = client();
+  const auto model = tables->model(tables->factories()[0], ModelConfig{});
+  const SunPosition sun{degrees_to_radians(40.0), degrees_to_radians(100.0)};
+  const auto state = model->prepare_sun(sun);
+  const PlaneOrientation plane{degrees_to_radians(35.0), degrees_to_radians(160.0)};
+  const SpectralSample diffuse = model->sky_irradiance(*state, Viewpoint{}, plane);
+  const auto j = get_json(c, "/v1/irradiance?model=testsky&sun_zenith=40&sun_azimuth=100&tilt=35&surface_azimuth=160&spectral=true", 200);
+  for (std::size_t i = 0; i < diffuse.value.size(); ++i) {
+    EXPECT_EQ(j["diffuse"]["spectral_w_m2_nm"][i].get<double>(), diffuse.value[i]);
+  }
+  EXPECT_NEAR(j["diffuse"]["illuminance_lx"].get<double>(), spectrum_to_luminance(diffuse.value, model->wavelengths()),
+              1e-9 * j["diffuse"]["illuminance_lx"].get<double>());
+
+  SpectralBatch batch;
+  const std::vector<ViewDirection> views = {{degrees_to_radians(25.0), degrees_to_radians(300.0)}};
+  model->sky_radiance(*state, Viewpoint{}, views, batch);
+  const Spectrum l(std::vector<double>(batch.values.begin(), batch.values.end()));
+  const LinearSrgb expected = spectrum_to_linear_srgb(l, model->wavelengths());
+  const auto rgb = get_json(c, "/v1/rgb?model=testsky&sun_zenith=40&sun_azimuth=100&view_zenith=25&view_azimuth=300", 200);
+  EXPECT_NEAR(rgb["samples"][0]["rgb"][0].get<double>(), expected.r, 1e-12);
+  EXPECT_NEAR(rgb["samples"][0]["rgb"][1].get<double>(), expected.g, 1e-12);
+  EXPECT_NEAR(rgb["samples"][0]["rgb"][2].get<double>(), expected.b, 1e-12);
 }
 
 TEST_F(HttpServerTest, ErrorsUseOneFormat) {
