@@ -59,7 +59,7 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
   }
   const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config), std::nullopt);
   const SkyModel& model = *m.model;
-  const auto state = prepare_sun(model, sun);
+  const auto state = prepare_sun(context.models, m.model, sun);
   const PlaneOrientation plane{degrees_to_radians(tilt_deg), degrees_to_radians(surface_azimuth_deg)};
   const std::size_t n = model.wavelengths().size();
 

@@ -33,7 +33,7 @@ ApiResponse radiance(const ApiContext& context, const ApiRequest& request) {
   p.reject_unused();
 
   const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config), wavelengths);
-  const SpectralBatch batch = checked_sky_radiance(*m.model, sun, viewpoint, views);
+  const SpectralBatch batch = checked_sky_radiance(context.models, m.model, sun, viewpoint, views);
 
   ApiResponse response;
   response.model_id = factory.descriptor->id;

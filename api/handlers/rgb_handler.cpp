@@ -38,7 +38,7 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
     config.wavelengths = three.grid();
   }
   const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config), wavelengths);
-  const SpectralBatch batch = checked_sky_radiance(*m.model, sun, viewpoint, views);
+  const SpectralBatch batch = checked_sky_radiance(context.models, m.model, sun, viewpoint, views);
 
   nlohmann::json samples = nlohmann::json::array();
   const XyzWeights xyz(m.model->wavelengths());

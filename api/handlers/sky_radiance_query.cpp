@@ -7,9 +7,10 @@
 
 namespace clearsky::api {
 
-SpectralBatch checked_sky_radiance(const SkyModel& model, const SunSpec& sun, const Viewpoint& viewpoint,
-                                   const ViewList& views) {
-  const auto state = prepare_sun(model, sun);
+SpectralBatch checked_sky_radiance(const ModelProvider& provider, const std::shared_ptr<const SkyModel>& model_ptr,
+                                   const SunSpec& sun, const Viewpoint& viewpoint, const ViewList& views) {
+  const SkyModel& model = *model_ptr;
+  const auto state = prepare_sun(provider, model_ptr, sun);
   SpectralBatch batch;
   model.sky_radiance(*state, viewpoint, views.views, batch);
   for (std::size_t i = 0; i < batch.size(); ++i) {

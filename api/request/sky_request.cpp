@@ -179,9 +179,10 @@ void require_answer(SampleStatus status, const std::string& parameter, const std
   throw cannot_answer(parameter, model_id, std::string(describe(status)));
 }
 
-std::shared_ptr<const SunState> prepare_sun(const SkyModel& model, const SunSpec& sun) {
-  require_answer(model.check_sun(sun.sun), sun.parameter, model.descriptor().id);
-  return model.prepare_sun(sun.sun);
+std::shared_ptr<const SunState> prepare_sun(const ModelProvider& provider, const std::shared_ptr<const SkyModel>& model,
+                                            const SunSpec& sun) {
+  require_answer(model->check_sun(sun.sun), sun.parameter, model->descriptor().id);
+  return provider.sun_state(model, sun.sun);
 }
 
 }  // namespace clearsky::api

@@ -65,8 +65,9 @@ ModelOnGrid model_on_wavelengths(const ModelProvider& provider, const ModelFacto
 
 // 422 (or 500 for numerical_failure) naming parameter, when status is not ok.
 void require_answer(SampleStatus status, const std::string& parameter, const std::string& model_id);
-// The sun state, with the checks of require_answer on the sun.
-std::shared_ptr<const SunState> prepare_sun(const SkyModel& model, const SunSpec& sun);
+// The sun state (shared through the provider), with the checks of require_answer on the sun.
+std::shared_ptr<const SunState> prepare_sun(const ModelProvider& provider, const std::shared_ptr<const SkyModel>& model,
+                                            const SunSpec& sun);
 
 // Applies one atmosphere parameter by its request name; false when the name is not one.
 bool set_atmosphere_parameter(AtmosphereParameters& atmosphere, const std::string& name, double value);

@@ -34,6 +34,12 @@ class ModelProvider {
   // rejects, 503 (with Retry-After) while its tables are being built, 500 when the build failed.
   virtual std::shared_ptr<const SkyModel> model(const ModelFactory& factory, const ModelConfig& config) const = 0;
   virtual ModelState default_state(const ModelFactory& factory) const = 0;
+  // The model's per-sun state (SkyModel::prepare_sun; sun already checked). Providers may
+  // share it between requests for the same model and sun: it is immutable.
+  virtual std::shared_ptr<const SunState> sun_state(const std::shared_ptr<const SkyModel>& model,
+                                                    const SunPosition& sun) const {
+    return model->prepare_sun(sun);
+  }
 };
 
 }  // namespace clearsky::api

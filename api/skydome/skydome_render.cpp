@@ -98,8 +98,8 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
   zenith.views.push_back({0.0, 0.0});
   zenith.zenith_deg.push_back(0.0);
   zenith.azimuth_deg.push_back(0.0);
-  checked_sky_radiance(*s->m.model, s->sun, s->viewpoint, zenith);
-  s->sun_state = prepare_sun(*s->m.model, s->sun);
+  checked_sky_radiance(context.models, s->m.model, s->sun, s->viewpoint, zenith);
+  s->sun_state = prepare_sun(context.models, s->m.model, s->sun);
   s->xyz = std::make_unique<XyzWeights>(s->m.model->wavelengths());
   return SkydomeRender(std::move(s));
 }

@@ -136,7 +136,11 @@ std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory, c
   } catch (const std::invalid_argument& e) {
     throw api::from_invalid_argument(e);
   }
-  const std::string canonical = config.canonical_string();
+  // The default configuration (most requests) skips building its canonical text.
+  static const AtmosphereParameters default_atmosphere;
+  static const WavelengthGrid default_grid = ModelConfig{}.wavelengths;
+  const bool plain = config.options.empty() && config.atmosphere == default_atmosphere && config.wavelengths == default_grid;
+  const std::string canonical = plain ? default_canonical_string() : config.canonical_string();
   const bool is_default = canonical == default_canonical_string();
   const std::string key = entry_key(factory, canonical);
   std::unique_lock lock(mutex_);
@@ -166,6 +170,23 @@ std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory, c
           << (entry->status == api::ModelState::Status::queued ? "queued" : "in progress") << ", "
           << std::lround(100.0 * entry->progress.load()) << "% done)";
   throw api::not_ready(factory.descriptor->id, message.str(), options_.retry_after_s);
+}
+
+std::shared_ptr<const SunState> TableStore::sun_state(const std::shared_ptr<const SkyModel>& model,
+                                                      const SunPosition& sun) const {
+  const SunKey key{model.get(), sun.zenith_rad, sun.azimuth_rad};
+  {
+    std::lock_guard lock(sun_mutex_);
+    const auto it = sun_states_.find(key);
+    if (it != sun_states_.end() && it->second.model.lock() == model) return it->second.state;
+  }
+  // Computed outside the lock: concurrent first requests may compute it twice, which is
+  // harmless (the states are equal and immutable).
+  auto state = model->prepare_sun(sun);
+  std::lock_guard lock(sun_mutex_);
+  if (sun_states_.size() >= kSunStates) sun_states_.clear();
+  sun_states_[key] = {model, state};
+  return state;
 }
 
 api::ModelState TableStore::default_state(const ModelFactory& factory) const {

@@ -21,6 +21,7 @@
 #include <memory>
 #include <mutex>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "api/service/model_provider.h"
@@ -48,6 +49,11 @@ class TableStore final : public api::ModelProvider {
   std::span<const ModelFactory> factories() const override { return factories_; }
   std::shared_ptr<const SkyModel> model(const ModelFactory& factory, const ModelConfig& config) const override;
   api::ModelState default_state(const ModelFactory& factory) const override;
+  // Per-sun states are kept (up to kSunStates, then the cache starts over), keyed by model and
+  // exact sun angles; a model that has died is never matched (weak reference).
+  std::shared_ptr<const SunState> sun_state(const std::shared_ptr<const SkyModel>& model,
+                                            const SunPosition& sun) const override;
+  static constexpr std::size_t kSunStates = 4096;
 
   // Queues the default configuration of every model (the server does this at start).
   void start_default_builds();
@@ -85,6 +91,19 @@ class TableStore final : public api::ModelProvider {
     std::shared_ptr<std::atomic<bool>> done;
   };
   mutable std::vector<OnDemandBuild> on_demand_;
+  struct SunKey {
+    const SkyModel* model;
+    double zenith_rad, azimuth_rad;
+    bool operator<(const SunKey& o) const {
+      return std::tie(model, zenith_rad, azimuth_rad) < std::tie(o.model, o.zenith_rad, o.azimuth_rad);
+    }
+  };
+  struct SunValue {
+    std::weak_ptr<const SkyModel> model;
+    std::shared_ptr<const SunState> state;
+  };
+  mutable std::mutex sun_mutex_;
+  mutable std::map<SunKey, SunValue> sun_states_;
 };
 
 }  // namespace clearsky::server

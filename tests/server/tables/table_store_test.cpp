@@ -137,3 +137,21 @@ TEST(TableStore, OnDemandBuildsDoNotWaitBehindTheStartQueue) {
 
 }  // namespace
 }  // namespace clearsky::server
+
+namespace clearsky::server {
+namespace {
+
+TEST(TableStore, SharesSunStatesPerModelAndSun) {
+  TableStore store(clearsky::testing::test_factories(), {});
+  const auto model = store.model(store.factories()[0], with_options({{"gain", 2}}));
+  const SunPosition a{0.3, 1.0}, b{0.3, 1.5};
+  const auto first = store.sun_state(model, a);
+  EXPECT_EQ(store.sun_state(model, a), first);
+  EXPECT_NE(store.sun_state(model, b), first);
+  EXPECT_DOUBLE_EQ(store.sun_state(model, b)->sun().azimuth_rad, 1.5);
+  const auto other = store.model(store.factories()[0], with_options({{"gain", 3}}));
+  EXPECT_NE(store.sun_state(other, a), first);
+}
+
+}  // namespace
+}  // namespace clearsky::server
