@@ -106,6 +106,7 @@ void add_serve_command(CLI::App& app) {
   command->add_option("--cache-dir", config->cache_dir, "Disk cache of model tables")->capture_default_str();
   command->add_option("--threads", config->threads, "HTTP worker threads (0: 32 per core, at least 64)")->capture_default_str();
   command->add_option("--max-queued", config->max_queued, "Connections waiting for a worker")->capture_default_str();
+  command->add_option("--listen-backlog", config->listen_backlog, "Pending connections before accept")->capture_default_str();
   command->add_option("--payload-max-bytes", config->payload_max_bytes, "Request body limit")->capture_default_str();
   command->add_option("--read-timeout", config->read_timeout_s, "Socket read timeout, s")->capture_default_str();
   command->add_option("--write-timeout", config->write_timeout_s, "Socket write timeout, s")->capture_default_str();

@@ -8,6 +8,7 @@
 // | cache_dir             | path  | var/cache   | disk cache of model tables                             |
 // | threads               |       | 0           | HTTP worker threads; 0: 32 per core, at least 64 (cpp-httplib holds a worker per keep-alive connection, so workers are connection slots; computations parallelise over the cores themselves) |
 // | max_queued            |       | 256         | accepted connections waiting for a worker (the acceptor waits beyond) |
+// | listen_backlog        |       | 1024        | connections the kernel holds before accept (listen(2))  |
 // | payload_max_bytes     | byte  | 8 MiB       | request body limit (413 beyond)                        |
 // | read/write_timeout_s  | s     | 10 / 30     | socket timeouts                                        |
 // | keep_alive_max_count  |       | 1000        | requests per keep-alive connection                     |
@@ -34,6 +35,7 @@ struct ServerConfig {
   std::string cache_dir = "var/cache";
   unsigned threads = 0;
   std::size_t max_queued = 256;
+  int listen_backlog = 1024;
   std::size_t payload_max_bytes = 8u << 20;
   int read_timeout_s = 10;
   int write_timeout_s = 30;

@@ -1,6 +1,8 @@
 // Route table, error handling, access log and metrics of the HTTP server.
 #include "server/http/http_server.h"
 
+#include <sys/socket.h>
+
 #include <chrono>
 
 #include <httplib.h>
@@ -80,6 +82,13 @@ HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& 
   http_->set_write_timeout(config_.write_timeout_s, 0);
   http_->set_keep_alive_max_count(config_.keep_alive_max_count);
   http_->set_keep_alive_timeout(config_.keep_alive_timeout_s);
+  // cpp-httplib listens with a backlog of 5 (compiled into Debian's library), too short for
+  // bursts of connections: the listening socket is kept here and listen(2) is called again
+  // with the configured backlog after binding (Linux updates it).
+  http_->set_socket_options([this](socket_t socket) {
+    httplib::default_socket_options(socket);
+    listen_socket_ = socket;
+  });
   // Small responses go out at once (no Nagle delay waiting for the client's delayed ACK).
   http_->set_tcp_nodelay(true);
   install_routes();
@@ -95,6 +104,9 @@ int HttpServer::bind() {
     port = -1;
   }
   if (port <= 0) throw std::runtime_error("cannot listen on " + config_.host + ":" + std::to_string(config_.port));
+  if (listen_socket_ >= 0 && ::listen(listen_socket_, config_.listen_backlog) != 0) {
+    spdlog::warn("listen backlog {} not applied", config_.listen_backlog);
+  }
   return port;
 }
 

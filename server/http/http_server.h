@@ -46,6 +46,7 @@ class HttpServer {
   TableStore& tables_;
   Metrics& metrics_;
   std::unique_ptr<httplib::Server> http_;
+  int listen_socket_ = -1;
 };
 
 }  // namespace clearsky::server

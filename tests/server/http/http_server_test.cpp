@@ -122,14 +122,19 @@ TEST_F(HttpServerTest, BuildingTablesGive503WithRetryAfter) {
 TEST_F(HttpServerTest, MetricsCountRequestsPerEndpointAndModel) {
   auto c = client();
   get_json(c, "/v1/radiance?model=testsky&sun_zenith=40&sun_azimuth=100&view_zenith=6&view_azimuth=1", 200);
-  const auto r = c.Get("/metrics");
-  ASSERT_TRUE(r);
-  EXPECT_EQ(r->status, 200);
-  EXPECT_NE(r->body.find(R"(clearsky_http_requests_total{endpoint="/v1/radiance",model="testsky",status="200"} 1)"),
-            std::string::npos)
-      << r->body;
-  EXPECT_NE(r->body.find("clearsky_http_request_duration_seconds_bucket"), std::string::npos);
-  EXPECT_NE(r->body.find(R"(clearsky_table_bytes{model="testsky"} 1234)"), std::string::npos);
+  // A request is counted after its response is sent: poll briefly.
+  const std::string counted = R"(clearsky_http_requests_total{endpoint="/v1/radiance",model="testsky",status="200"} 1)";
+  std::string body;
+  for (int i = 0; i < 100 && body.find(counted) == std::string::npos; ++i) {
+    if (i > 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const auto r = c.Get("/metrics");
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 200);
+    body = r->body;
+  }
+  EXPECT_NE(body.find(counted), std::string::npos) << body;
+  EXPECT_NE(body.find("clearsky_http_request_duration_seconds_bucket"), std::string::npos);
+  EXPECT_NE(body.find(R"(clearsky_table_bytes{model="testsky"} 1234)"), std::string::npos);
 }
 
 TEST_F(HttpServerTest, ConcurrentMixedRequestsGiveIdenticalAnswers) {
