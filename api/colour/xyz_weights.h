@@ -17,7 +17,9 @@ class XyzWeights {
   explicit XyzWeights(const WavelengthGrid& grid);
   Xyz xyz(std::span<const double> spectrum) const;
   // 683 Y: cd/m2 for a radiance.
-  double luminance(std::span<const double> spectrum) const { return kMaxLuminousEfficacy * xyz(spectrum).y; }
+  double luminance(std::span<const double> spectrum) const {
+    return kMaxLuminousEfficacy * xyz(spectrum).y;
+  }
 
  private:
   std::vector<double> x_, y_, z_;

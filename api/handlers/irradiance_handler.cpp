@@ -18,8 +18,9 @@ namespace clearsky::api {
 
 namespace {
 
-nlohmann::json component_json(const Spectrum& e, const SkyModel& model, const std::vector<std::size_t>& indices,
-                              const XyzWeights& xyz, bool spectral) {
+nlohmann::json component_json(const Spectrum& e, const SkyModel& model,
+                              const std::vector<std::size_t>& indices, const XyzWeights& xyz,
+                              bool spectral) {
   const WavelengthGrid& grid = model.wavelengths();
   double integrated = 0.0;
   for (std::size_t i : indices) integrated += grid.integration_weight_nm(i) * e[i];
@@ -36,7 +37,8 @@ nlohmann::json component_json(const Spectrum& e, const SkyModel& model, const st
 }  // namespace
 
 ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
-  if (request.method != "GET") throw ApiError(405, "method_not_allowed", "", "use GET for /v1/irradiance");
+  if (request.method != "GET")
+    throw ApiError(405, "method_not_allowed", "", "use GET for /v1/irradiance");
   Parameters p = request_parameters(request);
   const ModelFactory& factory = parse_model(p, context.models);
   const ModelDescriptor& d = *factory.descriptor;
@@ -45,7 +47,8 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
   ModelConfig config = parse_config(p, d);
   const double tilt_deg = p.number_or("tilt", 0.0, 0.0, 180.0);
   const double surface_azimuth_deg = p.number_or("surface_azimuth", 180.0, -360.0, 360.0);
-  const std::string component = p.choice("component", {"all", "direct", "diffuse", "global"}, "all");
+  const std::string component =
+      p.choice("component", {"all", "direct", "diffuse", "global"}, "all");
   const bool spectral = p.boolean_or("spectral", false);
   p.reject_unused();
 
@@ -57,16 +60,20 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
   if (want_diffuse && !d.capabilities.sky_irradiance) {
     throw cannot_answer("component", d.id, "it does not compute the sky irradiance");
   }
-  const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config), std::nullopt);
+  const ModelOnGrid m =
+      model_on_wavelengths(context.models, factory, std::move(config), std::nullopt);
   const SkyModel& model = *m.model;
   const auto state = prepare_sun(context.models, m.model, sun);
-  const PlaneOrientation plane{degrees_to_radians(tilt_deg), degrees_to_radians(surface_azimuth_deg)};
+  const PlaneOrientation plane{degrees_to_radians(tilt_deg),
+                               degrees_to_radians(surface_azimuth_deg)};
   const std::size_t n = model.wavelengths().size();
 
   Spectrum direct_normal(n, 0.0), direct(n, 0.0), diffuse(n, 0.0);
   if (want_direct) {
     const SpectralSample s = model.sun_irradiance(*state, viewpoint);
-    require_answer(s.status, s.status == SampleStatus::viewpoint_unsupported ? "altitude" : sun.parameter, d.id);
+    require_answer(s.status,
+                   s.status == SampleStatus::viewpoint_unsupported ? "altitude" : sun.parameter,
+                   d.id);
     direct_normal = s.value;
     const double cos_incidence = dot(SkyDirection{plane.tilt_rad, plane.azimuth_rad}.unit_vector(),
                                      SkyDirection{sun.sun}.unit_vector());
@@ -75,28 +82,33 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
   }
   if (want_diffuse) {
     const SpectralSample s = model.sky_irradiance(*state, viewpoint, plane);
-    require_answer(s.status, s.status == SampleStatus::viewpoint_unsupported ? "altitude" : sun.parameter, d.id);
+    require_answer(s.status,
+                   s.status == SampleStatus::viewpoint_unsupported ? "altitude" : sun.parameter,
+                   d.id);
     diffuse = s.value;
   }
 
   const XyzWeights xyz(model.wavelengths());
-  nlohmann::json body = {{"model", d.id},
-                         {"model_version", d.version},
-                         {"sun", sun_json(sun)},
-                         {"altitude_m", viewpoint.altitude_m},
-                         {"plane", {{"tilt_deg", tilt_deg}, {"surface_azimuth_deg", surface_azimuth_deg}}},
-                         {"integrated_range_nm",
-                          {model.wavelengths().lower_edge_nm(m.indices.front()),
-                           model.wavelengths().upper_edge_nm(m.indices.back())}},
-                         {"ground_reflection", "excluded"}};
+  nlohmann::json body = {
+      {"model", d.id},
+      {"model_version", d.version},
+      {"sun", sun_json(sun)},
+      {"altitude_m", viewpoint.altitude_m},
+      {"plane", {{"tilt_deg", tilt_deg}, {"surface_azimuth_deg", surface_azimuth_deg}}},
+      {"integrated_range_nm",
+       {model.wavelengths().lower_edge_nm(m.indices.front()),
+        model.wavelengths().upper_edge_nm(m.indices.back())}},
+      {"ground_reflection", "excluded"}};
   if (spectral) body["wavelengths_nm"] = m.wavelengths_nm;
   const bool all = component == "all";
   if (all || component == "direct") {
     body["direct_normal"] = component_json(direct_normal, model, m.indices, xyz, spectral);
     body["direct"] = component_json(direct, model, m.indices, xyz, spectral);
   }
-  if (all || component == "diffuse") body["diffuse"] = component_json(diffuse, model, m.indices, xyz, spectral);
-  if (all || component == "global") body["global"] = component_json(direct + diffuse, model, m.indices, xyz, spectral);
+  if (all || component == "diffuse")
+    body["diffuse"] = component_json(diffuse, model, m.indices, xyz, spectral);
+  if (all || component == "global")
+    body["global"] = component_json(direct + diffuse, model, m.indices, xyz, spectral);
   ApiResponse response = json_response(body);
   response.model_id = d.id;
   return response;

@@ -12,9 +12,8 @@ ApiResponse get_models(const ApiContext& context, const ApiRequest& request) {
   nlohmann::json models = nlohmann::json::array();
   for (const ModelFactory& factory : context.models.factories()) {
     const ModelState s = context.models.default_state(factory);
-    nlohmann::json state = {{"status", to_string(s.status)},
-                            {"progress", finite(s.progress)},
-                            {"stage", s.stage}};
+    nlohmann::json state = {
+        {"status", to_string(s.status)}, {"progress", finite(s.progress)}, {"stage", s.stage}};
     if (s.status == ModelState::Status::ready) {
       state["precompute_seconds"] = finite(s.precompute_seconds);
       state["table_bytes"] = s.table_bytes;

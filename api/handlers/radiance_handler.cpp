@@ -28,11 +28,14 @@ ApiResponse radiance(const ApiContext& context, const ApiRequest& request) {
   ModelConfig config = parse_config(p, *factory.descriptor);
   const auto wavelengths = parse_wavelengths(p, context.limits);
   const std::string format = p.choice("format", {"json", "csv"}, "json");
-  const ViewList views = request.method == "POST" ? parse_view_batch(request_body(request).value("views", nlohmann::json()), context.limits)
-                                                  : parse_single_view(p);
+  const ViewList views =
+      request.method == "POST"
+          ? parse_view_batch(request_body(request).value("views", nlohmann::json()), context.limits)
+          : parse_single_view(p);
   p.reject_unused();
 
-  const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config), wavelengths);
+  const ModelOnGrid m =
+      model_on_wavelengths(context.models, factory, std::move(config), wavelengths);
   const SpectralBatch batch = checked_sky_radiance(context.models, m.model, sun, viewpoint, views);
 
   ApiResponse response;

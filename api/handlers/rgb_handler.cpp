@@ -27,8 +27,10 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
   const Viewpoint viewpoint = parse_viewpoint(p);
   ModelConfig config = parse_config(p, *factory.descriptor);
   const std::string method = p.choice("method", {"spectral", "three"}, "spectral");
-  const ViewList views = request.method == "POST" ? parse_view_batch(request_body(request).value("views", nlohmann::json()), context.limits)
-                                                  : parse_single_view(p);
+  const ViewList views =
+      request.method == "POST"
+          ? parse_view_batch(request_body(request).value("views", nlohmann::json()), context.limits)
+          : parse_single_view(p);
   p.reject_unused();
 
   const ThreeWavelengthRgb& three = three_wavelength_method();
@@ -37,7 +39,8 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
     wavelengths = three.grid().nanometres();
     config.wavelengths = three.grid();
   }
-  const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config), wavelengths);
+  const ModelOnGrid m =
+      model_on_wavelengths(context.models, factory, std::move(config), wavelengths);
   const SpectralBatch batch = checked_sky_radiance(context.models, m.model, sun, viewpoint, views);
 
   nlohmann::json samples = nlohmann::json::array();

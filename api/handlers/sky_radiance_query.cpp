@@ -7,15 +7,18 @@
 
 namespace clearsky::api {
 
-SpectralBatch checked_sky_radiance(const ModelProvider& provider, const std::shared_ptr<const SkyModel>& model_ptr,
-                                   const SunSpec& sun, const Viewpoint& viewpoint, const ViewList& views) {
+SpectralBatch checked_sky_radiance(const ModelProvider& provider,
+                                   const std::shared_ptr<const SkyModel>& model_ptr,
+                                   const SunSpec& sun, const Viewpoint& viewpoint,
+                                   const ViewList& views) {
   const SkyModel& model = *model_ptr;
   const auto state = prepare_sun(provider, model_ptr, sun);
   SpectralBatch batch;
   model.sky_radiance(*state, viewpoint, views.views, batch);
   for (std::size_t i = 0; i < batch.size(); ++i) {
     if (batch.status[i] != SampleStatus::ok) {
-      require_answer(batch.status[i], status_parameter(batch.status[i], sun, views, i), model.descriptor().id);
+      require_answer(batch.status[i], status_parameter(batch.status[i], sun, views, i),
+                     model.descriptor().id);
     }
   }
   return batch;

@@ -8,8 +8,9 @@
 
 namespace clearsky::api {
 
-SpectralBatch checked_sky_radiance(const ModelProvider& provider, const std::shared_ptr<const SkyModel>& model,
-                                   const SunSpec& sun, const Viewpoint& viewpoint, const ViewList& views);
+SpectralBatch checked_sky_radiance(const ModelProvider& provider,
+                                   const std::shared_ptr<const SkyModel>& model, const SunSpec& sun,
+                                   const Viewpoint& viewpoint, const ViewList& views);
 
 nlohmann::json sun_json(const SunSpec& sun);
 

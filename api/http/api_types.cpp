@@ -9,14 +9,17 @@ nlohmann::json request_body(const ApiRequest& request) {
   try {
     return nlohmann::json::parse(request.body);
   } catch (const nlohmann::json::parse_error& e) {
-    throw ApiError(400, "invalid_body", "", std::string("the request body is not valid JSON: ") + e.what());
+    throw ApiError(400, "invalid_body", "",
+                   std::string("the request body is not valid JSON: ") + e.what());
   }
 }
 
-Parameters request_parameters(const ApiRequest& request, std::initializer_list<std::string_view> structured) {
+Parameters request_parameters(const ApiRequest& request,
+                              std::initializer_list<std::string_view> structured) {
   const std::string endpoint = request.method + " " + request.path;
-  Parameters p = request.method == "POST" ? Parameters::from_json_object(endpoint, request_body(request), structured)
-                                          : Parameters(endpoint);
+  Parameters p = request.method == "POST"
+                     ? Parameters::from_json_object(endpoint, request_body(request), structured)
+                     : Parameters(endpoint);
   for (const auto& [name, value] : request.query) p.add(name, value);
   return p;
 }
@@ -29,13 +32,15 @@ ApiResponse json_response(const nlohmann::json& body, int status) {
 }
 
 ApiResponse error_response(const ApiError& error) {
-  nlohmann::json body = {{"error",
-                          {{"code", error.code()},
-                           {"message", error.what()},
-                           {"parameter", error.parameter().empty() ? nlohmann::json(nullptr)
-                                                                   : nlohmann::json(error.parameter())}}}};
+  nlohmann::json body = {
+      {"error",
+       {{"code", error.code()},
+        {"message", error.what()},
+        {"parameter", error.parameter().empty() ? nlohmann::json(nullptr)
+                                                : nlohmann::json(error.parameter())}}}};
   ApiResponse r = json_response(body, error.status());
-  if (error.retry_after_s() > 0) r.headers.emplace_back("Retry-After", std::to_string(error.retry_after_s()));
+  if (error.retry_after_s() > 0)
+    r.headers.emplace_back("Retry-After", std::to_string(error.retry_after_s()));
   return r;
 }
 

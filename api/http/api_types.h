@@ -2,11 +2,10 @@
 // hands in (method, path, query pairs, body) and what it sends back. Value types.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "api/error/api_error.h"
 #include "api/request/sky_request.h"
@@ -37,7 +36,8 @@ struct ApiContext {
 
 // The request's parameters: the query for GET; for POST, the JSON body's scalar members (the
 // members named in structured are left to the handler) plus the query.
-Parameters request_parameters(const ApiRequest& request, std::initializer_list<std::string_view> structured = {});
+Parameters request_parameters(const ApiRequest& request,
+                              std::initializer_list<std::string_view> structured = {});
 // The parsed JSON body of a POST (400 when it does not parse).
 nlohmann::json request_body(const ApiRequest& request);
 

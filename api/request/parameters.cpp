@@ -3,9 +3,8 @@
 
 #include <charconv>
 #include <cmath>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "api/error/api_error.h"
 
@@ -47,7 +46,8 @@ void Parameters::add(const std::string& name, std::string value) {
 
 Parameters Parameters::from_json_object(std::string endpoint, const nlohmann::json& object,
                                         std::initializer_list<std::string_view> structured) {
-  if (!object.is_object()) throw ApiError(400, "invalid_body", "", "the request body must be a JSON object");
+  if (!object.is_object())
+    throw ApiError(400, "invalid_body", "", "the request body must be a JSON object");
   Parameters p(std::move(endpoint));
   for (const auto& [name, value] : object.items()) {
     bool skip = false;
@@ -93,7 +93,8 @@ std::optional<double> Parameters::number(const std::string& name, double min, do
   if (!value) return std::nullopt;
   const double x = number_value(name, *value);
   if (!(x >= min && x <= max)) {
-    throw invalid_parameter(name, "must be in [" + format_limit(min) + ", " + format_limit(max) + "]");
+    throw invalid_parameter(name,
+                            "must be in [" + format_limit(min) + ", " + format_limit(max) + "]");
   }
   return x;
 }
@@ -108,7 +109,8 @@ double Parameters::required_number(const std::string& name, double min, double m
   return *x;
 }
 
-std::optional<long long> Parameters::integer(const std::string& name, long long min, long long max) {
+std::optional<long long> Parameters::integer(const std::string& name, long long min,
+                                             long long max) {
   const auto value = text(name);
   if (!value) return std::nullopt;
   const std::string_view t = trim(*value);
@@ -118,12 +120,14 @@ std::optional<long long> Parameters::integer(const std::string& name, long long 
     throw invalid_parameter(name, "'" + *value + "' is not an integer");
   }
   if (x < min || x > max) {
-    throw invalid_parameter(name, "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
+    throw invalid_parameter(
+        name, "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
   }
   return x;
 }
 
-std::string Parameters::choice(const std::string& name, std::initializer_list<std::string_view> choices,
+std::string Parameters::choice(const std::string& name,
+                               std::initializer_list<std::string_view> choices,
                                std::string_view fallback) {
   const auto value = text(name);
   if (!value) return std::string(fallback);

@@ -2,7 +2,6 @@
 #include "api/request/place_time.h"
 
 #include <GeographicLib/DMS.hpp>
-
 #include <cmath>
 #include <cstdio>
 
@@ -24,14 +23,16 @@ long long days_from_civil(long long y, unsigned m, unsigned d) {
 
 bool leap(long long y) { return (y % 4 == 0 && y % 100 != 0) || y % 400 == 0; }
 
-double coordinate(Parameters& p, const std::string& name, double limit, GeographicLib::DMS::flag expected) {
+double coordinate(Parameters& p, const std::string& name, double limit,
+                  GeographicLib::DMS::flag expected) {
   const std::string text = p.required_text(name);
   double value = 0;
   try {
     GeographicLib::DMS::flag found = GeographicLib::DMS::NONE;
     value = GeographicLib::DMS::Decode(text, found);
     if (found != GeographicLib::DMS::NONE && found != expected) {
-      throw invalid_parameter(name, "the hemisphere letter does not fit a " + std::string(name == "lat" ? "latitude" : "longitude"));
+      throw invalid_parameter(name, "the hemisphere letter does not fit a " +
+                                        std::string(name == "lat" ? "latitude" : "longitude"));
     }
   } catch (const GeographicLib::GeographicErr& e) {
     throw invalid_parameter(name, "'" + text + "' is not a coordinate (" + e.what() + ")");
@@ -47,7 +48,10 @@ double coordinate(Parameters& p, const std::string& name, double limit, Geograph
 
 IsoTime parse_iso_time(const std::string& parameter, const std::string& text) {
   const auto fail = [&]() -> ApiError {
-    return invalid_parameter(parameter, "'" + text + "' is not an ISO 8601 time with offset, e.g. 2013-05-27T11:45:00-04:00 or ...Z");
+    return invalid_parameter(
+        parameter,
+        "'" + text +
+            "' is not an ISO 8601 time with offset, e.g. 2013-05-27T11:45:00-04:00 or ...Z");
   };
   std::size_t i = 0;
   const auto digits = [&](std::size_t n) -> long long {
@@ -108,12 +112,16 @@ IsoTime parse_iso_time(const std::string& parameter, const std::string& text) {
   }
   if (i != text.size()) throw fail();
   static constexpr int kDays[] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
-  if (month < 1 || month > 12 || day < 1 || day > kDays[month - 1] + (month == 2 && leap(year) ? 1 : 0) ||
-      hour > 23 || minute > 59 || second >= 61.0) {
+  if (month < 1 || month > 12 || day < 1 ||
+      day > kDays[month - 1] + (month == 2 && leap(year) ? 1 : 0) || hour > 23 || minute > 59 ||
+      second >= 61.0) {
     throw invalid_parameter(parameter, "'" + text + "' is not a valid date and time");
   }
-  if (year < -2000 || year > 6000) throw invalid_parameter(parameter, "years -2000 to 6000 are supported (SPA)");
-  const double local = static_cast<double>(days_from_civil(year, static_cast<unsigned>(month), static_cast<unsigned>(day))) * 86400.0 +
+  if (year < -2000 || year > 6000)
+    throw invalid_parameter(parameter, "years -2000 to 6000 are supported (SPA)");
+  const double local = static_cast<double>(days_from_civil(year, static_cast<unsigned>(month),
+                                                           static_cast<unsigned>(day))) *
+                           86400.0 +
                        static_cast<double>(hour * 3600 + minute * 60) + second;
   return {local - offset_h * 3600.0, offset_h};
 }
@@ -135,12 +143,13 @@ std::string format_iso_time(double unix_time_utc_s, double offset_h) {
   const int offset_min = static_cast<int>(std::lround(offset_h * 60.0));
   char buffer[128];
   if (offset_min == 0) {
-    std::snprintf(buffer, sizeof buffer, "%04lld-%02u-%02uT%02lld:%02lld:%02lldZ", y, m, d, secs / 3600, secs / 60 % 60,
-                  secs % 60);
+    std::snprintf(buffer, sizeof buffer, "%04lld-%02u-%02uT%02lld:%02lld:%02lldZ", y, m, d,
+                  secs / 3600, secs / 60 % 60, secs % 60);
   } else {
     const int a = std::abs(offset_min);
-    std::snprintf(buffer, sizeof buffer, "%04lld-%02u-%02uT%02lld:%02lld:%02lld%c%02d:%02d", y, m, d, secs / 3600,
-                  secs / 60 % 60, secs % 60, offset_min < 0 ? '-' : '+', a / 60, a % 60);
+    std::snprintf(buffer, sizeof buffer, "%04lld-%02u-%02uT%02lld:%02lld:%02lld%c%02d:%02d", y, m,
+                  d, secs / 3600, secs / 60 % 60, secs % 60, offset_min < 0 ? '-' : '+', a / 60,
+                  a % 60);
   }
   return buffer;
 }
@@ -151,8 +160,9 @@ SolarPosition solar_position_checked(const SolarPositionInput& input) {
   } catch (const std::invalid_argument& e) {
     const std::string message = e.what();
     static const std::pair<const char*, const char*> kNames[] = {
-        {"unix_time_utc_s", "time"}, {"latitude_deg", "lat"},      {"longitude_deg", "lon"},
-        {"elevation_m", "altitude"}, {"pressure_mbar", "pressure"}, {"temperature_c", "temperature"},
+        {"unix_time_utc_s", "time"},   {"latitude_deg", "lat"},
+        {"longitude_deg", "lon"},      {"elevation_m", "altitude"},
+        {"pressure_mbar", "pressure"}, {"temperature_c", "temperature"},
         {"delta_t_s", "delta_t"}};
     for (const auto& [field, parameter] : kNames) {
       if (message.rfind(field, 0) == 0) throw invalid_parameter(parameter, message);

@@ -5,8 +5,8 @@
 // |-------------|----------|--------------|---------|-------------------------------------------|
 // | lat         | degree   | [-90, 90]    | -       | decimal degrees or DMS (40d26'46"N)        |
 // | lon         | degree   | [-180, 180]  | -       | decimal degrees or DMS, East positive     |
-// | time        | ISO 8601 | years -2000..6000 | -  | with offset (2013-05-27T11:45:00-04:00) or Z |
-// | altitude    | m        | [-500, 1e7]  | 0       | observer elevation (also the viewpoint)   |
+// | time        | ISO 8601 | years -2000..6000 | -  | with offset (2013-05-27T11:45:00-04:00) or Z
+// | | altitude    | m        | [-500, 1e7]  | 0       | observer elevation (also the viewpoint)   |
 // | pressure    | mbar     | [0, 5000]    | 1013.25 | annual mean pressure (refraction)         |
 // | temperature | Celsius  | [-273, 6000] | 15      | annual mean temperature (refraction)      |
 // | delta_t     | s        | [-8000, 8000]| 69      | TT - UT1                                  |

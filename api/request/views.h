@@ -3,10 +3,9 @@
 // {"view_zenith": deg, "view_azimuth": deg} objects or [zenith, azimuth] pairs.
 #pragma once
 
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json_fwd.hpp>
 
 #include "api/request/parameters.h"
 #include "api/request/sky_request.h"
@@ -27,6 +26,7 @@ ViewList parse_single_view(Parameters& p);
 ViewList parse_view_batch(const nlohmann::json& views, const Limits& limits);
 
 // The parameter a non-ok sample status is about (sun, altitude or the view).
-std::string status_parameter(SampleStatus status, const SunSpec& sun, const ViewList& views, std::size_t i);
+std::string status_parameter(SampleStatus status, const SunSpec& sun, const ViewList& views,
+                             std::size_t i);
 
 }  // namespace clearsky::api

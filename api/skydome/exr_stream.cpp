@@ -5,9 +5,12 @@
 
 namespace clearsky::api {
 
-std::vector<std::uint64_t> uncompressed_chunk_offsets(std::uint64_t table_end, int lines, std::uint64_t line_bytes) {
+std::vector<std::uint64_t> uncompressed_chunk_offsets(std::uint64_t table_end, int lines,
+                                                      std::uint64_t line_bytes) {
   std::vector<std::uint64_t> offsets(static_cast<std::size_t>(lines));
-  for (int i = 0; i < lines; ++i) offsets[static_cast<std::size_t>(i)] = table_end + static_cast<std::uint64_t>(i) * (8 + line_bytes);
+  for (int i = 0; i < lines; ++i)
+    offsets[static_cast<std::size_t>(i)] =
+        table_end + static_cast<std::uint64_t>(i) * (8 + line_bytes);
   return offsets;
 }
 

@@ -56,6 +56,7 @@ class ExrStream final : public Imf::OStream {
 
 // Offsets of the chunks of an uncompressed scan-line file: one scan line per chunk, each
 // 4 bytes of y, 4 bytes of size and line_bytes of pixels, after the offset table.
-std::vector<std::uint64_t> uncompressed_chunk_offsets(std::uint64_t table_end, int lines, std::uint64_t line_bytes);
+std::vector<std::uint64_t> uncompressed_chunk_offsets(std::uint64_t table_end, int lines,
+                                                      std::uint64_t line_bytes);
 
 }  // namespace clearsky::api

@@ -54,7 +54,8 @@ bool SkydomeProjection::direction(int x, int y, SkyDirection& out) const {
       const int f = y / size_;
       const FaceMap& m = faces_[f];
       const double dx = x - m.origin_x, dy = y - m.origin_y;
-      const IMATH_NAMESPACE::V2f pif(static_cast<float>(m.xx * dx + m.xy * dy), static_cast<float>(m.yx * dx + m.yy * dy));
+      const IMATH_NAMESPACE::V2f pif(static_cast<float>(m.xx * dx + m.xy * dy),
+                                     static_cast<float>(m.yx * dx + m.yy * dy));
       const auto d = Imf::CubeMap::direction(static_cast<Imf::CubeMapFace>(f), dw, pif);
       out = from_openexr_frame(d.x, d.y, d.z);
       return true;

@@ -1,14 +1,14 @@
 // Skydome parsing, band-parallel evaluation and streamed EXR encoding.
 #include "api/skydome/skydome_render.h"
 
+#include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFloatAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
-#include <OpenEXR/ImfFloatAttribute.h>
-#include <Imath/half.h>
 
 #include <cstdio>
 
@@ -70,13 +70,16 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
     const double x = number_value("size", *size_text);
     if (x != std::floor(x) || x < 8) throw invalid_parameter("size", "must be an integer >= 8");
     if (x > context.limits.max_skydome_size) {
-      throw too_large("size", "at most " + std::to_string(context.limits.max_skydome_size) + " pixels");
+      throw too_large("size",
+                      "at most " + std::to_string(context.limits.max_skydome_size) + " pixels");
     }
     size = static_cast<long long>(x);
   }
-  if (s->projection_name == "latlong" && size % 2 != 0) throw invalid_parameter("size", "must be even for latlong");
+  if (s->projection_name == "latlong" && size % 2 != 0)
+    throw invalid_parameter("size", "must be even for latlong");
   s->channels = p.choice("channels", {"rgb", "luminance", "spectral"}, "rgb");
-  s->half = p.choice("pixel_type", {"half", "float"}, s->channels == "rgb" ? "half" : "float") == "half";
+  s->half =
+      p.choice("pixel_type", {"half", "float"}, s->channels == "rgb" ? "half" : "float") == "half";
   s->method = "spectral";
   if (s->channels == "rgb") s->method = p.choice("method", {"spectral", "three"}, "spectral");
   std::optional<std::vector<double>> wavelengths;
@@ -108,15 +111,18 @@ const std::string& SkydomeRender::model_id() const { return settings_->model_id;
 int SkydomeRender::width() const { return settings_->projection.width(); }
 int SkydomeRender::height() const { return settings_->projection.height(); }
 
-bool SkydomeRender::write(const Sink& sink, unsigned threads, std::size_t* unanswered_pixels) const {
+bool SkydomeRender::write(const Sink& sink, unsigned threads,
+                          std::size_t* unanswered_pixels) const {
   const Settings& s = *settings_;
   const int width = s.projection.width();
   const int height = s.projection.height();
 
   // Channels, in the order of the band buffer.
   std::vector<std::string> names;
-  if (s.channels == "rgb") names = {"R", "G", "B"};
-  else if (s.channels == "luminance") names = {"Y"};
+  if (s.channels == "rgb")
+    names = {"R", "G", "B"};
+  else if (s.channels == "luminance")
+    names = {"Y"};
   else
     for (double w : s.m.wavelengths_nm) names.push_back(spectral_channel_name(w));
   const std::size_t n_channels = names.size();
@@ -131,7 +137,8 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads, std::size_t* unans
   header.insert("clearskyProjection", Imf::StringAttribute(s.projection_name));
   header.insert("sunZenithDeg", Imf::FloatAttribute(static_cast<float>(s.sun.zenith_deg)));
   header.insert("sunAzimuthDeg", Imf::FloatAttribute(static_cast<float>(s.sun.azimuth_deg)));
-  header.insert("observerAltitudeM", Imf::FloatAttribute(static_cast<float>(s.viewpoint.altitude_m)));
+  header.insert("observerAltitudeM",
+                Imf::FloatAttribute(static_cast<float>(s.viewpoint.altitude_m)));
   if (s.projection.projection() == Projection::latlong) Imf::addEnvmap(header, Imf::ENVMAP_LATLONG);
   if (s.projection.projection() == Projection::cubemap) Imf::addEnvmap(header, Imf::ENVMAP_CUBE);
   if (s.channels == "rgb") {
@@ -151,7 +158,8 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads, std::size_t* unans
     stream.start(uncompressed_chunk_offsets(stream.tellp(), height, line_bytes));
 
     // One band of rows: channel-interleaved float, then converted to half when asked.
-    const std::size_t band_pixels = static_cast<std::size_t>(kBandRows) * static_cast<std::size_t>(width);
+    const std::size_t band_pixels =
+        static_cast<std::size_t>(kBandRows) * static_cast<std::size_t>(width);
     std::vector<float> band_float(band_pixels * n_channels);
     std::vector<half> band_half(s.half ? band_pixels * n_channels : 0);
     const SkyModel& model = *s.m.model;
@@ -181,17 +189,21 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads, std::size_t* unans
             model.sky_radiance(*s.sun_state, s.viewpoint, views, batch);
             for (std::size_t k = 0; k < views.size(); ++k) {
               if (batch.status[k] != SampleStatus::ok) {
-                if (batch.status[k] != SampleStatus::view_below_horizon_unsupported) ++failed_pixels;
+                if (batch.status[k] != SampleStatus::view_below_horizon_unsupported)
+                  ++failed_pixels;
                 continue;
               }
               const auto l = batch.spectrum(k);
               float* px = row + static_cast<std::size_t>(columns[k]) * n_channels;
               if (s.channels == "spectral") {
-                for (std::size_t c = 0; c < n_channels; ++c) px[c] = static_cast<float>(l[s.m.indices[c]]);
+                for (std::size_t c = 0; c < n_channels; ++c)
+                  px[c] = static_cast<float>(l[s.m.indices[c]]);
               } else if (s.method == "three") {
-                const LinearSrgb c = three.rgb(l[s.m.indices[2]], l[s.m.indices[1]], l[s.m.indices[0]]);
+                const LinearSrgb c =
+                    three.rgb(l[s.m.indices[2]], l[s.m.indices[1]], l[s.m.indices[0]]);
                 if (s.channels == "rgb") {
-                  px[0] = static_cast<float>(c.r), px[1] = static_cast<float>(c.g), px[2] = static_cast<float>(c.b);
+                  px[0] = static_cast<float>(c.r), px[1] = static_cast<float>(c.g),
+                  px[2] = static_cast<float>(c.b);
                 } else {
                   px[0] = static_cast<float>(kMaxLuminousEfficacy * linear_srgb_to_xyz(c).y);
                 }
@@ -199,7 +211,8 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads, std::size_t* unans
                 const Xyz xyz = s.xyz->xyz(l);
                 if (s.channels == "rgb") {
                   const LinearSrgb c = xyz_to_linear_srgb(xyz);
-                  px[0] = static_cast<float>(c.r), px[1] = static_cast<float>(c.g), px[2] = static_cast<float>(c.b);
+                  px[0] = static_cast<float>(c.r), px[1] = static_cast<float>(c.g),
+                  px[2] = static_cast<float>(c.b);
                 } else {
                   px[0] = static_cast<float>(kMaxLuminousEfficacy * xyz.y);
                 }
@@ -211,21 +224,26 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads, std::size_t* unans
       Imf::FrameBuffer frame;
       const std::size_t x_stride = n_channels * sample_bytes;
       const std::size_t y_stride = static_cast<std::size_t>(width) * x_stride;
-      char* base = s.half ? reinterpret_cast<char*>(band_half.data()) : reinterpret_cast<char*>(band_float.data());
+      char* base = s.half ? reinterpret_cast<char*>(band_half.data())
+                          : reinterpret_cast<char*>(band_float.data());
       if (s.half) {
-        const std::size_t count = static_cast<std::size_t>(rows) * static_cast<std::size_t>(width) * n_channels;
+        const std::size_t count =
+            static_cast<std::size_t>(rows) * static_cast<std::size_t>(width) * n_channels;
         for (std::size_t i = 0; i < count; ++i) band_half[i] = half(band_float[i]);
       }
       // OpenEXR addresses pixel (x, y) at base + x * x_stride + y * y_stride: shift the base so
       // that row y0 is the band's first row.
-      const std::ptrdiff_t shift = -static_cast<std::ptrdiff_t>(y0) * static_cast<std::ptrdiff_t>(y_stride);
+      const std::ptrdiff_t shift =
+          -static_cast<std::ptrdiff_t>(y0) * static_cast<std::ptrdiff_t>(y_stride);
       for (std::size_t c = 0; c < n_channels; ++c) {
-        frame.insert(names[c], Imf::Slice(type, base + shift + c * sample_bytes, x_stride, y_stride));
+        frame.insert(names[c],
+                     Imf::Slice(type, base + shift + c * sample_bytes, x_stride, y_stride));
       }
       file.setFrameBuffer(frame);
       file.writePixels(rows);
     }
-    if (unanswered_pixels != nullptr) *unanswered_pixels = static_cast<std::size_t>(failed_pixels.load());
+    if (unanswered_pixels != nullptr)
+      *unanswered_pixels = static_cast<std::size_t>(failed_pixels.load());
   } catch (const StreamAborted&) {
     return false;
   } catch (const std::exception& e) {

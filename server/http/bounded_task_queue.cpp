@@ -5,7 +5,8 @@
 
 namespace clearsky::server {
 
-BoundedTaskQueue::BoundedTaskQueue(unsigned threads, std::size_t max_queued) : max_queued_(std::max<std::size_t>(1, max_queued)) {
+BoundedTaskQueue::BoundedTaskQueue(unsigned threads, std::size_t max_queued)
+    : max_queued_(std::max<std::size_t>(1, max_queued)) {
   for (unsigned i = 0; i < std::max(1u, threads); ++i) workers_.emplace_back([this] { work(); });
 }
 

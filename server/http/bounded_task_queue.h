@@ -4,14 +4,14 @@
 // backlog instead of growing memory without bound. Thread-safe.
 #pragma once
 
+#include <httplib.h>
+
 #include <condition_variable>
 #include <deque>
 #include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
-
-#include <httplib.h>
 
 namespace clearsky::server {
 

@@ -1,13 +1,12 @@
 // Route table, error handling, access log and metrics of the HTTP server.
 #include "server/http/http_server.h"
 
-#include <sys/socket.h>
-
-#include <chrono>
-
 #include <httplib.h>
 #include <spdlog/sinks/stdout_sinks.h>
 #include <spdlog/spdlog.h>
+#include <sys/socket.h>
+
+#include <chrono>
 
 #include "api/handlers/handlers.h"
 #include "api/openapi/openapi_document.h"
@@ -29,9 +28,10 @@ struct RequestInfo {
 thread_local RequestInfo current_request;
 
 const std::vector<std::pair<std::string, std::string>> kRoutes = {
-    {"GET", "/healthz"},       {"GET", "/readyz"},        {"GET", "/metrics"},     {"GET", "/openapi.json"},
-    {"GET", "/v1/models"},     {"GET", "/v1/sun"},        {"GET", "/v1/radiance"}, {"POST", "/v1/radiance"},
-    {"GET", "/v1/irradiance"}, {"GET", "/v1/rgb"},        {"POST", "/v1/rgb"},     {"GET", "/v1/skydome"},
+    {"GET", "/healthz"},      {"GET", "/readyz"},       {"GET", "/metrics"},
+    {"GET", "/openapi.json"}, {"GET", "/v1/models"},    {"GET", "/v1/sun"},
+    {"GET", "/v1/radiance"},  {"POST", "/v1/radiance"}, {"GET", "/v1/irradiance"},
+    {"GET", "/v1/rgb"},       {"POST", "/v1/rgb"},      {"GET", "/v1/skydome"},
 };
 
 std::string endpoint_label(const std::string& path) {
@@ -73,7 +73,10 @@ std::shared_ptr<spdlog::logger> access_logger() {
 const std::vector<std::pair<std::string, std::string>>& HttpServer::routes() { return kRoutes; }
 
 HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& metrics)
-    : config_(config), tables_(tables), metrics_(metrics), http_(std::make_unique<httplib::Server>()) {
+    : config_(config),
+      tables_(tables),
+      metrics_(metrics),
+      http_(std::make_unique<httplib::Server>()) {
   const unsigned workers = config_.worker_threads();
   const std::size_t queued = config_.max_queued;
   http_->new_task_queue = [workers, queued] { return new BoundedTaskQueue(workers, queued); };
@@ -103,7 +106,9 @@ int HttpServer::bind() {
   } else if (!http_->bind_to_port(config_.host, port)) {
     port = -1;
   }
-  if (port <= 0) throw std::runtime_error("cannot listen on " + config_.host + ":" + std::to_string(config_.port));
+  if (port <= 0)
+    throw std::runtime_error("cannot listen on " + config_.host + ":" +
+                             std::to_string(config_.port));
   if (listen_socket_ >= 0 && ::listen(listen_socket_, config_.listen_backlog) != 0) {
     spdlog::warn("listen backlog {} not applied", config_.listen_backlog);
   }
@@ -129,7 +134,8 @@ void HttpServer::install_routes() {
 
   // The one exception handler: typed API errors keep their status; anything else is a 500
   // whose details go to the log, not to the client.
-  s.set_exception_handler([](const httplib::Request& req, httplib::Response& res, std::exception_ptr error) {
+  s.set_exception_handler([](const httplib::Request& req, httplib::Response& res,
+                             std::exception_ptr error) {
     try {
       std::rethrow_exception(error);
     } catch (const api::ApiError& e) {
@@ -144,38 +150,41 @@ void HttpServer::install_routes() {
   });
 
   // httplib's own errors (no route, payload too large, bad request line) in the same format.
-  s.set_error_handler(httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
-    if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
-    std::string code = "http_error";
-    std::string message = "HTTP error " + std::to_string(res.status);
-    if (res.status == 404) {
-      code = "not_found";
-      message = "no route " + req.method + " " + req.path + " (see /openapi.json)";
-    } else if (res.status == 413) {
-      code = "too_large";
-      message = "the request body is above the configured limit";
-    }
-    const int status = res.status;
-    send(res, api::error_response(api::ApiError(status, code, "", message)));
-    return httplib::Server::HandlerResponse::Handled;
-  }));
+  s.set_error_handler(
+      httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
+        if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
+        std::string code = "http_error";
+        std::string message = "HTTP error " + std::to_string(res.status);
+        if (res.status == 404) {
+          code = "not_found";
+          message = "no route " + req.method + " " + req.path + " (see /openapi.json)";
+        } else if (res.status == 413) {
+          code = "too_large";
+          message = "the request body is above the configured limit";
+        }
+        const int status = res.status;
+        send(res, api::error_response(api::ApiError(status, code, "", message)));
+        return httplib::Server::HandlerResponse::Handled;
+      }));
 
   s.set_logger([this](const httplib::Request& req, const httplib::Response& res) {
-    const double seconds = std::chrono::duration<double>(Clock::now() - current_request.start).count();
+    const double seconds =
+        std::chrono::duration<double>(Clock::now() - current_request.start).count();
     const std::string endpoint = endpoint_label(req.path);
     metrics_.observe_request(endpoint, current_request.model, res.status, seconds);
     access_logger()->info(
         R"({{"remote":"{}","method":"{}","path":"{}","status":{},"bytes":{},"ms":{:.3f},"model":"{}","endpoint":"{}"}})",
-        req.remote_addr, req.method, req.path, res.status, res.body.size(), seconds * 1e3, current_request.model,
-        endpoint);
+        req.remote_addr, req.method, req.path, res.status, res.body.size(), seconds * 1e3,
+        current_request.model, endpoint);
   });
 
-  const auto handle = [this, limits](api::ApiResponse (*handler)(const api::ApiContext&, const api::ApiRequest&)) {
-    return [this, limits, handler](const httplib::Request& req, httplib::Response& res) {
-      const api::ApiContext context{tables_, limits};
-      send(res, handler(context, to_api_request(req)));
-    };
-  };
+  const auto handle =
+      [this, limits](api::ApiResponse (*handler)(const api::ApiContext&, const api::ApiRequest&)) {
+        return [this, limits, handler](const httplib::Request& req, httplib::Response& res) {
+          const api::ApiContext context{tables_, limits};
+          send(res, handler(context, to_api_request(req)));
+        };
+      };
   s.Get("/v1/models", handle(api::get_models));
   s.Get("/v1/sun", handle(api::get_sun));
   s.Get("/v1/radiance", handle(api::radiance));
@@ -188,15 +197,20 @@ void HttpServer::install_routes() {
   // band and streamed (chunked) from the content provider, which owns the render job.
   s.Get("/v1/skydome", [this, limits](const httplib::Request& req, httplib::Response& res) {
     const api::ApiContext context{tables_, limits};
-    auto job = std::make_shared<const api::SkydomeRender>(api::prepare_skydome(context, to_api_request(req)));
+    auto job = std::make_shared<const api::SkydomeRender>(
+        api::prepare_skydome(context, to_api_request(req)));
     current_request.model = job->model_id();
     res.set_header("Content-Disposition", "inline; filename=\"sky.exr\"");
     res.set_chunked_content_provider("image/x-exr", [job](std::size_t, httplib::DataSink& sink) {
       std::size_t unanswered = 0;
       const bool complete = job->write(
-          [&sink](const char* data, std::size_t size) { return sink.is_writable() && sink.write(data, size); }, 0,
-          &unanswered);
-      if (unanswered > 0) spdlog::warn("skydome {}: {} pixels without a value, written as 0", job->model_id(), unanswered);
+          [&sink](const char* data, std::size_t size) {
+            return sink.is_writable() && sink.write(data, size);
+          },
+          0, &unanswered);
+      if (unanswered > 0)
+        spdlog::warn("skydome {}: {} pixels without a value, written as 0", job->model_id(),
+                     unanswered);
       if (complete) sink.done();
       return complete;
     });
@@ -209,14 +223,16 @@ void HttpServer::install_routes() {
     nlohmann::json models = nlohmann::json::object();
     for (const ModelFactory& f : tables_.factories()) {
       const api::ModelState state = tables_.default_state(f);
-      models[f.descriptor->id] = {{"status", api::to_string(state.status)}, {"progress", api::finite(state.progress)}};
+      models[f.descriptor->id] = {{"status", api::to_string(state.status)},
+                                  {"progress", api::finite(state.progress)}};
     }
     if (tables_.ready()) {
-      res.set_content(nlohmann::json{{"status", "ready"}, {"models", models}}.dump(), "application/json");
+      res.set_content(nlohmann::json{{"status", "ready"}, {"models", models}}.dump(),
+                      "application/json");
       return;
     }
-    api::ApiResponse response = api::error_response(
-        api::ApiError(503, "not_ready", "", "the default tables of some models are being built", 5));
+    api::ApiResponse response = api::error_response(api::ApiError(
+        503, "not_ready", "", "the default tables of some models are being built", 5));
     nlohmann::json body = nlohmann::json::parse(response.body);
     body["models"] = models;
     response.body = body.dump();

@@ -8,21 +8,22 @@
 // stays bounded. Thread-safe.
 #pragma once
 
-#include <map>
-#include <memory>
-#include <string>
-
 #include <prometheus/counter.h>
 #include <prometheus/gauge.h>
 #include <prometheus/histogram.h>
 #include <prometheus/registry.h>
+
+#include <map>
+#include <memory>
+#include <string>
 
 namespace clearsky::server {
 
 class Metrics {
  public:
   Metrics();
-  void observe_request(const std::string& endpoint, const std::string& model, int status, double seconds);
+  void observe_request(const std::string& endpoint, const std::string& model, int status,
+                       double seconds);
   void observe_cache_lookup(bool hit);
   void observe_build(const std::string& model, double seconds, bool from_cache);
   // The text exposition, with the table memory gauges set from table_bytes first.

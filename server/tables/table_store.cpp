@@ -1,10 +1,10 @@
 // Single-flight builds of model tables, with LRU eviction of non-default configurations.
 #include "server/tables/table_store.h"
 
+#include <spdlog/spdlog.h>
+
 #include <cmath>
 #include <sstream>
-
-#include <spdlog/spdlog.h>
 
 #include "api/error/api_error.h"
 
@@ -63,7 +63,8 @@ std::string entry_key(const ModelFactory& factory, const ModelConfig& config) {
 
 TableStore::TableStore(std::vector<ModelFactory> factories, Options options)
     : factories_(std::move(factories)), options_(options) {
-  for (unsigned i = 0; i < std::max(1u, options_.builder_threads); ++i) builders_.emplace_back([this] { builder_loop(); });
+  for (unsigned i = 0; i < std::max(1u, options_.builder_threads); ++i)
+    builders_.emplace_back([this] { builder_loop(); });
 }
 
 TableStore::~TableStore() {
@@ -95,8 +96,10 @@ void TableStore::launch_locked(const std::shared_ptr<Entry>& entry) const {
                         done});
 }
 
-std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory& factory, const ModelConfig& config,
-                                                             const std::string& key, bool pinned) const {
+std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory& factory,
+                                                             const ModelConfig& config,
+                                                             const std::string& key,
+                                                             bool pinned) const {
   // Caller holds mutex_.
   auto it = entries_.find(key);
   if (it != entries_.end()) {
@@ -107,10 +110,12 @@ std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory&
   if (!pinned) {
     std::size_t pending = 0;
     for (const auto& [k, e] : entries_) {
-      pending += !e->pinned && e->status != api::ModelState::Status::ready && e->status != api::ModelState::Status::failed;
+      pending += !e->pinned && e->status != api::ModelState::Status::ready &&
+                 e->status != api::ModelState::Status::failed;
     }
     if (pending >= options_.capacity) {
-      throw api::not_ready(factory.descriptor->id, "too many table builds are pending; try again later",
+      throw api::not_ready(factory.descriptor->id,
+                           "too many table builds are pending; try again later",
                            options_.retry_after_s);
     }
   }
@@ -130,7 +135,8 @@ std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory&
   return entry;
 }
 
-std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory, const ModelConfig& config) const {
+std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory,
+                                                  const ModelConfig& config) const {
   try {
     validate_config(*factory.descriptor, config);
   } catch (const std::invalid_argument& e) {
@@ -139,7 +145,8 @@ std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory, c
   // The default configuration (most requests) skips building its canonical text.
   static const AtmosphereParameters default_atmosphere;
   static const WavelengthGrid default_grid = ModelConfig{}.wavelengths;
-  const bool plain = config.options.empty() && config.atmosphere == default_atmosphere && config.wavelengths == default_grid;
+  const bool plain = config.options.empty() && config.atmosphere == default_atmosphere &&
+                     config.wavelengths == default_grid;
   const std::string canonical = plain ? default_canonical_string() : config.canonical_string();
   const bool is_default = canonical == default_canonical_string();
   const std::string key = entry_key(factory, canonical);
@@ -153,11 +160,13 @@ std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory, c
     launched_now = true;
   }
   const auto settled = [&] {
-    return entry->status == api::ModelState::Status::ready || entry->status == api::ModelState::Status::failed;
+    return entry->status == api::ModelState::Status::ready ||
+           entry->status == api::ModelState::Status::failed;
   };
   // Wait for a build that may be short (a non-default one, or one started by this request); a
   // default build already under way since start is long: answer 503 at once.
-  if (!settled() && (launched_now || !is_default)) changed_.wait_for(lock, options_.build_wait, settled);
+  if (!settled() && (launched_now || !is_default))
+    changed_.wait_for(lock, options_.build_wait, settled);
   if (entry->status == api::ModelState::Status::ready) return entry->model;
   if (entry->status == api::ModelState::Status::failed) {
     const std::string error = entry->error;
@@ -196,7 +205,8 @@ api::ModelState TableStore::default_state(const ModelFactory& factory) const {
   if (it == entries_.end()) return state;
   const Entry& e = *it->second;
   state.status = e.status;
-  state.progress = e.status == api::ModelState::Status::ready ? 1.0 : std::clamp(e.progress.load(), 0.0, 1.0);
+  state.progress =
+      e.status == api::ModelState::Status::ready ? 1.0 : std::clamp(e.progress.load(), 0.0, 1.0);
   state.stage = e.stage;
   state.error = e.error;
   state.precompute_seconds = e.seconds;
@@ -207,7 +217,8 @@ api::ModelState TableStore::default_state(const ModelFactory& factory) const {
 
 void TableStore::start_default_builds() {
   std::lock_guard lock(mutex_);
-  for (const ModelFactory& f : factories_) find_or_queue(f, ModelConfig{}, entry_key(f, default_canonical_string()), true);
+  for (const ModelFactory& f : factories_)
+    find_or_queue(f, ModelConfig{}, entry_key(f, default_canonical_string()), true);
 }
 
 void TableStore::prebuild(const ModelFactory& factory, const ModelConfig& config) {
@@ -277,7 +288,8 @@ void TableStore::build(Entry& entry) const {
   } catch (...) {
     error = "unknown error";
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const bool from_cache = cache.hits > 0 && cache.misses == 0 && cache.stores == 0;
   {
     std::lock_guard lock(mutex_);
@@ -294,8 +306,8 @@ void TableStore::build(Entry& entry) const {
     evict_locked();
   }
   if (error.empty()) {
-    spdlog::info("tables: {} ready in {:.3f} s ({}, {} bytes)", id, seconds, from_cache ? "from cache" : "built",
-                 entry.model->table_bytes());
+    spdlog::info("tables: {} ready in {:.3f} s ({}, {} bytes)", id, seconds,
+                 from_cache ? "from cache" : "built", entry.model->table_bytes());
     if (observer_) observer_(id, seconds, from_cache);
   } else {
     spdlog::error("tables: {} failed after {:.3f} s: {}", id, seconds, error);

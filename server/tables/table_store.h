@@ -31,7 +31,7 @@ namespace clearsky::server {
 class TableStore final : public api::ModelProvider {
  public:
   struct Options {
-    std::size_t capacity = 16;          // non-default configurations kept and pending
+    std::size_t capacity = 16;  // non-default configurations kept and pending
     std::chrono::milliseconds build_wait{2000};
     int retry_after_s = 5;
     unsigned builder_threads = 1;       // concurrent builds
@@ -39,7 +39,8 @@ class TableStore final : public api::ModelProvider {
     const TableCache* cache = nullptr;  // may be null
   };
   // Observes finished builds (model id, seconds, whether the cache supplied the tables).
-  using BuildObserver = std::function<void(const std::string& model_id, double seconds, bool from_cache)>;
+  using BuildObserver =
+      std::function<void(const std::string& model_id, double seconds, bool from_cache)>;
 
   TableStore(std::vector<ModelFactory> factories, Options options);
   ~TableStore() override;
@@ -47,7 +48,8 @@ class TableStore final : public api::ModelProvider {
   TableStore& operator=(const TableStore&) = delete;
 
   std::span<const ModelFactory> factories() const override { return factories_; }
-  std::shared_ptr<const SkyModel> model(const ModelFactory& factory, const ModelConfig& config) const override;
+  std::shared_ptr<const SkyModel> model(const ModelFactory& factory,
+                                        const ModelConfig& config) const override;
   api::ModelState default_state(const ModelFactory& factory) const override;
   // Per-sun states are kept (up to kSunStates, then the cache starts over), keyed by model and
   // exact sun angles; a model that has died is never matched (weak reference).
@@ -68,8 +70,8 @@ class TableStore final : public api::ModelProvider {
 
  private:
   struct Entry;
-  std::shared_ptr<Entry> find_or_queue(const ModelFactory& factory, const ModelConfig& config, const std::string& key,
-                                       bool pinned) const;
+  std::shared_ptr<Entry> find_or_queue(const ModelFactory& factory, const ModelConfig& config,
+                                       const std::string& key, bool pinned) const;
   void builder_loop();
   // Starts entry's build on its own thread (caller holds mutex_).
   void launch_locked(const std::shared_ptr<Entry>& entry) const;
@@ -95,7 +97,8 @@ class TableStore final : public api::ModelProvider {
     const SkyModel* model;
     double zenith_rad, azimuth_rad;
     bool operator<(const SunKey& o) const {
-      return std::tie(model, zenith_rad, azimuth_rad) < std::tie(o.model, o.zenith_rad, o.azimuth_rad);
+      return std::tie(model, zenith_rad, azimuth_rad) <
+             std::tie(o.model, o.zenith_rad, o.azimuth_rad);
     }
   };
   struct SunValue {

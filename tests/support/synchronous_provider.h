@@ -12,9 +12,11 @@ namespace clearsky::testing {
 
 class SynchronousProvider final : public api::ModelProvider {
  public:
-  explicit SynchronousProvider(std::vector<ModelFactory> factories) : factories_(std::move(factories)) {}
+  explicit SynchronousProvider(std::vector<ModelFactory> factories)
+      : factories_(std::move(factories)) {}
   std::span<const ModelFactory> factories() const override { return factories_; }
-  std::shared_ptr<const SkyModel> model(const ModelFactory& factory, const ModelConfig& config) const override {
+  std::shared_ptr<const SkyModel> model(const ModelFactory& factory,
+                                        const ModelConfig& config) const override {
     const std::string key = factory.descriptor->id + "|" + config.canonical_string();
     std::lock_guard lock(mutex_);
     auto& slot = built_[key];

@@ -71,14 +71,16 @@ TEST(Parameters, ChoicesAndBooleans) {
 }
 
 TEST(Parameters, FromJsonObjectKeepsFullPrecisionAndRejectsNesting) {
-  const auto body = nlohmann::json::parse(R"({"sun_zenith": 0.1, "model": "m", "views": [[1, 2]], "flag": true})");
+  const auto body = nlohmann::json::parse(
+      R"({"sun_zenith": 0.1, "model": "m", "views": [[1, 2]], "flag": true})");
   Parameters p = Parameters::from_json_object("POST /x", body, {"views"});
   EXPECT_EQ(*p.number("sun_zenith", 0, 1), 0.1);
   EXPECT_EQ(*p.text("model"), "m");
   EXPECT_TRUE(p.boolean_or("flag", false));
   EXPECT_FALSE(p.has("views"));
   const auto nested = nlohmann::json::parse(R"({"a": {"b": 1}})");
-  EXPECT_EQ(error_of([&] { Parameters::from_json_object("POST /x", nested, {}); }).parameter(), "a");
+  EXPECT_EQ(error_of([&] { Parameters::from_json_object("POST /x", nested, {}); }).parameter(),
+            "a");
 }
 
 }  // namespace

@@ -15,14 +15,16 @@ TEST(PlaceTime, ParsesOffsetsAndZulu) {
   EXPECT_DOUBLE_EQ(edt.unix_time_utc_s, 1369669500.0);
   EXPECT_DOUBLE_EQ(edt.offset_h, -4.0);
   EXPECT_DOUBLE_EQ(parse_iso_time("time", "2013-05-27T21:15+0530").unix_time_utc_s, 1369669500.0);
-  EXPECT_DOUBLE_EQ(parse_iso_time("time", "2013-05-27T15:45:00.25Z").unix_time_utc_s, 1369669500.25);
+  EXPECT_DOUBLE_EQ(parse_iso_time("time", "2013-05-27T15:45:00.25Z").unix_time_utc_s,
+                   1369669500.25);
   EXPECT_DOUBLE_EQ(parse_iso_time("time", "1970-01-01T00:00:00Z").unix_time_utc_s, 0.0);
   EXPECT_DOUBLE_EQ(parse_iso_time("time", "2000-02-29T00:00:00Z").unix_time_utc_s, 951782400.0);
 }
 
 TEST(PlaceTime, RejectsMalformedTimes) {
-  for (const char* bad : {"2013-05-27T11:45:00", "2013-05-27", "2013-13-01T00:00Z", "2013-02-29T00:00Z",
-                          "2013-05-27T24:00Z", "2013-05-27T11:45:00-04:00x", "yesterday", "2013-5-27T11:45Z"}) {
+  for (const char* bad :
+       {"2013-05-27T11:45:00", "2013-05-27", "2013-13-01T00:00Z", "2013-02-29T00:00Z",
+        "2013-05-27T24:00Z", "2013-05-27T11:45:00-04:00x", "yesterday", "2013-5-27T11:45Z"}) {
     try {
       parse_iso_time("time", bad);
       ADD_FAILURE() << bad;

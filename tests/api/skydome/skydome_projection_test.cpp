@@ -2,9 +2,8 @@
 // East left); latlong and cubemap agree with OpenEXR's own direction -> pixel maps.
 #include "api/skydome/skydome_projection.h"
 
-#include <gtest/gtest.h>
-
 #include <OpenEXR/ImfEnvmap.h>
+#include <gtest/gtest.h>
 
 #include "api/skydome/skydome_render.h"
 
@@ -35,7 +34,8 @@ TEST(SkydomeProjection, EnvironmentMapsMatchOpenExr) {
         SkyDirection d;
         ASSERT_TRUE(p.direction(x, y, d));
         const Vec3 v = d.unit_vector();
-        const IMATH_NAMESPACE::V3f exr(static_cast<float>(-v.x), static_cast<float>(v.z), static_cast<float>(v.y));
+        const IMATH_NAMESPACE::V3f exr(static_cast<float>(-v.x), static_cast<float>(v.z),
+                                       static_cast<float>(v.y));
         IMATH_NAMESPACE::V2f back;
         if (kind == Projection::latlong) {
           back = Imf::LatLongMap::pixelPosition(dw, exr);

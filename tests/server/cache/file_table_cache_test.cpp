@@ -64,7 +64,8 @@ TEST_F(FileTableCacheTest, CorruptTruncatedOrStaleFilesAreMisses) {
   // A file holding another key under this key's name (a stale or colliding entry).
   FileTableCache other(dir);
   other.store("model|1|other", "xyz");
-  std::filesystem::copy_file(other.path_of("model|1|other"), path, std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::copy_file(other.path_of("model|1|other"), path,
+                             std::filesystem::copy_options::overwrite_existing);
   EXPECT_FALSE(cache.load(key).has_value());
 
   // Storing again repairs it.

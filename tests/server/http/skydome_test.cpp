@@ -1,8 +1,6 @@
 // GET /v1/skydome over loopback: the streamed EXR decodes with OpenEXR, carries the header
 // attributes, and every pixel equals the direct evaluation; a client that disconnects
 // mid-stream leaves the server serving.
-#include <gtest/gtest.h>
-
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
@@ -10,6 +8,7 @@
 #include <OpenEXR/ImfStdIO.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <arpa/inet.h>
+#include <gtest/gtest.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -44,11 +43,13 @@ DecodedExr decode(const std::string& bytes) {
   for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) {
     auto& data = out.channels[it.name()];
     data.resize(static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height));
-    frame.insert(it.name(), Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(data.data()), sizeof(float),
-                                       sizeof(float) * static_cast<std::size_t>(out.width)));
+    frame.insert(it.name(),
+                 Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(data.data()), sizeof(float),
+                            sizeof(float) * static_cast<std::size_t>(out.width)));
   }
   for (auto it = file.header().begin(); it != file.header().end(); ++it) {
-    if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute())) out.strings[it.name()] = s->value();
+    if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
+      out.strings[it.name()] = s->value();
   }
   file.setFrameBuffer(frame);
   file.readPixels(dw.min.y, dw.max.y);
@@ -99,7 +100,8 @@ TEST_F(SkydomeTest, RgbFisheyeEqualsDirectEvaluation) {
 }
 
 TEST_F(SkydomeTest, SpectralLatlongCarriesFichetLayout) {
-  const DecodedExr exr = decode(fetch("projection=latlong&size=32&channels=spectral&wavelengths=450,550"));
+  const DecodedExr exr =
+      decode(fetch("projection=latlong&size=32&channels=spectral&wavelengths=450,550"));
   ASSERT_EQ(exr.width, 32);
   ASSERT_EQ(exr.height, 16);
   EXPECT_EQ(exr.strings.at("spectralLayoutVersion"), "1.0");
@@ -154,7 +156,8 @@ TEST_F(SkydomeTest, ClientDisconnectingMidStreamLeavesTheServerServing) {
     address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
     ASSERT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
     const std::string request =
-        "GET /v1/skydome?model=testsky&sun_zenith=50&sun_azimuth=100&size=1024&channels=spectral HTTP/1.1\r\n"
+        "GET /v1/skydome?model=testsky&sun_zenith=50&sun_azimuth=100&size=1024&channels=spectral "
+        "HTTP/1.1\r\n"
         "Host: 127.0.0.1\r\n\r\n";
     ASSERT_EQ(::send(fd, request.data(), request.size(), 0), static_cast<ssize_t>(request.size()));
     char buffer[4096];

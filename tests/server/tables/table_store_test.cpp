@@ -66,7 +66,8 @@ TEST(TableStore, DefaultTablesMakeItReady) {
   TableStore store(test_factories(), {});
   EXPECT_FALSE(store.ready());
   store.start_default_builds();
-  for (int i = 0; i < 200 && !store.ready(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  for (int i = 0; i < 200 && !store.ready(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
   EXPECT_TRUE(store.ready());
   const api::ModelState state = store.default_state(store.factories()[0]);
   EXPECT_EQ(state.status, api::ModelState::Status::ready);
@@ -127,7 +128,8 @@ TEST(TableStore, OnDemandBuildsDoNotWaitBehindTheStartQueue) {
   TableStore store(factories, options);
   store.start_default_builds();
   std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  EXPECT_EQ(store.default_state(store.factories()[0]).status, api::ModelState::Status::precomputing);
+  EXPECT_EQ(store.default_state(store.factories()[0]).status,
+            api::ModelState::Status::precomputing);
   const auto start = std::chrono::steady_clock::now();
   const auto model = store.model(store.factories()[0], with_options({{"gain", 3}}));
   EXPECT_TRUE(model);
