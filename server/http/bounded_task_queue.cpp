@@ -15,7 +15,16 @@ BoundedTaskQueue::~BoundedTaskQueue() { shutdown(); }
 void BoundedTaskQueue::enqueue(std::function<void()> task) {
   std::unique_lock lock(mutex_);
   not_full_.wait(lock, [&] { return shutting_down_ || tasks_.size() < max_queued_; });
-  if (shutting_down_) return;
+  if (shutting_down_) {
+    // Run it here rather than drop it: the task owns (and closes) its connection's socket.
+    lock.unlock();
+    try {
+      task();
+    } catch (...) {
+      spdlog::error("http: a connection task failed during shutdown");
+    }
+    return;
+  }
   tasks_.push_back(std::move(task));
   not_empty_.notify_one();
 }
