@@ -6,48 +6,14 @@
 
 #include <cmath>
 
+#include "tests/models/evaluation/function_model.h"
 #include "tests/models/evaluation/synthetic_sky.h"
 
 namespace clearsky {
 namespace {
 
-const ModelDescriptor& test_descriptor() {
-  static const ModelDescriptor descriptor = [] {
-    ModelDescriptor d;
-    d.id = "test-model";
-    d.name = "Test model";
-    d.version = "1";
-    d.min_wavelength_nm = 300;
-    d.max_wavelength_nm = 1000;
-    d.capabilities.max_sun_zenith_deg = 90.0;
-    return d;
-  }();
-  return descriptor;
-}
-
-// Radiance = f(view, wavelength) on its grid: the measured sky itself when f is the function
-// the synthetic capture was made of.
-class FunctionModel : public SkyModel {
- public:
-  explicit FunctionModel(testing::SkyFunction f, ModelConfig config = {})
-      : SkyModel(std::move(config)), f_(std::move(f)) {}
-  const ModelDescriptor& descriptor() const override { return test_descriptor(); }
-
- protected:
-  void compute_sky_radiance(const SunState&, const Viewpoint&, std::span<const ViewDirection> views,
-                            SpectralBatch& out) const override {
-    for (std::size_t v = 0; v < views.size(); ++v) {
-      auto spectrum = out.spectrum(v);
-      for (std::size_t i = 0; i < wavelengths().size(); ++i) spectrum[i] = f_(views[v], wavelengths()[i]);
-    }
-  }
-  Spectrum compute_sun_irradiance(const SunState&, const Viewpoint&) const override {
-    return Spectrum(wavelengths().size(), 0.0);
-  }
-
- private:
-  testing::SkyFunction f_;
-};
+using testing::FunctionModel;
+using testing::test_descriptor;
 
 // Returns the measured spectra of a capture, read at the grid wavelengths.
 class MeasuredSkyModel : public SkyModel {
