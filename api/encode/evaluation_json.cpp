@@ -8,7 +8,8 @@ namespace clearsky::api {
 namespace {
 
 double finite(double value, const char* what) {
-  if (!std::isfinite(value)) throw std::runtime_error(std::string("evaluation result: non-finite ") + what);
+  if (!std::isfinite(value))
+    throw std::runtime_error(std::string("evaluation result: non-finite ") + what);
   return value;
 }
 
@@ -38,14 +39,16 @@ nlohmann::json evaluation_to_json(const EvaluationReport& report) {
                       {"precompute_seconds", finite(r.precompute_seconds, "precompute time")},
                       {"evaluate_seconds", finite(r.evaluate_seconds, "evaluate time")}});
   }
-  return {{"dataset", report.dataset},
-          {"wavelength_range_nm", {number(report.min_wavelength_nm), number(report.max_wavelength_nm)}},
-          {"models", std::move(models)}};
+  return {
+      {"dataset", report.dataset},
+      {"wavelength_range_nm", {number(report.min_wavelength_nm), number(report.max_wavelength_nm)}},
+      {"models", std::move(models)}};
 }
 
 nlohmann::json datasets_to_json(const std::vector<storage::DatasetSummary>& datasets) {
   nlohmann::json out = nlohmann::json::array();
-  for (const auto& d : datasets) out.push_back({{"name", d.name}, {"captures", d.captures}, {"samples", d.samples}});
+  for (const auto& d : datasets)
+    out.push_back({{"name", d.name}, {"captures", d.captures}, {"samples", d.samples}});
   return out;
 }
 

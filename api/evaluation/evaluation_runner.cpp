@@ -33,9 +33,10 @@ std::vector<const ModelFactory*> resolve_models(const std::vector<std::string>& 
   }
   if (!unknown.empty()) {
     std::string known;
-    for (const ModelFactory& factory : available) known += (known.empty() ? "" : ", ") + factory.descriptor->id;
-    throw std::invalid_argument("unknown model(s): " + unknown + " (registered: " + (known.empty() ? "none" : known) +
-                                ")");
+    for (const ModelFactory& factory : available)
+      known += (known.empty() ? "" : ", ") + factory.descriptor->id;
+    throw std::invalid_argument("unknown model(s): " + unknown +
+                                " (registered: " + (known.empty() ? "none" : known) + ")");
   }
   return factories;
 }
@@ -51,7 +52,8 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
   if (!dataset) throw std::invalid_argument("no dataset named '" + request.dataset + "'");
   storage::CaptureRepository capture_repository(db);
   std::vector<storage::StoredCapture> stored = capture_repository.load(dataset->id);
-  if (stored.empty()) throw std::invalid_argument("dataset '" + request.dataset + "' has no captures");
+  if (stored.empty())
+    throw std::invalid_argument("dataset '" + request.dataset + "' has no captures");
 
   // The paper's preparation, applied to the captures as stored (the estimate is deterministic,
   // so it is recomputed rather than trusted from an earlier run).
@@ -67,7 +69,8 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
   {
     storage::Transaction transaction(db);
     for (std::size_t i = 0; i < captures.size(); ++i)
-      capture_repository.set_estimated_sun_azimuth(stored[i].id, captures[i].sun_azimuth_estimated_deg);
+      capture_repository.set_estimated_sun_azimuth(stored[i].id,
+                                                   captures[i].sun_azimuth_estimated_deg);
     transaction.commit();
   }
 
@@ -102,7 +105,8 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
         r.values_compared = static_cast<std::int64_t>(c.values_compared);
         per_capture.push_back(r);
       }
-      runs.finish(run_id, result.rmse, result.precompute_seconds, result.evaluate_seconds, steps, per_capture);
+      runs.finish(run_id, result.rmse, result.precompute_seconds, result.evaluate_seconds, steps,
+                  per_capture);
       report.models.push_back({run_id, std::move(result)});
     } catch (const std::exception& e) {
       runs.fail(run_id, e.what());

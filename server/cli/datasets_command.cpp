@@ -26,7 +26,8 @@ void add_datasets_command(CLI::App& app) {
       return;
     }
     for (const auto& d : datasets)
-      std::cout << d.name << "\t" << d.format << "\t" << d.captures << " captures\t" << d.samples << " samples\n";
+      std::cout << d.name << "\t" << d.format << "\t" << d.captures << " captures\t" << d.samples
+                << " samples\n";
   });
 }
 

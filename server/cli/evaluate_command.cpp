@@ -11,7 +11,8 @@
 namespace clearsky::cli {
 
 void add_evaluate_command(CLI::App& app, const std::string& software_version) {
-  auto* command = app.add_subcommand("evaluate", "RMSE of models against a stored dataset (stored as runs)");
+  auto* command =
+      app.add_subcommand("evaluate", "RMSE of models against a stored dataset (stored as runs)");
   struct Options {
     std::string dataset;
     std::vector<std::string> models{"all"};
@@ -40,11 +41,11 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
     for (const api::ModelRun& run : report.models) {
       const EvaluationResult& r = run.result;
       std::cout << r.model_id << ": RMSE " << r.rmse << " mW/(m2.sr.nm) over " << r.captures.size()
-                << " captures (run " << run.run_id << ", precompute " << r.precompute_seconds << " s, evaluate "
-                << r.evaluate_seconds << " s)\n";
+                << " captures (run " << run.run_id << ", precompute " << r.precompute_seconds
+                << " s, evaluate " << r.evaluate_seconds << " s)\n";
       for (const CaptureEvaluation& c : r.captures)
-        std::cout << "  " << c.time_iso << "  sun " << c.sun_zenith_deg << " / " << c.sun_azimuth_deg << " deg  RMSE "
-                  << c.rmse << '\n';
+        std::cout << "  " << c.time_iso << "  sun " << c.sun_zenith_deg << " / "
+                  << c.sun_azimuth_deg << " deg  RMSE " << c.rmse << '\n';
     }
   });
 }

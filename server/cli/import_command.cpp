@@ -1,8 +1,7 @@
 // `clearsky import kider PATH... [--name NAME] [--db PATH] [--json]`: imports Kider et al.
 // 2014 captures (.7z archives or folders) into a dataset, in one transaction.
-#include <nlohmann/json.hpp>
-
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "server/cli/commands.h"
 #include "server/cli/database_option.h"
@@ -13,7 +12,8 @@ namespace clearsky::cli {
 void add_import_command(CLI::App& app) {
   auto* import = app.add_subcommand("import", "Import measured skies into a dataset");
   import->require_subcommand(1);
-  auto* kider = import->add_subcommand("kider", "Kider et al. 2014 captures: .7z archives or folders of .asd.rad.txt");
+  auto* kider = import->add_subcommand(
+      "kider", "Kider et al. 2014 captures: .7z archives or folders of .asd.rad.txt");
   struct Options {
     std::vector<std::string> paths;
     std::string name = "kider2014";
@@ -21,7 +21,9 @@ void add_import_command(CLI::App& app) {
     bool json = false;
   };
   auto options = std::make_shared<Options>();
-  kider->add_option("paths", options->paths, "Archives (.7z) or folders")->required()->check(CLI::ExistingPath);
+  kider->add_option("paths", options->paths, "Archives (.7z) or folders")
+      ->required()
+      ->check(CLI::ExistingPath);
   kider->add_option("--name", options->name, "Dataset name")->capture_default_str();
   add_database_option(*kider, options->db);
   kider->add_flag("--json", options->json, "Print the import report as JSON");
@@ -42,8 +44,8 @@ void add_import_command(CLI::App& app) {
       return;
     }
     std::cout << "dataset " << report.dataset << ": " << report.added.size() << " captures added ("
-              << report.samples_added << " samples), " << report.unchanged.size() << " already present, in "
-              << report.seconds << " s\n";
+              << report.samples_added << " samples), " << report.unchanged.size()
+              << " already present, in " << report.seconds << " s\n";
   });
 }
 

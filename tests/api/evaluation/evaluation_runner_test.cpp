@@ -23,7 +23,8 @@ namespace {
 
 // A sky symmetric about azimuth 120 degrees (so the estimate finds 120), W/(m2.sr.nm).
 double sky(const ViewDirection& v, double nm) {
-  return 0.05 + 0.02 * std::sin(v.zenith_rad) * std::cos(v.azimuth_rad - 120.0 * kDegree) + 1e-5 * (nm - 500);
+  return 0.05 + 0.02 * std::sin(v.zenith_rad) * std::cos(v.azimuth_rad - 120.0 * kDegree) +
+         1e-5 * (nm - 500);
 }
 
 ModelDescriptor descriptor_with_id(const std::string& id) {
@@ -56,13 +57,14 @@ const std::vector<ModelFactory>& test_factories() {
        }},
       {&offset_descriptor(),
        [](const ModelConfig& c, const PrecomputeContext&) -> std::shared_ptr<const SkyModel> {
-         return std::make_shared<testing::FunctionModel>([](const ViewDirection& v, double nm) { return sky(v, nm) + 0.003; },
-                                                         c, offset_descriptor());
+         return std::make_shared<testing::FunctionModel>(
+             [](const ViewDirection& v, double nm) { return sky(v, nm) + 0.003; }, c,
+             offset_descriptor());
        }},
       {&black_descriptor(),
        [](const ModelConfig& c, const PrecomputeContext&) -> std::shared_ptr<const SkyModel> {
-         return std::make_shared<testing::FunctionModel>([](const ViewDirection&, double) { return 0.0; }, c,
-                                                         black_descriptor());
+         return std::make_shared<testing::FunctionModel>(
+             [](const ViewDirection&, double) { return 0.0; }, c, black_descriptor());
        }},
       {&broken_descriptor(),
        [](const ModelConfig&, const PrecomputeContext&) -> std::shared_ptr<const SkyModel> {
@@ -88,7 +90,8 @@ struct Fixture {
   }
 };
 
-EvaluationRequest request(std::vector<std::string> models, const std::string& dataset = "synthetic") {
+EvaluationRequest request(std::vector<std::string> models,
+                          const std::string& dataset = "synthetic") {
   EvaluationRequest r;
   r.dataset = dataset;
   r.models = std::move(models);
@@ -98,7 +101,8 @@ EvaluationRequest request(std::vector<std::string> models, const std::string& da
 
 TEST(EvaluationRunner, StoresEveryRunWithItsCaptureResults) {
   Fixture f;
-  const EvaluationReport report = run_evaluation(f.db, request({"exact", "offset"}), test_factories());
+  const EvaluationReport report =
+      run_evaluation(f.db, request({"exact", "offset"}), test_factories());
   ASSERT_EQ(report.models.size(), 2u);
   EXPECT_NEAR(report.models[0].result.rmse, 0.0, 1e-9);
   EXPECT_NEAR(report.models[1].result.rmse, 3.0, 1e-9);
@@ -118,12 +122,15 @@ TEST(EvaluationRunner, StoresEveryRunWithItsCaptureResults) {
   EXPECT_NE(stored->processing_steps.find("sun azimuth estimated"), std::string::npos);
   // The estimate is also kept with the capture.
   const auto dataset = storage::DatasetRepository(f.db).find("synthetic");
-  EXPECT_NEAR(storage::CaptureRepository(f.db).load(dataset->id)[0].capture.sun_azimuth_estimated_deg, 120.0, 0.2 + 1e-9);
+  EXPECT_NEAR(
+      storage::CaptureRepository(f.db).load(dataset->id)[0].capture.sun_azimuth_estimated_deg,
+      120.0, 0.2 + 1e-9);
 }
 
 TEST(EvaluationRunner, JsonFollowsTheCliContract) {
   Fixture f;
-  const nlohmann::json j = evaluation_to_json(run_evaluation(f.db, request({"offset"}), test_factories()));
+  const nlohmann::json j =
+      evaluation_to_json(run_evaluation(f.db, request({"offset"}), test_factories()));
   EXPECT_EQ(j.at("dataset"), "synthetic");
   EXPECT_EQ(j.at("wavelength_range_nm").dump(), "[360,720]");
   ASSERT_EQ(j.at("models").size(), 1u);
@@ -157,7 +164,8 @@ TEST(EvaluationRunner, UnknownModelOrDatasetIsRefusedBeforeAnyRun) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("nishita2042"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(run_evaluation(f.db, request({"exact"}, "missing"), test_factories()), std::invalid_argument);
+  EXPECT_THROW(run_evaluation(f.db, request({"exact"}, "missing"), test_factories()),
+               std::invalid_argument);
   const auto dataset = storage::DatasetRepository(f.db).find("synthetic");
   EXPECT_TRUE(storage::EvaluationRunRepository(f.db).list(dataset->id).empty());
 }
@@ -184,11 +192,13 @@ TEST(EvaluationRunner, BlackSkyAgainstARealCaptureGivesTheMeasuredRms) {
   const EvaluationReport report = run_evaluation(db, request({"black"}, "real"), test_factories());
 
   // By hand: the RMS of the repaired measurements at 360 + 11.75 i nm, i = 0..30.
-  MeasuredCapture capture = storage::read_kider_archive(clearsky::testing::shared_data_dir() / archive).at(0);
+  MeasuredCapture capture =
+      storage::read_kider_archive(clearsky::testing::shared_data_dir() / archive).at(0);
   repair_defective_samples(capture);
   double sum = 0;
   for (const MeasuredSample& s : capture.samples)
-    for (int i = 0; i <= 30; ++i) sum += std::pow(s.radiance.at(360 + 11.75 * i, OutOfRange::error), 2);
+    for (int i = 0; i <= 30; ++i)
+      sum += std::pow(s.radiance.at(360 + 11.75 * i, OutOfRange::error), 2);
   const double expected = 1000.0 * std::sqrt(sum / (81 * 31));
   ASSERT_EQ(report.models.size(), 1u);
   EXPECT_NEAR(report.models[0].result.rmse, expected, 1e-9 * expected);

@@ -28,7 +28,8 @@ inline const ModelDescriptor& test_descriptor() {
 // the synthetic capture was made of.
 class FunctionModel : public SkyModel {
  public:
-  explicit FunctionModel(SkyFunction f, ModelConfig config = {}, const ModelDescriptor& descriptor = test_descriptor())
+  explicit FunctionModel(SkyFunction f, ModelConfig config = {},
+                         const ModelDescriptor& descriptor = test_descriptor())
       : SkyModel(std::move(config)), f_(std::move(f)), descriptor_(descriptor) {}
   const ModelDescriptor& descriptor() const override { return descriptor_; }
 
@@ -37,7 +38,8 @@ class FunctionModel : public SkyModel {
                             SpectralBatch& out) const override {
     for (std::size_t v = 0; v < views.size(); ++v) {
       auto spectrum = out.spectrum(v);
-      for (std::size_t i = 0; i < wavelengths().size(); ++i) spectrum[i] = f_(views[v], wavelengths()[i]);
+      for (std::size_t i = 0; i < wavelengths().size(); ++i)
+        spectrum[i] = f_(views[v], wavelengths()[i]);
     }
   }
   Spectrum compute_sun_irradiance(const SunState&, const Viewpoint&) const override {

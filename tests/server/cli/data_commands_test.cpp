@@ -50,17 +50,21 @@ struct TempDb {
 };
 
 std::string archive(const std::string& time) {
-  return (clearsky::testing::shared_data_dir() / "kider2014/2013-05-27/RADIANCE" / ("2013-05-27___" + time + ".00.7z"))
+  return (clearsky::testing::shared_data_dir() / "kider2014/2013-05-27/RADIANCE" /
+          ("2013-05-27___" + time + ".00.7z"))
       .string();
 }
 
 TEST(DataCommands, ImportThenListDatasets) {
   CLEARSKY_REQUIRE_SHARED_DATA("kider2014/2013-05-27/RADIANCE");
-  ASSERT_TRUE(std::filesystem::exists(std::string(CLEARSKY_BINARY_DIR) + "/clearsky")) << "build the clearsky target";
+  ASSERT_TRUE(std::filesystem::exists(std::string(CLEARSKY_BINARY_DIR) + "/clearsky"))
+      << "build the clearsky target";
   TempDb t;
-  const Result imported = run("import kider " + archive("09.30") + " " + archive("09.45") + " --name day --db " + t.db);
+  const Result imported =
+      run("import kider " + archive("09.30") + " " + archive("09.45") + " --name day --db " + t.db);
   ASSERT_EQ(imported.exit_code, 0) << imported.output;
-  EXPECT_NE(imported.output.find("2 captures added (162 samples)"), std::string::npos) << imported.output;
+  EXPECT_NE(imported.output.find("2 captures added (162 samples)"), std::string::npos)
+      << imported.output;
   const Result again = run("import kider " + archive("09.30") + " --name day --json --db " + t.db);
   ASSERT_EQ(again.exit_code, 0) << again.output;
   EXPECT_EQ(nlohmann::json::parse(again.output).at("unchanged").size(), 1u);
@@ -80,7 +84,11 @@ TEST(DataCommands, ErrorsAreReportedWithExitStatus1) {
   EXPECT_NE(unknown_model.output.find("nishita2042"), std::string::npos) << unknown_model.output;
   std::filesystem::create_directories(t.dir);
   const auto bad = t.dir / "bad.7z";
-  { std::FILE* f = std::fopen(bad.c_str(), "w"); std::fputs("not an archive", f); std::fclose(f); }
+  {
+    std::FILE* f = std::fopen(bad.c_str(), "w");
+    std::fputs("not an archive", f);
+    std::fclose(f);
+  }
   const Result bad_import = run("import kider " + bad.string() + " --db " + t.db);
   EXPECT_EQ(bad_import.exit_code, 1);
   EXPECT_NE(bad_import.output.find("bad.7z"), std::string::npos) << bad_import.output;
