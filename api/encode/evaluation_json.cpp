@@ -14,7 +14,7 @@ double finite(double value, const char* what) {
 }
 
 // Whole numbers as JSON integers ([360, 720] as the contract writes them).
-nlohmann::json number(double value) {
+nlohmann::ordered_json number(double value) {
   if (std::isfinite(value) && std::floor(value) == value && std::abs(value) < 1e15)
     return static_cast<std::int64_t>(value);
   return value;
@@ -22,11 +22,11 @@ nlohmann::json number(double value) {
 
 }  // namespace
 
-nlohmann::json evaluation_to_json(const EvaluationReport& report) {
-  nlohmann::json models = nlohmann::json::array();
+nlohmann::ordered_json evaluation_to_json(const EvaluationReport& report) {
+  nlohmann::ordered_json models = nlohmann::ordered_json::array();
   for (const ModelRun& run : report.models) {
     const EvaluationResult& r = run.result;
-    nlohmann::json captures = nlohmann::json::array();
+    nlohmann::ordered_json captures = nlohmann::ordered_json::array();
     for (const CaptureEvaluation& c : r.captures) {
       captures.push_back({{"time", c.time_iso},
                           {"sun_zenith", finite(c.sun_zenith_deg, "sun zenith")},
@@ -45,8 +45,8 @@ nlohmann::json evaluation_to_json(const EvaluationReport& report) {
       {"models", std::move(models)}};
 }
 
-nlohmann::json datasets_to_json(const std::vector<storage::DatasetSummary>& datasets) {
-  nlohmann::json out = nlohmann::json::array();
+nlohmann::ordered_json datasets_to_json(const std::vector<storage::DatasetSummary>& datasets) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
   for (const auto& d : datasets)
     out.push_back({{"name", d.name}, {"captures", d.captures}, {"samples", d.samples}});
   return out;

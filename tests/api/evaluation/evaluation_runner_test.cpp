@@ -129,7 +129,7 @@ TEST(EvaluationRunner, StoresEveryRunWithItsCaptureResults) {
 
 TEST(EvaluationRunner, JsonFollowsTheCliContract) {
   Fixture f;
-  const nlohmann::json j =
+  const nlohmann::ordered_json j =
       evaluation_to_json(run_evaluation(f.db, request({"offset"}), test_factories()));
   EXPECT_EQ(j.at("dataset"), "synthetic");
   EXPECT_EQ(j.at("wavelength_range_nm").dump(), "[360,720]");
@@ -147,6 +147,16 @@ TEST(EvaluationRunner, JsonFollowsTheCliContract) {
   EXPECT_DOUBLE_EQ(c.at("sun_zenith").get<double>(), 40.0);
   EXPECT_TRUE(c.at("sun_azimuth").is_number());
   EXPECT_NEAR(c.at("rmse").get<double>(), 3.0, 1e-9);
+  // Keys in the contract's order.
+  const std::string text = j.dump();
+  EXPECT_EQ(text.rfind(R"({"dataset":"synthetic","wavelength_range_nm":[360,720],"models":[{"model":"offset","rmse":)", 0),
+            0u)
+      << text;
+  EXPECT_NE(text.find(R"("captures":[{"time":"2013-05-27T09:30:00-04:00","sun_zenith":40.0,"sun_azimuth":)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find(R"(],"precompute_seconds":)"), std::string::npos) << text;
+  EXPECT_LT(text.find("precompute_seconds"), text.find("evaluate_seconds"));
 }
 
 TEST(EvaluationRunner, AllMeansEveryAvailableModel) {
