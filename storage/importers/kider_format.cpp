@@ -5,7 +5,6 @@
 #include <charconv>
 #include <cmath>
 #include <ctime>
-#include <regex>
 
 #include "models/core/numeric.h"
 
@@ -49,21 +48,54 @@ KiderFormatError::KiderFormatError(const std::string& source, long line, const s
       line_(line) {}
 
 std::optional<KiderFileName> parse_kider_file_name(std::string_view base_name) {
-  static const std::regex pattern(
-      R"(^((\d{4})-(\d{2})-(\d{2})___(\d{2})\.(\d{2})\.(\d{2}))_-_(\d+)____(-?\d+(?:\.\d+)?)___(-?\d+(?:\.\d+)?)\.asd\.rad\.txt$)");
-  std::match_results<std::string_view::const_iterator> m;
-  if (!std::regex_match(base_name.begin(), base_name.end(), m, pattern)) return std::nullopt;
+  // DATE___HH.MM.SS_-_INDEX____AZIMUTH___ELEVATION.asd.rad.txt, DATE = YYYY-MM-DD.
+  constexpr std::string_view kSuffix = ".asd.rad.txt";
+  if (base_name.size() <= kSuffix.size() || !base_name.ends_with(kSuffix)) return std::nullopt;
+  std::string_view rest = base_name.substr(0, base_name.size() - kSuffix.size());
+
+  // Fixed-width digits at positions of `layout` marked 'd'; other characters must match.
+  constexpr std::string_view kLayout = "dddd-dd-dd___dd.dd.dd";
+  if (rest.size() < kLayout.size()) return std::nullopt;
+  for (std::size_t i = 0; i < kLayout.size(); ++i) {
+    const char c = rest[i];
+    if (kLayout[i] == 'd' ? !(c >= '0' && c <= '9') : c != kLayout[i]) return std::nullopt;
+  }
+  auto digits = [&](std::size_t at, std::size_t count) {
+    int value = 0;
+    for (std::size_t i = at; i < at + count; ++i) value = value * 10 + (rest[i] - '0');
+    return value;
+  };
   KiderFileName name;
-  name.capture_label = m[1].str();
-  name.year = std::stoi(m[2].str());
-  name.month = std::stoi(m[3].str());
-  name.day = std::stoi(m[4].str());
-  name.hour = std::stoi(m[5].str());
-  name.minute = std::stoi(m[6].str());
-  name.second = std::stoi(m[7].str());
-  name.index = std::stoi(m[8].str());
-  name.azimuth_ccw_deg = std::stod(m[9].str());
-  name.elevation_deg = std::stod(m[10].str());
+  name.capture_label = std::string(rest.substr(0, kLayout.size()));
+  name.year = digits(0, 4);
+  name.month = digits(5, 2);
+  name.day = digits(8, 2);
+  name.hour = digits(13, 2);
+  name.minute = digits(16, 2);
+  name.second = digits(19, 2);
+  rest.remove_prefix(kLayout.size());
+
+  auto take_field = [&](std::string_view separator) -> std::optional<std::string_view> {
+    if (!rest.starts_with(separator)) return std::nullopt;
+    rest.remove_prefix(separator.size());
+    const std::size_t end = rest.find('_');
+    const std::string_view field = rest.substr(0, end);
+    rest = end == std::string_view::npos ? std::string_view{} : rest.substr(end);
+    if (field.empty()) return std::nullopt;
+    return field;
+  };
+  const auto index = take_field("_-_");
+  const auto azimuth = take_field("____");
+  const auto elevation = take_field("___");
+  if (!index || !azimuth || !elevation || !rest.empty()) return std::nullopt;
+  if (index->find_first_not_of("0123456789") != std::string_view::npos || index->size() > 6)
+    return std::nullopt;
+  name.index = std::stoi(std::string(*index));
+  const auto azimuth_deg = parse_number(*azimuth);
+  const auto elevation_deg = parse_number(*elevation);
+  if (!azimuth_deg || !elevation_deg) return std::nullopt;
+  name.azimuth_ccw_deg = *azimuth_deg;
+  name.elevation_deg = *elevation_deg;
   if (name.month < 1 || name.month > 12 || name.day < 1 || name.day > 31 || name.hour > 23 ||
       name.minute > 59 || name.second > 60 || name.elevation_deg < 0 || name.elevation_deg > 90)
     return std::nullopt;

@@ -30,6 +30,13 @@ TEST(KiderFileName, IgnoresOtherFiles) {
   EXPECT_FALSE(parse_kider_file_name("2013-05-27___10.30.00_-_0____0.0___12.1151.asd.txt"));
   EXPECT_FALSE(parse_kider_file_name("notes.txt"));
   EXPECT_FALSE(parse_kider_file_name("2013-05-27___09.30.00_-_42____195.0___95.0.asd.rad.txt"));
+  EXPECT_FALSE(parse_kider_file_name("2013-05-27___09.30.00_-_42____195.0.asd.rad.txt"));
+  EXPECT_FALSE(parse_kider_file_name("2013-05-27___09.30.00_-_x____195.0___12.1151.asd.rad.txt"));
+  EXPECT_FALSE(
+      parse_kider_file_name("2013-05-27___09.30.00_-_42____195.0___12.1151_extra.asd.rad.txt"));
+  EXPECT_FALSE(parse_kider_file_name("2013-13-27___09.30.00_-_42____195.0___12.1151.asd.rad.txt"));
+  EXPECT_FALSE(parse_kider_file_name(".asd.rad.txt"));
+  EXPECT_TRUE(parse_kider_file_name("2013-05-27___09.30.00_-_80____0.0___90.0.asd.rad.txt"));
 }
 
 TEST(KiderViewDirection, CounterClockwiseFileAzimuthBecomesClockwise) {
