@@ -38,7 +38,7 @@ void require(bool ok, const char* name, double value, const char* range) {
 
 bool within(double value, double lo, double hi) { return value >= lo && value <= hi; }
 
-void validate(const SolarPositionInput& in) {
+void validate_input(const SolarPositionInput& in) {
   require(within(in.unix_time_utc_s, kEarliestUnixS, kLatestUnixS), "unix_time_utc_s", in.unix_time_utc_s,
           "an instant of the years -2000 to 6000");
   require(within(in.latitude_deg, -90.0, 90.0), "latitude_deg", in.latitude_deg, "in [-90, 90] degrees");
@@ -81,8 +81,10 @@ double interpolate_three_days(const std::array<double, 3>& v, double n, bool is_
 
 }  // namespace
 
+void validate_solar_position_input(const SolarPositionInput& input) { validate_input(input); }
+
 SolarPosition solar_position(const SolarPositionInput& input) {
-  validate(input);
+  validate_input(input);
   const spa::TimeScales t = spa::time_scales(days_since_j2000(input.unix_time_utc_s + input.delta_ut1_s), input.delta_t_s);
   const spa::GeocentricSun sun = spa::geocentric_sun(t);
   const double sidereal_deg = spa::apparent_sidereal_time_deg(t.julian_day, t.julian_century, sun.nutation_longitude_deg,
@@ -107,7 +109,7 @@ SolarPosition solar_position(const SolarPositionInput& input) {
 }
 
 SunTimes sun_times(const SolarPositionInput& input, double timezone_offset_h) {
-  validate(input);
+  validate_input(input);
   require(within(timezone_offset_h, -18.0, 18.0), "timezone_offset_h", timezone_offset_h, "in [-18, 18] hours");
   const double latitude = input.latitude_deg;
   const double longitude = input.longitude_deg;

@@ -66,6 +66,8 @@ struct SunTimes {
 // Throws std::invalid_argument whose message starts with the name of the first invalid input
 // (the field name above); NaN fails every check.
 SolarPosition solar_position(const SolarPositionInput& input);
+// The checks solar_position and sun_times make, for callers that validate before computing.
+void validate_solar_position_input(const SolarPositionInput& input);
 
 // Sunrise, sun transit and sunset (SPA appendix A.2) of the local calendar day that contains
 // the input instant, the local day being UTC shifted by timezone_offset_h (in [-18, 18] hours).
