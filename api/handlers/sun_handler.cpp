@@ -21,12 +21,12 @@ const char* day_kind_name(DayKind kind) {
   return "normal";
 }
 
-nlohmann::json sun_answer_to_json(const SunRequest& request, const SunAnswer& answer) {
-  const auto time_or_null = [&](const std::optional<double>& unix_s) -> nlohmann::json {
+nlohmann::ordered_json sun_answer_to_json(const SunRequest& request, const SunAnswer& answer) {
+  const auto time_or_null = [&](const std::optional<double>& unix_s) -> nlohmann::ordered_json {
     if (!unix_s) return nullptr;
     return format_iso8601_time(*unix_s, request.utc_offset_min, request.utc_designator);
   };
-  return nlohmann::json{
+  return nlohmann::ordered_json{
       {"zenith", answer.position.zenith_deg},
       {"azimuth", answer.position.azimuth_deg},
       {"sunrise", time_or_null(answer.times.sunrise_utc_s)},
@@ -36,7 +36,7 @@ nlohmann::json sun_answer_to_json(const SunRequest& request, const SunAnswer& an
   };
 }
 
-nlohmann::json handle_sun(const QueryParameters& parameters, double now_unix_s) {
+nlohmann::ordered_json handle_sun(const QueryParameters& parameters, double now_unix_s) {
   const SunRequest request = parse_sun_request(parameters, now_unix_s);
   return sun_answer_to_json(request, compute_sun(request));
 }

@@ -1,4 +1,4 @@
-// The sun query, transport-free: parse the parameters, compute the position and the day's
+// The sun query, transport-free (keys in the order below): parse the parameters, compute the position and the day's
 // sunrise/transit/sunset with SPA, encode the answer (GET /v1/sun and `clearsky sun --json`):
 //   {"zenith": DEG, "azimuth": DEG, "sunrise": ISO|null, "transit": ISO, "sunset": ISO|null,
 //    "day": "normal"|"polar_day"|"polar_night"}
@@ -20,9 +20,9 @@ struct SunAnswer {
 };
 
 SunAnswer compute_sun(const SunRequest& request);
-nlohmann::json sun_answer_to_json(const SunRequest& request, const SunAnswer& answer);
+nlohmann::ordered_json sun_answer_to_json(const SunRequest& request, const SunAnswer& answer);
 // parse_sun_request, compute_sun and sun_answer_to_json; throws InvalidParameter.
-nlohmann::json handle_sun(const QueryParameters& parameters, double now_unix_s);
+nlohmann::ordered_json handle_sun(const QueryParameters& parameters, double now_unix_s);
 
 // "normal", "polar_day" or "polar_night".
 const char* day_kind_name(DayKind kind);

@@ -9,7 +9,7 @@ namespace clearsky::api {
 namespace {
 
 TEST(SunHandler, ReportExampleAsJson) {
-  const nlohmann::json answer = handle_sun({{"lat", "39.742476"},
+  const nlohmann::ordered_json answer = handle_sun({{"lat", "39.742476"},
                                             {"lon", "-105.1786"},
                                             {"altitude", "1830.14"},
                                             {"time", "2003-10-17T12:30:30-07:00"},
@@ -26,7 +26,7 @@ TEST(SunHandler, ReportExampleAsJson) {
 }
 
 TEST(SunHandler, PolarNightHasNullSunriseAndSunset) {
-  const nlohmann::json answer =
+  const nlohmann::ordered_json answer =
       handle_sun({{"lat", "-78.5"}, {"lon", "166.7"}, {"time", "2023-06-21T12:00:00+12:00"}}, 0.0);
   EXPECT_TRUE(answer.at("sunrise").is_null());
   EXPECT_TRUE(answer.at("sunset").is_null());
