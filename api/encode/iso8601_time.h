@@ -9,6 +9,7 @@ namespace clearsky::api {
 
 // utc_offset_min in [-1080, 1080]; unix_time_utc_s finite (years before 0000 or after 9999 are
 // written with a sign and more digits, as ISO 8601's expanded years).
-std::string format_iso8601_time(double unix_time_utc_s, int utc_offset_min, bool utc_designator = false);
+std::string format_iso8601_time(double unix_time_utc_s, int utc_offset_min,
+                                bool utc_designator = false);
 
 }  // namespace clearsky::api

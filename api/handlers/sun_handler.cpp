@@ -6,7 +6,8 @@
 namespace clearsky::api {
 
 SunAnswer compute_sun(const SunRequest& request) {
-  return SunAnswer{solar_position(request.position), sun_times(request.position, request.utc_offset_min / 60.0)};
+  return SunAnswer{solar_position(request.position),
+                   sun_times(request.position, request.utc_offset_min / 60.0)};
 }
 
 const char* day_kind_name(DayKind kind) {

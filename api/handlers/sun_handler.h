@@ -1,5 +1,6 @@
-// The sun query, transport-free (keys in the order below): parse the parameters, compute the position and the day's
-// sunrise/transit/sunset with SPA, encode the answer (GET /v1/sun and `clearsky sun --json`):
+// The sun query, transport-free (keys in the order below): parse the parameters, compute the
+// position and the day's sunrise/transit/sunset with SPA, encode the answer (GET /v1/sun and
+// `clearsky sun --json`):
 //   {"zenith": DEG, "azimuth": DEG, "sunrise": ISO|null, "transit": ISO, "sunset": ISO|null,
 //    "day": "normal"|"polar_day"|"polar_night"}
 // zenith topocentric (refraction applied unless refraction=false), azimuth clockwise from North,

@@ -17,7 +17,9 @@ class Reader {
   explicit Reader(std::string_view text) : text_(text) {}
 
   bool done() const { return pos_ == text_.size(); }
-  std::optional<char> peek() const { return done() ? std::nullopt : std::optional<char>(text_[pos_]); }
+  std::optional<char> peek() const {
+    return done() ? std::nullopt : std::optional<char>(text_[pos_]);
+  }
   bool accept(char c) {
     if (peek() != c) return false;
     ++pos_;
@@ -59,8 +61,9 @@ class Reader {
 Iso8601Time parse_iso8601_time(std::string_view text, const std::string& parameter) {
   const std::string shown = quoted(text);
   const auto fail = [&](const std::string& why) -> InvalidParameter {
-    return InvalidParameter(parameter, why + " in " + shown +
-                                           "; expected an ISO 8601 time with offset such as 2013-05-27T11:45:00-04:00");
+    return InvalidParameter(
+        parameter, why + " in " + shown +
+                       "; expected an ISO 8601 time with offset such as 2013-05-27T11:45:00-04:00");
   };
 
   Reader in(text);
@@ -114,7 +117,8 @@ Iso8601Time parse_iso8601_time(std::string_view text, const std::string& paramet
   }
   if (!in.done()) throw fail("unexpected characters after the UTC offset");
 
-  const std::chrono::year_month_day date{std::chrono::year(*year), std::chrono::month(static_cast<unsigned>(*month)),
+  const std::chrono::year_month_day date{std::chrono::year(*year),
+                                         std::chrono::month(static_cast<unsigned>(*month)),
                                          std::chrono::day(static_cast<unsigned>(*day))};
   if (*month < 1 || *month > 12) throw fail("month out of 01-12");
   if (!date.ok()) throw fail("day out of range for the month");

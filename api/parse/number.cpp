@@ -25,17 +25,20 @@ double parse_number(std::string_view text, const std::string& parameter) {
   const std::string_view body = trim(text);
   // from_chars rejects a leading '+', which people write; skip one before a digit or '.'.
   std::string_view digits = body;
-  if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-' && digits[1] != '+') digits.remove_prefix(1);
+  if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-' && digits[1] != '+')
+    digits.remove_prefix(1);
   double value = 0.0;
   const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   if (body.empty() || error != std::errc{} || end != digits.data() + digits.size()) {
     throw InvalidParameter(parameter, "expected a number, got " + quoted(text));
   }
-  if (!std::isfinite(value)) throw InvalidParameter(parameter, "must be a finite number, got " + quoted(text));
+  if (!std::isfinite(value))
+    throw InvalidParameter(parameter, "must be a finite number, got " + quoted(text));
   return value;
 }
 
-double parse_number_in_range(std::string_view text, const std::string& parameter, double lo, double hi) {
+double parse_number_in_range(std::string_view text, const std::string& parameter, double lo,
+                             double hi) {
   const double value = parse_number(text, parameter);
   if (!(value >= lo && value <= hi)) {
     std::ostringstream message;

@@ -10,7 +10,8 @@ namespace clearsky::api {
 // A finite decimal number ("12", "-3.5", "1e3"); leading and trailing spaces are allowed.
 double parse_number(std::string_view text, const std::string& parameter);
 // A finite number in [lo, hi].
-double parse_number_in_range(std::string_view text, const std::string& parameter, double lo, double hi);
+double parse_number_in_range(std::string_view text, const std::string& parameter, double lo,
+                             double hi);
 // "true"/"false", "1"/"0", "yes"/"no" (case-insensitive).
 bool parse_boolean(std::string_view text, const std::string& parameter);
 

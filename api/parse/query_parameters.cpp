@@ -7,7 +7,8 @@
 
 namespace clearsky::api {
 
-std::optional<std::string> optional_parameter(const QueryParameters& parameters, const std::string& name) {
+std::optional<std::string> optional_parameter(const QueryParameters& parameters,
+                                              const std::string& name) {
   const auto [first, last] = parameters.equal_range(name);
   if (first == last) return std::nullopt;
   if (std::next(first) != last) throw InvalidParameter(name, "given more than once");
@@ -20,7 +21,8 @@ std::string required_parameter(const QueryParameters& parameters, const std::str
   return *value;
 }
 
-void reject_unknown_parameters(const QueryParameters& parameters, std::initializer_list<std::string_view> known) {
+void reject_unknown_parameters(const QueryParameters& parameters,
+                               std::initializer_list<std::string_view> known) {
   for (const auto& [name, value] : parameters) {
     if (std::find(known.begin(), known.end(), name) == known.end()) {
       std::string list;

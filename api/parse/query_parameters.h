@@ -14,10 +14,12 @@ namespace clearsky::api {
 using QueryParameters = std::multimap<std::string, std::string>;
 
 // The value of a parameter given at most once; empty when absent.
-std::optional<std::string> optional_parameter(const QueryParameters& parameters, const std::string& name);
+std::optional<std::string> optional_parameter(const QueryParameters& parameters,
+                                              const std::string& name);
 // The value of a parameter that must be given exactly once.
 std::string required_parameter(const QueryParameters& parameters, const std::string& name);
 // Throws InvalidParameter for the first parameter whose name is not in known.
-void reject_unknown_parameters(const QueryParameters& parameters, std::initializer_list<std::string_view> known);
+void reject_unknown_parameters(const QueryParameters& parameters,
+                               std::initializer_list<std::string_view> known);
 
 }  // namespace clearsky::api

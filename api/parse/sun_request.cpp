@@ -32,7 +32,8 @@ double number_or(const QueryParameters& parameters, const std::string& name, dou
   const std::string_view what = error.what();
   for (const auto& [field, parameter] : kFieldParameters) {
     if (what.rfind(std::string(field) + ": ", 0) == 0) {
-      if (parameter == "time") throw InvalidParameter("time", "must lie in the years -2000 to 6000 (SPA's range)");
+      if (parameter == "time")
+        throw InvalidParameter("time", "must lie in the years -2000 to 6000 (SPA's range)");
       throw InvalidParameter(std::string(parameter), std::string(what.substr(field.size() + 2)));
     }
   }
@@ -42,8 +43,8 @@ double number_or(const QueryParameters& parameters, const std::string& name, dou
 }  // namespace
 
 SunRequest parse_sun_request(const QueryParameters& parameters, double now_unix_s) {
-  reject_unknown_parameters(parameters, {"lat", "lon", "time", "altitude", "pressure", "temperature", "delta_t",
-                                         "delta_ut1", "refraction"});
+  reject_unknown_parameters(parameters, {"lat", "lon", "time", "altitude", "pressure",
+                                         "temperature", "delta_t", "delta_ut1", "refraction"});
   SunRequest request;
   SolarPositionInput& in = request.position;
   in.latitude_deg = parse_latitude(required_parameter(parameters, "lat"), "lat");

@@ -1,6 +1,7 @@
 // The sun request (GET /v1/sun, `clearsky sun`): place and time, and the atmosphere of SPA's
 // refraction, parsed from text parameters into a validated SolarPositionInput.
 //
+// clang-format off
 // | parameter   | unit    | default          | range                  | meaning                         |
 // |-------------|---------|------------------|------------------------|---------------------------------|
 // | lat         | degree  | required         | [-90, 90]              | decimal or DMS, North positive  |
@@ -12,6 +13,7 @@
 // | delta_t     | s       | 69               | [-8000, 8000]          | TT - UT1                        |
 // | delta_ut1   | s       | 0                | (-1, 1)                | UT1 - UTC                       |
 // | refraction  | bool    | true             | true/false             | apply atmospheric refraction    |
+// clang-format on
 //
 // Answers carry times in the request's UTC offset. Errors are api::InvalidParameter naming the
 // parameter.
@@ -26,8 +28,8 @@ namespace clearsky::api {
 
 struct SunRequest {
   SolarPositionInput position;
-  int utc_offset_min = 0;       // of the request's time; the local day of sunrise/sunset
-  bool utc_designator = true;   // the time was given with Z (or defaulted to now)
+  int utc_offset_min = 0;      // of the request's time; the local day of sunrise/sunset
+  bool utc_designator = true;  // the time was given with Z (or defaulted to now)
 };
 
 // now_unix_s is the instant used when no time is given.

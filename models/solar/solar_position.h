@@ -3,6 +3,7 @@
 // 34302), uncertainty +-0.0003 degrees for years -2000..6000, with atmospheric refraction from
 // pressure and temperature, and delta-T (TT - UT) as an input.
 //
+// clang-format off
 // | input              | unit     | range            | meaning                                      |
 // |--------------------|----------|------------------|----------------------------------------------|
 // | unix_time_utc_s    | s        | years -2000..6000| UTC instant, seconds since 1970-01-01T00:00Z  |
@@ -15,6 +16,7 @@
 // | delta_ut1_s        | s        | (-1, 1)          | UT1 - UTC                                     |
 // | refraction         | -        | bool             | apply refraction to the topocentric zenith   |
 // | atmospheric_refraction_at_horizon_deg | degree | [-5, 5] | refraction at sunrise/sunset       |
+// clang-format on
 //
 // Refraction (SPA eq. 42) is applied only when the unrefracted sun is above
 // -(0.26667 + atmospheric_refraction_at_horizon_deg), i.e. when some of its disk can be seen.
@@ -43,11 +45,11 @@ struct SolarPositionInput {
 };
 
 struct SolarPosition {
-  double zenith_deg = 0;               // topocentric, refraction applied when asked, [0, 180]
-  double azimuth_deg = 0;              // clockwise from North, [0, 360)
-  double declination_deg = 0;          // topocentric (delta', SPA eq. 39)
-  double hour_angle_deg = 0;           // topocentric local hour angle (H', SPA eq. 40), [-180, 180)
-  double equation_of_time_min = 0;     // apparent minus mean solar time (SPA eq. A2)
+  double zenith_deg = 0;            // topocentric, refraction applied when asked, [0, 180]
+  double azimuth_deg = 0;           // clockwise from North, [0, 360)
+  double declination_deg = 0;       // topocentric (delta', SPA eq. 39)
+  double hour_angle_deg = 0;        // topocentric local hour angle (H', SPA eq. 40), [-180, 180)
+  double equation_of_time_min = 0;  // apparent minus mean solar time (SPA eq. A2)
   double refraction_correction_deg = 0;  // delta e (SPA eq. 42), 0 when not applied
 };
 

@@ -27,10 +27,12 @@ struct SunOption {
 constexpr SunOption kSunOptions[] = {
     {"lat", "--lat", "Latitude, North positive: decimal degrees or DMS such as 42d26'36.4\"N"},
     {"lon", "--lon", "Longitude, East positive: decimal degrees or DMS such as 76d28'55.1\"W"},
-    {"time", "--time", "ISO 8601 time with offset or Z, e.g. 2013-05-27T11:45:00-04:00 (default: now, UTC)"},
+    {"time", "--time",
+     "ISO 8601 time with offset or Z, e.g. 2013-05-27T11:45:00-04:00 (default: now, UTC)"},
     {"altitude", "--elevation,--altitude", "Observer elevation above sea level, m (default 0)"},
     {"pressure", "--pressure", "Annual mean local pressure for refraction, mbar (default 1013.25)"},
-    {"temperature", "--temperature", "Annual mean local temperature for refraction, Celsius (default 15)"},
+    {"temperature", "--temperature",
+     "Annual mean local temperature for refraction, Celsius (default 15)"},
     {"delta_t", "--delta-t", "TT - UT1, s (default 69)"},
     {"delta_ut1", "--delta-ut1", "UT1 - UTC, s (default 0)"},
 };
@@ -46,8 +48,10 @@ std::string option_of(const std::string& parameter) {
   return parameter;
 }
 
-std::string describe_time(const std::optional<double>& unix_s, const api::SunRequest& request, DayKind kind) {
-  if (unix_s) return api::format_iso8601_time(*unix_s, request.utc_offset_min, request.utc_designator);
+std::string describe_time(const std::optional<double>& unix_s, const api::SunRequest& request,
+                          DayKind kind) {
+  if (unix_s)
+    return api::format_iso8601_time(*unix_s, request.utc_offset_min, request.utc_designator);
   return kind == DayKind::polar_day ? "none (polar day: the sun stays above the horizon)"
                                     : "none (polar night: the sun stays below the horizon)";
 }
@@ -55,22 +59,27 @@ std::string describe_time(const std::optional<double>& unix_s, const api::SunReq
 void print_text(const api::SunRequest& request, const api::SunAnswer& answer) {
   std::ostringstream out;
   out << std::fixed << std::setprecision(6);
-  out << "time     " << api::format_iso8601_time(request.position.unix_time_utc_s, request.utc_offset_min,
-                                                  request.utc_designator)
+  out << "time     "
+      << api::format_iso8601_time(request.position.unix_time_utc_s, request.utc_offset_min,
+                                  request.utc_designator)
       << '\n';
   out << "zenith   " << answer.position.zenith_deg << " degrees (topocentric"
       << (request.position.refraction ? ", with refraction" : ", without refraction") << ")\n";
   out << "azimuth  " << answer.position.azimuth_deg << " degrees (clockwise from North)\n";
-  out << "sunrise  " << describe_time(answer.times.sunrise_utc_s, request, answer.times.day_kind) << '\n';
-  out << "transit  " << describe_time(answer.times.transit_utc_s, request, answer.times.day_kind) << '\n';
-  out << "sunset   " << describe_time(answer.times.sunset_utc_s, request, answer.times.day_kind) << '\n';
+  out << "sunrise  " << describe_time(answer.times.sunrise_utc_s, request, answer.times.day_kind)
+      << '\n';
+  out << "transit  " << describe_time(answer.times.transit_utc_s, request, answer.times.day_kind)
+      << '\n';
+  out << "sunset   " << describe_time(answer.times.sunset_utc_s, request, answer.times.day_kind)
+      << '\n';
   std::cout << out.str();
 }
 
 }  // namespace
 
 void add_sun_command(CLI::App& app) {
-  auto* command = app.add_subcommand("sun", "Sun zenith and azimuth (NREL SPA) and the day's sunrise, transit, sunset");
+  auto* command = app.add_subcommand(
+      "sun", "Sun zenith and azimuth (NREL SPA) and the day's sunrise, transit, sunset");
   struct Values {
     std::string text[std::size(kSunOptions)];
     bool no_refraction = false;
@@ -80,7 +89,8 @@ void add_sun_command(CLI::App& app) {
   std::vector<CLI::Option*> options;
   for (std::size_t i = 0; i < std::size(kSunOptions); ++i) {
     // allow_extra_args(false) keeps one value per option; negative numbers and DMS are values.
-    options.push_back(command->add_option(kSunOptions[i].option, values->text[i], kSunOptions[i].help));
+    options.push_back(
+        command->add_option(kSunOptions[i].option, values->text[i], kSunOptions[i].help));
   }
   command->add_flag("--no-refraction", values->no_refraction, "Leave out atmospheric refraction");
   command->add_flag("--json", values->json, "Print one JSON object");

@@ -23,8 +23,8 @@ TEST(FormatIso8601Time, OffsetsZAndRounding) {
 }
 
 TEST(FormatIso8601Time, RoundTripsThroughTheParser) {
-  for (const char* text : {"2013-05-27T11:45:00-04:00", "2000-02-29T23:59:59+14:00", "1900-03-01T00:00:00Z",
-                           "0001-01-01T06:07:08-12:00"}) {
+  for (const char* text : {"2013-05-27T11:45:00-04:00", "2000-02-29T23:59:59+14:00",
+                           "1900-03-01T00:00:00Z", "0001-01-01T06:07:08-12:00"}) {
     const Iso8601Time t = parse_iso8601_time(text);
     EXPECT_EQ(format_iso8601_time(t.unix_time_utc_s, t.utc_offset_min, t.utc_designator), text);
   }

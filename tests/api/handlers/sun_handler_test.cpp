@@ -10,13 +10,13 @@ namespace {
 
 TEST(SunHandler, ReportExampleAsJson) {
   const nlohmann::ordered_json answer = handle_sun({{"lat", "39.742476"},
-                                            {"lon", "-105.1786"},
-                                            {"altitude", "1830.14"},
-                                            {"time", "2003-10-17T12:30:30-07:00"},
-                                            {"pressure", "820"},
-                                            {"temperature", "11"},
-                                            {"delta_t", "67"}},
-                                           0.0);
+                                                    {"lon", "-105.1786"},
+                                                    {"altitude", "1830.14"},
+                                                    {"time", "2003-10-17T12:30:30-07:00"},
+                                                    {"pressure", "820"},
+                                                    {"temperature", "11"},
+                                                    {"delta_t", "67"}},
+                                                   0.0);
   EXPECT_NEAR(answer.at("zenith").get<double>(), 50.11162, 1e-5);
   EXPECT_NEAR(answer.at("azimuth").get<double>(), 194.34024, 1e-5);
   EXPECT_EQ(answer.at("sunrise"), "2003-10-17T06:12:43-07:00");

@@ -32,21 +32,30 @@ TEST(ParseCoordinates, DegreesMinutesSecondsWithHemisphere) {
   EXPECT_NEAR(parse_longitude("76d28'55.1\"W"), -(76.0 + 28.0 / 60 + 55.1 / 3600), 1e-12);
   EXPECT_NEAR(parse_longitude("76:28:55.1W"), -(76.0 + 28.0 / 60 + 55.1 / 3600), 1e-12);
   EXPECT_NEAR(parse_latitude("S33d52.5"), -(33.0 + 52.5 / 60), 1e-12);
-  EXPECT_NEAR(parse_latitude("42\xc2\xb0" "26\xe2\x80\xb2" "36.4\xe2\x80\xb3N"), 42.0 + 26.0 / 60 + 36.4 / 3600, 1e-12);
+  EXPECT_NEAR(parse_latitude("42\xc2\xb0"
+                             "26\xe2\x80\xb2"
+                             "36.4\xe2\x80\xb3N"),
+              42.0 + 26.0 / 60 + 36.4 / 3600, 1e-12);
 }
 
 TEST(ParseCoordinates, HemisphereMustMatchTheCoordinate) {
-  EXPECT_EQ(rejected_parameter([](const std::string& t) { return parse_latitude(t, "lat"); }, "76d28'55.1\"W"), "lat");
-  EXPECT_EQ(rejected_parameter([](const std::string& t) { return parse_longitude(t, "lon"); }, "42d26'36.4\"N"), "lon");
+  EXPECT_EQ(rejected_parameter([](const std::string& t) { return parse_latitude(t, "lat"); },
+                               "76d28'55.1\"W"),
+            "lat");
+  EXPECT_EQ(rejected_parameter([](const std::string& t) { return parse_longitude(t, "lon"); },
+                               "42d26'36.4\"N"),
+            "lon");
 }
 
 TEST(ParseCoordinates, RangeAndMalformedInputNameTheParameter) {
   const auto lat = [](const std::string& t) { return parse_latitude(t, "lat"); };
   const auto lon = [](const std::string& t) { return parse_longitude(t, "lon"); };
-  for (const char* bad : {"91", "-90.0001", "nan", "NaN", "inf", "", "abc", "4:60", "12..5", "1.8e2d", "42d26'36.4\"Q"}) {
+  for (const char* bad : {"91", "-90.0001", "nan", "NaN", "inf", "", "abc", "4:60", "12..5",
+                          "1.8e2d", "42d26'36.4\"Q"}) {
     EXPECT_EQ(rejected_parameter(lat, bad), "lat") << bad;
   }
-  for (const char* bad : {"180.5", "-181", "nan", "200E", "--5"}) EXPECT_EQ(rejected_parameter(lon, bad), "lon") << bad;
+  for (const char* bad : {"180.5", "-181", "nan", "200E", "--5"})
+    EXPECT_EQ(rejected_parameter(lon, bad), "lon") << bad;
   try {
     parse_latitude("91", "lat");
   } catch (const InvalidParameter& e) {

@@ -17,7 +17,8 @@ TEST(ParseNumber, AcceptsWholeFiniteNumbers) {
 }
 
 TEST(ParseNumber, RejectsEverythingElseNamingTheParameter) {
-  for (const char* bad : {"", " ", "nan", "NaN", "inf", "-inf", "1e999", "12abc", "1,5", "0x10", "+-1", "--1", "++1"}) {
+  for (const char* bad : {"", " ", "nan", "NaN", "inf", "-inf", "1e999", "12abc", "1,5", "0x10",
+                          "+-1", "--1", "++1"}) {
     try {
       (void)parse_number(bad, "pressure");
       ADD_FAILURE() << "accepted " << bad;

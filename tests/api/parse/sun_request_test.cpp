@@ -42,7 +42,8 @@ TEST(ParseSunRequest, FullRequest) {
 }
 
 TEST(ParseSunRequest, DefaultsAndDms) {
-  const SunRequest r = parse_sun_request({{"lat", "42d26'36.4\"N"}, {"lon", "76d28'55.1\"W"}}, 1369669500.0);
+  const SunRequest r =
+      parse_sun_request({{"lat", "42d26'36.4\"N"}, {"lon", "76d28'55.1\"W"}}, 1369669500.0);
   EXPECT_NEAR(r.position.latitude_deg, 42.44344, 1e-5);
   EXPECT_NEAR(r.position.longitude_deg, -76.48197, 1e-5);
   EXPECT_DOUBLE_EQ(r.position.unix_time_utc_s, 1369669500.0);

@@ -45,17 +45,20 @@ TEST(SunCommand, TextFormAndNoRefraction) {
   const CommandRun text = run_clearsky(kReportExample);
   ASSERT_EQ(text.exit_status, 0) << text.output;
   EXPECT_NE(text.output.find("zenith   50.111622 degrees"), std::string::npos) << text.output;
-  EXPECT_NE(text.output.find("sunrise  2003-10-17T06:12:43-07:00"), std::string::npos) << text.output;
+  EXPECT_NE(text.output.find("sunrise  2003-10-17T06:12:43-07:00"), std::string::npos)
+      << text.output;
 
   const CommandRun raw = run_clearsky(std::string(kReportExample) + " --no-refraction --json");
   ASSERT_EQ(raw.exit_status, 0) << raw.output;
   // SPA's refraction at this elevation, pressure and temperature is 0.016332 degrees.
-  EXPECT_NEAR(nlohmann::json::parse(raw.output).at("zenith").get<double>(), 50.11162 + 0.016332, 2e-5);
+  EXPECT_NEAR(nlohmann::json::parse(raw.output).at("zenith").get<double>(), 50.11162 + 0.016332,
+              2e-5);
 }
 
 TEST(SunCommand, DmsInputAtTheKiderSite) {
-  const CommandRun run = run_clearsky("sun --lat \"42d26'36.4\\\"N\" --lon \"76d28'55.1\\\"W\" "
-                               "--time 2013-05-27T11:45:00-04:00 --no-refraction --json");
+  const CommandRun run = run_clearsky(
+      "sun --lat \"42d26'36.4\\\"N\" --lon \"76d28'55.1\\\"W\" "
+      "--time 2013-05-27T11:45:00-04:00 --no-refraction --json");
   ASSERT_EQ(run.exit_status, 0) << run.output;
   const nlohmann::json answer = nlohmann::json::parse(run.output);
   EXPECT_NEAR(answer.at("zenith").get<double>(), 26.654, 0.005);
@@ -63,7 +66,8 @@ TEST(SunCommand, DmsInputAtTheKiderSite) {
 }
 
 TEST(SunCommand, PolarDayHasNullSunriseAndSunset) {
-  const CommandRun run = run_clearsky("sun --lat 80 --lon 15 --time 2023-06-21T12:00:00+02:00 --json");
+  const CommandRun run =
+      run_clearsky("sun --lat 80 --lon 15 --time 2023-06-21T12:00:00+02:00 --json");
   ASSERT_EQ(run.exit_status, 0) << run.output;
   const nlohmann::json answer = nlohmann::json::parse(run.output);
   EXPECT_TRUE(answer.at("sunrise").is_null());
@@ -77,12 +81,13 @@ TEST(SunCommand, InvalidInputNamesTheOptionAndFails) {
     const char* arguments;
     const char* option;
   };
-  for (const Case& c : {Case{"sun --lat nan --lon 0", "--lat"}, Case{"sun --lat 91 --lon 0", "--lat"},
-                        Case{"sun --lat 0 --lon 181", "--lon"}, Case{"sun --lon 0", "--lat"},
-                        Case{"sun --lat 0 --lon 0 --time 2013-05-27T11:45:00", "--time"},
-                        Case{"sun --lat 0 --lon 0 --pressure nan", "--pressure"},
-                        Case{"sun --lat 0 --lon 0 --elevation -7e6", "--elevation"},
-                        Case{"sun --lat 0 --lon 0 --delta-t 1e4", "--delta-t"}}) {
+  for (const Case& c :
+       {Case{"sun --lat nan --lon 0", "--lat"}, Case{"sun --lat 91 --lon 0", "--lat"},
+        Case{"sun --lat 0 --lon 181", "--lon"}, Case{"sun --lon 0", "--lat"},
+        Case{"sun --lat 0 --lon 0 --time 2013-05-27T11:45:00", "--time"},
+        Case{"sun --lat 0 --lon 0 --pressure nan", "--pressure"},
+        Case{"sun --lat 0 --lon 0 --elevation -7e6", "--elevation"},
+        Case{"sun --lat 0 --lon 0 --delta-t 1e4", "--delta-t"}}) {
     const CommandRun run = run_clearsky(c.arguments);
     EXPECT_NE(run.exit_status, 0) << c.arguments;
     EXPECT_NE(run.output.find(std::string("clearsky: ") + c.option + ":"), std::string::npos)
