@@ -76,6 +76,7 @@ void validate_solar_position_input(const SolarPositionInput& input);
 // SPA's interpolation over three days is kept; only its reduction of each event to the UT day
 // is replaced by a placement in the local day, so that the three events are those of the local
 // date (SPA's published sunset for its example is the one of the evening before; see the .cpp).
+// A sunset after local midnight thus belongs to the next date, as it happens on it.
 // Throws std::invalid_argument like solar_position, or naming timezone_offset_h.
 SunTimes sun_times(const SolarPositionInput& input, double timezone_offset_h);
 

@@ -46,10 +46,7 @@ double wrap_degrees_360(double degrees) {
   return wrapped >= 360.0 ? 0.0 : wrapped;
 }
 
-double wrap_degrees_180(double degrees) {
-  double wrapped = wrap_degrees_360(degrees + 180.0) - 180.0;
-  return wrapped;
-}
+double wrap_degrees_180(double degrees) { return wrap_degrees_360(degrees + 180.0) - 180.0; }
 
 TimeScales time_scales(double days_since_j2000_ut1, double delta_t_s) {
   TimeScales t{};
