@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("clearsky ") + CLEARSKY_VERSION);
   app.require_subcommand(1);
   clearsky::cli::add_models_command(app);
+  clearsky::cli::add_sun_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

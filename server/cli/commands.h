@@ -7,5 +7,6 @@
 namespace clearsky::cli {
 
 void add_models_command(CLI::App& app);
+void add_sun_command(CLI::App& app);
 
 }  // namespace clearsky::cli
