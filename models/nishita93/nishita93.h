@@ -8,6 +8,7 @@
 // |-----------|------|---------|-----------|-------------------------------------------------|
 // | spheres   | -    | 64      | [4, 1024] | n_s, spheres of the tables and view-ray samples |
 // | cylinders | -    | 64      | [4, 1024] | n_c, cylinders of the tables                    |
+// | study_viewer_sample | - | 0 | {0, 1}  | 1: the study's zero integrand at the observer     |
 // | alpha, beta, g (atmosphere) | - | 0.8, 0.04, 0.7 | see AtmosphereParameters | aerosols  |
 //
 // Capabilities: any observer altitude from the ground to far above the atmosphere, views in
@@ -35,6 +36,7 @@ class Nishita93Model final : public SkyModel {
   const ModelDescriptor& descriptor() const override { return nishita93_descriptor(); }
   std::size_t table_bytes() const override { return tables_.memory_bytes(); }
   const Nishita93Tables& tables() const { return tables_; }
+  bool study_viewer_sample() const { return study_viewer_sample_; }
 
  protected:
   void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint, std::span<const ViewDirection> views,
@@ -48,6 +50,7 @@ class Nishita93Model final : public SkyModel {
   Nishita93Model(const ModelConfig& config, const PrecomputeContext& context);
 
   Nishita93Tables tables_;
+  bool study_viewer_sample_ = false;
 };
 
 }  // namespace clearsky

@@ -71,7 +71,7 @@ void sun_transmittance(const Nishita93Tables& tables, const AtmosphereSpectra& a
 
 bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray,
                        double max_distance_m, std::span<double> radiance_out, std::span<double> transmittance_out,
-                       const RayWorkspace& workspace) {
+                       const RayWorkspace& workspace, bool study_viewer_sample) {
   const auto& p = atmosphere.parameters;
   const std::size_t n_wavelengths = radiance_out.size();
   std::fill(radiance_out.begin(), radiance_out.end(), 0.0);
@@ -122,6 +122,7 @@ bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& a
     } else {
       std::fill_n(t, n_wavelengths, 0.0);
     }
+    if (first && study_viewer_sample) std::fill_n(t, n_wavelengths, 0.0);
     if (!first) {
       const double hr = half * rho_r, hm = half * rho_m;
       const double hr_previous = half * previous_rho_r, hm_previous = half * previous_rho_m;
@@ -155,14 +156,14 @@ bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& a
 namespace clearsky::nishita93 {
 
 ScatteringAlongRay single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere,
-                                     const RaySunGeometry& ray, double max_distance_m) {
+                                     const RaySunGeometry& ray, double max_distance_m, bool study_viewer_sample) {
   const std::size_t n = atmosphere.rayleigh_scattering_per_m.size();
   std::vector<double> scratch(4 * n);
   const std::span<double> all(scratch);
   const RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n), all.subspan(2 * n, n), all.subspan(3 * n, n)};
   ScatteringAlongRay result{Spectrum(n), Spectrum(n), 0.0, false};
   result.hits_ground = single_scattering(tables, atmosphere, ray, max_distance_m, {result.radiance.data(), n},
-                                         {result.transmittance.data(), n}, workspace);
+                                         {result.transmittance.data(), n}, workspace, study_viewer_sample);
   const auto& p = atmosphere.parameters;
   const AtmosphereSegment segment = atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);
   result.length_m = std::max(0.0, std::min(segment.end, max_distance_m) - segment.start);
