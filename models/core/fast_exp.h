@@ -1,4 +1,4 @@
-// exp(x) for x <= 0 over arrays, written so that the compiler vectorises it (glibc's exp is
+// exp(x) for x <= 0 over arrays, and the other vector kernels of the transmittance loops, written so that the compiler vectorises it (glibc's exp is
 // only vectorised under -ffast-math, which this project never uses). The numerical models
 // spend most of their time in the transmittances exp(-tau) of 40 wavelengths at every sample
 // of a view ray; this is their hot loop.
@@ -18,5 +18,15 @@
 namespace clearsky {
 
 void exp_nonpositive_in_place(double* values, std::size_t n);
+
+// out[i] = exp(-(beta_rayleigh[i] rayleigh_m + beta_mie[i] mie_m)): the transmittance of the
+// optical lengths (optical_depth.h) on n wavelengths, in one vector pass.
+void transmittance_from_lengths(std::size_t n, const double* beta_rayleigh_per_m, const double* beta_mie_per_m,
+                                double rayleigh_m, double mie_m, double* out);
+
+// sum_a[i] += scale_a values[i]; sum_b[i] += scale_b values[i] (the Rayleigh and Mie
+// integrals of the numerical models share each transmittance).
+void add_scaled_pair(std::size_t n, const double* values, double scale_a, double scale_b, double* sum_a,
+                     double* sum_b);
 
 }  // namespace clearsky

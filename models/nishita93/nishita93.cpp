@@ -79,10 +79,9 @@ Nishita93Model::Nishita93Model(const ModelConfig& config, const PrecomputeContex
 void Nishita93Model::compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
                                           std::span<const ViewDirection> views, SpectralBatch& out) const {
   const std::size_t n = wavelengths().size();
-  std::vector<double> scratch(4 * n);
+  std::vector<double> scratch(3 * n);
   const std::span<double> all(scratch);
-  const nishita93::RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n), all.subspan(2 * n, n),
-                                          all.subspan(3 * n, n)};
+  const nishita93::RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n), all.subspan(2 * n, n)};
   const double bottom = config().atmosphere.earth_radius_m;
   for (std::size_t i = 0; i < views.size(); ++i) {
     nishita93::single_scattering(tables_, atmosphere(), RaySunGeometry::from(bottom, viewpoint, views[i], sun.sun()),

@@ -89,15 +89,14 @@ bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& a
   const double* beta_mie_extinction = atmosphere.mie_extinction_per_m.data();
   double* rayleigh_integral = workspace.rayleigh_integral.data();
   double* mie_integral = workspace.mie_integral.data();
-  double* t = workspace.transmittance.data();
   std::fill_n(rayleigh_integral, n_wavelengths, 0.0);
   std::fill_n(mie_integral, n_wavelengths, 0.0);
 
   // The trapezoid rule over the samples, for the observer-side optical lengths and for the
-  // integrands rho_p T: each segment adds half its length times the sum of its end values,
-  // so the previous sample's transmittance is kept (t_previous).
-  double* t_previous = workspace.previous_transmittance.data();
-  double previous_d = 0.0, previous_rho_r = 0.0, previous_rho_m = 0.0;
+  // integrands rho_p T. A sample's weight is half the sum of its two neighbouring segments, so
+  // its transmittance is added to the integrals when the next sample is known (`pending`).
+  double* pending = workspace.transmittance.data();
+  double previous_d = 0.0, previous_rho_r = 0.0, previous_rho_m = 0.0, pending_half_before = 0.0;
   bool first = true;
   OpticalLengths view;
   auto add_sample = [&](double d, int sphere) {
@@ -112,32 +111,29 @@ bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& a
       rho_m = std::exp(-(radius - p.earth_radius_m) / p.mie_scale_height_m);
     }
     const double half = first ? 0.0 : 0.5 * (d - previous_d);
+    if (!first) {
+      const double weight = pending_half_before + half;
+      add_scaled_pair(n_wavelengths, pending, weight * previous_rho_r, weight * previous_rho_m, rayleigh_integral,
+                      mie_integral);
+    }
     view.rayleigh_m += half * (rho_r + previous_rho_r);
     view.mie_m += half * (rho_m + previous_rho_m);
     const auto sun = tables.sun_optical_lengths(radius, ray.mu_s_at(d, radius), sphere);
-    if (sun) {
-      const double lr = view.rayleigh_m + sun->rayleigh_m, lm = view.mie_m + sun->mie_m;
-      for (std::size_t w = 0; w < n_wavelengths; ++w) t[w] = -(beta_rayleigh[w] * lr + beta_mie_extinction[w] * lm);
-      exp_nonpositive_in_place(t, n_wavelengths);
+    if (sun && !(first && study_viewer_sample)) {
+      transmittance_from_lengths(n_wavelengths, beta_rayleigh, beta_mie_extinction, view.rayleigh_m + sun->rayleigh_m,
+                                 view.mie_m + sun->mie_m, pending);
     } else {
-      std::fill_n(t, n_wavelengths, 0.0);
+      std::fill_n(pending, n_wavelengths, 0.0);
     }
-    if (first && study_viewer_sample) std::fill_n(t, n_wavelengths, 0.0);
-    if (!first) {
-      const double hr = half * rho_r, hm = half * rho_m;
-      const double hr_previous = half * previous_rho_r, hm_previous = half * previous_rho_m;
-      for (std::size_t w = 0; w < n_wavelengths; ++w) {
-        rayleigh_integral[w] += hr * t[w] + hr_previous * t_previous[w];
-        mie_integral[w] += hm * t[w] + hm_previous * t_previous[w];
-      }
-    }
-    std::swap(t, t_previous);
+    pending_half_before = half;
     previous_d = d;
     previous_rho_r = rho_r;
     previous_rho_m = rho_m;
     first = false;
   };
   for_each_sample(tables, ray.r_m, ray.mu, segment.start, end, start_sphere, end_sphere, add_sample);
+  add_scaled_pair(n_wavelengths, pending, pending_half_before * previous_rho_r, pending_half_before * previous_rho_m,
+                  rayleigh_integral, mie_integral);
 
   const double phase_rayleigh = rayleigh_phase(ray.nu);
   const double phase_mie = cornette_shanks_phase(ray.nu, p.mie_phase_g);
@@ -158,9 +154,9 @@ namespace clearsky::nishita93 {
 ScatteringAlongRay single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere,
                                      const RaySunGeometry& ray, double max_distance_m, bool study_viewer_sample) {
   const std::size_t n = atmosphere.rayleigh_scattering_per_m.size();
-  std::vector<double> scratch(4 * n);
+  std::vector<double> scratch(3 * n);
   const std::span<double> all(scratch);
-  const RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n), all.subspan(2 * n, n), all.subspan(3 * n, n)};
+  const RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n), all.subspan(2 * n, n)};
   ScatteringAlongRay result{Spectrum(n), Spectrum(n), 0.0, false};
   result.hits_ground = single_scattering(tables, atmosphere, ray, max_distance_m, {result.radiance.data(), n},
                                          {result.transmittance.data(), n}, workspace, study_viewer_sample);

@@ -88,15 +88,11 @@ bool single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry
     if (!to_sun) continue;  // in the Earth's shadow
     const OpticalLengths view = lengths_between(p, start, x, line_hits_ground);
     const double lr = view.rayleigh_m + to_sun->rayleigh_m, lm = view.mie_m + to_sun->mie_m;
-    for (std::size_t w = 0; w < n_wavelengths; ++w) t[w] = -(beta_rayleigh[w] * lr + beta_mie_extinction[w] * lm);
-    exp_nonpositive_in_place(t, n_wavelengths);
+    transmittance_from_lengths(n_wavelengths, beta_rayleigh, beta_mie_extinction, lr, lm, t);
     const double altitude = x.radius - p.earth_radius_m;
     const double weight_rayleigh = sample_length * std::exp(-altitude / p.rayleigh_scale_height_m);
     const double weight_mie = sample_length * std::exp(-altitude / p.mie_scale_height_m);
-    for (std::size_t w = 0; w < n_wavelengths; ++w) {
-      rayleigh_integral[w] += weight_rayleigh * t[w];
-      mie_integral[w] += weight_mie * t[w];
-    }
+    add_scaled_pair(n_wavelengths, t, weight_rayleigh, weight_mie, rayleigh_integral, mie_integral);
   }
 
   const double phase_rayleigh = rayleigh_phase(ray.nu);
