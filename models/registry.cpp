@@ -3,10 +3,16 @@
 
 #include <vector>
 
+#include "models/nishita93/nishita93.h"
+#include "models/oneal/oneal.h"
+
 namespace clearsky {
 
 std::span<const ModelFactory> registered_models() {
-  static const std::vector<ModelFactory> factories = {};
+  static const std::vector<ModelFactory> factories = {
+      nishita93_factory(),
+      oneal_factory(),
+  };
   return factories;
 }
 
