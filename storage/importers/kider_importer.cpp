@@ -48,17 +48,26 @@ std::string capture_content_hash(const MeasuredCapture& capture) {
 
 ImportReport import_kider(Database& db, const KiderImportRequest& request) {
   const auto start = std::chrono::steady_clock::now();
-  if (request.paths.empty()) throw std::invalid_argument("import: no archive or folder given");
+  if (request.paths.empty() && request.archives_in_memory.empty())
+    throw std::invalid_argument("import: no archive or folder given");
 
   // Read and decode everything first: a bad file is reported before any write.
   struct Decoded {
     std::string source;
     std::vector<MeasuredCapture> captures;
   };
-  std::vector<Decoded> decoded(request.paths.size());
-  parallel_for(request.paths.size(), [&](std::size_t i) {
-    decoded[i].source = request.paths[i].string();
-    decoded[i].captures = read_kider_path(request.paths[i], request.options);
+  const std::size_t path_count = request.paths.size();
+  std::vector<Decoded> decoded(path_count + request.archives_in_memory.size());
+  parallel_for(decoded.size(), [&](std::size_t i) {
+    if (i < path_count) {
+      decoded[i].source = request.paths[i].string();
+      decoded[i].captures = read_kider_path(request.paths[i], request.options);
+    } else {
+      const auto& upload = request.archives_in_memory[i - path_count];
+      decoded[i].source = upload.name;
+      decoded[i].captures = decode_kider_files(read_kider_archive_bytes(upload.bytes, upload.name),
+                                               upload.name, request.options);
+    }
   });
 
   ImportReport report;

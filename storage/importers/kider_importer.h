@@ -22,6 +22,12 @@ namespace clearsky::storage {
 struct KiderImportRequest {
   std::string dataset_name = "kider2014";
   std::vector<std::filesystem::path> paths;  // .7z archives or folders
+  // Archives held in memory (uploads): a name for messages and the archive's bytes.
+  struct ArchiveBytes {
+    std::string name;
+    std::string bytes;
+  };
+  std::vector<ArchiveBytes> archives_in_memory;
   KiderImportOptions options;
   // Called after each new capture is written, inside the transaction (tests use it to
   // interrupt an import half-way).

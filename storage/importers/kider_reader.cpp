@@ -33,22 +33,25 @@ bool is_radiance_file(const std::string& path) {
   return parse_kider_file_name(base_name_of(path)).has_value();
 }
 
-std::vector<KiderRawFile> read_archive_files(const std::filesystem::path& path) {
-  std::unique_ptr<archive, ArchiveDeleter> reader(archive_read_new());
+using ArchivePointer = std::unique_ptr<archive, ArchiveDeleter>;
+
+ArchivePointer new_reader() {
+  ArchivePointer reader(archive_read_new());
   if (!reader) throw std::runtime_error("libarchive: out of memory");
   archive_read_support_filter_all(reader.get());
   archive_read_support_format_all(reader.get());
-  const std::string name = path.string();
-  if (archive_read_open_filename(reader.get(), name.c_str(), 1 << 16) != ARCHIVE_OK)
-    throw std::runtime_error(name + ": cannot open archive: " + error_text(reader.get()));
+  return reader;
+}
+
+// The radiance files of an opened archive.
+std::vector<KiderRawFile> read_entries(archive* reader, const std::string& name) {
   std::vector<KiderRawFile> files;
   archive_entry* entry = nullptr;
   for (;;) {
-    const int status = archive_read_next_header(reader.get(), &entry);
+    const int status = archive_read_next_header(reader, &entry);
     if (status == ARCHIVE_EOF) break;
     if (status != ARCHIVE_OK && status != ARCHIVE_WARN)
-      throw std::runtime_error(name +
-                               ": corrupt or truncated archive: " + error_text(reader.get()));
+      throw std::runtime_error(name + ": corrupt or truncated archive: " + error_text(reader));
     if (archive_entry_filetype(entry) != AE_IFREG) continue;
     const char* entry_path = archive_entry_pathname(entry);
     const std::string inner = entry_path ? entry_path : "";
@@ -58,11 +61,11 @@ std::vector<KiderRawFile> read_archive_files(const std::filesystem::path& path) 
       bytes.reserve(static_cast<std::size_t>(archive_entry_size(entry)));
     char buffer[1 << 16];
     for (;;) {
-      const la_ssize_t n = archive_read_data(reader.get(), buffer, sizeof buffer);
+      const la_ssize_t n = archive_read_data(reader, buffer, sizeof buffer);
       if (n == 0) break;
       if (n < 0)
         throw std::runtime_error(name + ": " + inner +
-                                 ": corrupt or truncated archive: " + error_text(reader.get()));
+                                 ": corrupt or truncated archive: " + error_text(reader));
       bytes.append(buffer, static_cast<std::size_t>(n));
     }
     if (archive_entry_size_is_set(entry) &&
@@ -71,6 +74,14 @@ std::vector<KiderRawFile> read_archive_files(const std::filesystem::path& path) 
     files.push_back({inner, std::move(bytes)});
   }
   return files;
+}
+
+std::vector<KiderRawFile> read_archive_files(const std::filesystem::path& path) {
+  ArchivePointer reader = new_reader();
+  const std::string name = path.string();
+  if (archive_read_open_filename(reader.get(), name.c_str(), 1 << 16) != ARCHIVE_OK)
+    throw std::runtime_error(name + ": cannot open archive: " + error_text(reader.get()));
+  return read_entries(reader.get(), name);
 }
 
 std::vector<KiderRawFile> read_folder_files(const std::filesystem::path& folder) {
@@ -90,6 +101,18 @@ std::vector<KiderRawFile> read_folder_files(const std::filesystem::path& folder)
 }
 
 }  // namespace
+
+std::vector<KiderRawFile> read_kider_archive_bytes(std::string_view bytes,
+                                                   const std::string& name) {
+  ArchivePointer reader = new_reader();
+  if (archive_read_open_memory(reader.get(), bytes.data(), bytes.size()) != ARCHIVE_OK)
+    throw std::runtime_error(name + ": cannot open archive: " + error_text(reader.get()));
+  std::vector<KiderRawFile> files = read_entries(reader.get(), name);
+  std::sort(files.begin(), files.end(),
+            [](const KiderRawFile& a, const KiderRawFile& b) { return a.path < b.path; });
+  if (files.empty()) throw std::runtime_error(name + ": no Kider .asd.rad.txt files found");
+  return files;
+}
 
 std::vector<KiderRawFile> read_kider_raw_files(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path))

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "storage/importers/kider_format.h"
@@ -30,6 +31,10 @@ struct KiderRawFile {
   std::string bytes;
 };
 std::vector<KiderRawFile> read_kider_raw_files(const std::filesystem::path& path);
+
+// The .asd.rad.txt files of an archive held in memory (e.g. an HTTP upload); name is used
+// in messages.
+std::vector<KiderRawFile> read_kider_archive_bytes(std::string_view bytes, const std::string& name);
 
 // Decodes raw files (as read_kider_raw_files returns them) into captures; source_prefix names
 // their container in messages.

@@ -116,6 +116,25 @@ TEST(KiderImporter, MalformedFileLeavesTheDatabaseUnchanged) {
   EXPECT_EQ(snapshot(db), before);
 }
 
+TEST(KiderImporter, ArchiveUploadedInMemoryEqualsTheFile) {
+  CLEARSKY_REQUIRE_SHARED_DATA(kRadiance);
+  testing::TempDir dir;
+  Database db = open_database(dir.path / "sky.db");
+  std::ifstream in(archive("10.15"), std::ios::binary);
+  KiderImportRequest upload;
+  upload.archives_in_memory.push_back(
+      {"upload.7z", std::string((std::istreambuf_iterator<char>(in)), {})});
+  const ImportReport first = import_kider(db, upload);
+  EXPECT_EQ(first.added, std::vector<std::string>{"2013-05-27___10.15.00"});
+  EXPECT_EQ(first.samples_added, 81);
+  // The same capture from the file is recognised by its content.
+  EXPECT_EQ(import_kider(db, request({archive("10.15")})).unchanged.size(), 1u);
+  upload.archives_in_memory[0].bytes.resize(upload.archives_in_memory[0].bytes.size() / 2);
+  const std::string before = snapshot(db);
+  EXPECT_THROW(import_kider(db, upload), std::runtime_error);
+  EXPECT_EQ(snapshot(db), before);
+}
+
 TEST(KiderImporter, TruncatedArchiveLeavesTheDatabaseUnchanged) {
   CLEARSKY_REQUIRE_SHARED_DATA(kRadiance);
   testing::TempDir dir;
