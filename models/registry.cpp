@@ -3,10 +3,16 @@
 
 #include <vector>
 
+#include "models/hosek/hosek.h"
+#include "models/preetham/preetham.h"
+
 namespace clearsky {
 
 std::span<const ModelFactory> registered_models() {
-  static const std::vector<ModelFactory> factories = {};
+  static const std::vector<ModelFactory> factories = {
+      preetham_factory(),
+      hosek_factory(),
+  };
   return factories;
 }
 
