@@ -192,6 +192,10 @@ void HosekModel::compute_sky_radiance(const SunState& sun, const Viewpoint&, std
     auto spectrum = out.spectrum(i);
     std::fill(spectrum.begin(), spectrum.end(), 0.0);
     for (const auto& c : state.contributions) spectrum[c.wavelength] += c.weight * f[c.term];
+    // The fit dips below zero at the horizon when the sun is within a few degrees of it (its
+    // constant term C is negative there and the zenith term sqrt(cos theta) vanishes): no
+    // light is the physical limit.
+    for (double& value : spectrum) value = std::max(value, 0.0);
   }
 }
 
@@ -262,11 +266,6 @@ Spectrum HosekModel::compute_sun_irradiance(const SunState& sun, const Viewpoint
     irradiance[i] = sum * w.disc_correction;
   }
   return irradiance;
-}
-
-Spectrum HosekModel::sky_irradiance_with_nodes(const SunState& sun, const PlaneOrientation& plane,
-                                               int zenith_nodes, int azimuth_nodes) const {
-  return sky_irradiance_by_quadrature(sun, Viewpoint{}, plane, zenith_nodes, azimuth_nodes);
 }
 
 Spectrum HosekModel::compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,

@@ -46,11 +46,6 @@ class HosekModel final : public SkyModel {
   bool native_bands() const { return native_bands_; }
   double turbidity() const { return config().atmosphere.turbidity; }
 
-  // Sky irradiance by the quadrature of this model (documented in hosek.cpp), with explicit
-  // node counts, for accuracy studies.
-  Spectrum sky_irradiance_with_nodes(const SunState& sun, const PlaneOrientation& plane, int zenith_nodes,
-                                     int azimuth_nodes) const;
-
  protected:
   std::shared_ptr<const SunState> compute_sun_state(const SunPosition& sun,
                                                     const PrecomputeContext& context) const override;
