@@ -1,6 +1,7 @@
 // Preetham: descriptor, per-sun state (Perez coefficients and zenith values) and queries.
 #include "models/preetham/preetham.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -148,7 +149,10 @@ void PreethamModel::compute_sky_radiance(const SunState& sun, const Viewpoint&, 
     // L = k (S0 + M1 S1 + M2 S2) with 683 k (Y_S0 + M1 Y_S1 + M2 Y_S2) = Y (cd/m2).
     const double k = v.luminance_cd_m2 / (kMaxLuminousEfficacy * (y_s0_ + m.m1 * y_s1_ + m.m2 * y_s2_));
     auto spectrum = out.spectrum(i);
-    for (std::size_t w = 0; w < n; ++w) spectrum[w] = k * (s0_[w] + m.m1 * s1_[w] + m.m2 * s2_[w]);
+    // For a low sun, views near the horizon towards it get chromaticities far from the
+    // daylight locus, where the basis combination turns negative at the short wavelengths:
+    // clamped to no light, the physical limit.
+    for (std::size_t w = 0; w < n; ++w) spectrum[w] = std::max(k * (s0_[w] + m.m1 * s1_[w] + m.m2 * s2_[w]), 0.0);
   }
 }
 
