@@ -8,6 +8,7 @@
 #include <string>
 
 #include "models/core/quadrature.h"
+#include "models/core/sky_plane_quadrature.h"
 #include "models/spectral/reference_spectra.h"
 
 namespace clearsky {
@@ -57,8 +58,9 @@ ModelDescriptor make_descriptor() {
   return d;
 }
 
-// The cooked distributions of one sun position: each evaluated once per view, then
-// accumulated into the grid wavelengths with their weights.
+// The cooked distributions of one sun position, stored coefficient by coefficient (one
+// array per coefficient A..I over all distributions) so that the per-view loops vectorise;
+// each distribution is evaluated once per view, then accumulated into the grid wavelengths.
 class HosekSunState final : public SunState {
  public:
   struct Contribution {
@@ -69,11 +71,17 @@ class HosekSunState final : public SunState {
 
   explicit HosekSunState(const SunPosition& sun) : SunState(sun) {}
   std::size_t memory_bytes() const override {
-    return sizeof(*this) + coefficients.capacity() * sizeof(hosek::Coefficients) +
+    return sizeof(*this) + size() * sizeof(double) * hosek::kCoefficientCount +
            contributions.capacity() * sizeof(Contribution);
   }
 
-  std::vector<hosek::Coefficients> coefficients;
+  std::size_t size() const { return coefficient[0].size(); }
+  std::uint32_t add(const hosek::Coefficients& c) {
+    for (int k = 0; k < hosek::kCoefficientCount; ++k) coefficient[k].push_back(c[k]);
+    return static_cast<std::uint32_t>(size() - 1);
+  }
+
+  std::array<std::vector<double>, hosek::kCoefficientCount> coefficient;
   std::vector<Contribution> contributions;
 };
 
@@ -151,8 +159,7 @@ std::shared_ptr<const SunState> HosekModel::compute_sun_state(const SunPosition&
   band_term.fill(-1);
   const auto add_term = [&](int band, double albedo) {
     const hosek::Configuration config = hosek::cook(bands[band], t, albedo, elevation);
-    state->coefficients.push_back(config.coefficients);
-    return std::pair{static_cast<std::uint32_t>(state->coefficients.size() - 1), config.radiance_scale};
+    return std::pair{state->add(config.coefficients), config.radiance_scale};
   };
   std::array<double, hosek::kBandCount> band_scale{};
   for (std::size_t i = 0; i < terms_.size(); ++i) {
@@ -184,14 +191,34 @@ void HosekModel::compute_sky_radiance(const SunState& sun, const Viewpoint&, std
                                       SpectralBatch& out) const {
   const HosekSunState& state = as_hosek_state(sun);
   const Vec3 sun_direction = state.sun().unit_vector();
-  std::vector<double> f(state.coefficients.size());
+  const std::size_t n = state.size();
+  const auto& c = state.coefficient;
+  // hosek::distribution() over all distributions at once, in passes the compiler vectorises
+  // (all but the exponentials).
+  std::vector<double> gradation(n), peak(n), f(n);
   for (std::size_t i = 0; i < views.size(); ++i) {
     const Vec3 d = views[i].unit_vector();
     const hosek::ViewTerms v = hosek::view_terms(d.z, dot(d, sun_direction));
-    for (std::size_t t = 0; t < f.size(); ++t) f[t] = hosek::distribution(state.coefficients[t], v);
+    for (std::size_t t = 0; t < n; ++t) {
+      gradation[t] = c[1][t] * v.inverse_cos_theta_plus;
+      peak[t] = c[4][t] * v.gamma_rad;
+    }
+    for (std::size_t t = 0; t < n; ++t) {
+      gradation[t] = std::exp(gradation[t]);
+      peak[t] = std::exp(peak[t]);
+    }
+    for (std::size_t t = 0; t < n; ++t) {
+      const double g = c[8][t];
+      const double mie_base = 1.0 + g * g - 2.0 * g * v.cos_gamma;
+      const double mie = (1.0 + v.cos2_gamma) / (mie_base * std::sqrt(mie_base));
+      f[t] = (1.0 + c[0][t] * gradation[t]) * (c[2][t] + c[3][t] * peak[t] + c[5][t] * v.cos2_gamma +
+                                               c[6][t] * mie + c[7][t] * v.sqrt_cos_theta);
+    }
     auto spectrum = out.spectrum(i);
     std::fill(spectrum.begin(), spectrum.end(), 0.0);
-    for (const auto& c : state.contributions) spectrum[c.wavelength] += c.weight * f[c.term];
+    for (const auto& contribution : state.contributions) {
+      spectrum[contribution.wavelength] += contribution.weight * f[contribution.term];
+    }
     // The fit dips below zero at the horizon when the sun is within a few degrees of it (its
     // constant term C is negative there and the zenith term sqrt(cos theta) vanishes): no
     // light is the physical limit.
@@ -269,8 +296,12 @@ Spectrum HosekModel::compute_sun_irradiance(const SunState& sun, const Viewpoint
 }
 
 Spectrum HosekModel::compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
-                                            const PlaneOrientation& plane) const {
-  return sky_irradiance_by_quadrature(sun, viewpoint, plane);
+                                           const PlaneOrientation& plane) const {
+  // Horizontal: 24 x 48 directions (Gauss-Legendre in cos(theta) x midpoint in azimuth),
+  // within 0.01% of a 200 x 400 rule. Tilted: the lune rule, 32 x 32 directions, within 0.4%
+  // of a 200 x 200 rule up to a tilt of 150 degrees (tests/models/hosek).
+  if (plane.tilt_rad < 1e-9) return sky_irradiance_on_plane(*this, sun, viewpoint, plane, 24, 48);
+  return sky_irradiance_on_plane(*this, sun, viewpoint, plane, 32, 32);
 }
 
 }  // namespace clearsky
