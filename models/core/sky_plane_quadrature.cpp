@@ -8,7 +8,8 @@
 
 namespace clearsky {
 
-WeightedDirections sky_plane_quadrature(const PlaneOrientation& plane, int first_nodes, int second_nodes) {
+WeightedDirections sky_plane_quadrature(const PlaneOrientation& plane, int first_nodes,
+                                        int second_nodes) {
   WeightedDirections rule;
   const double tilt = plane.tilt_rad;
   if (tilt < 1e-9) {
@@ -38,8 +39,9 @@ WeightedDirections sky_plane_quadrature(const PlaneOrientation& plane, int first
   return rule;
 }
 
-Spectrum sky_irradiance_on_plane(const SkyModel& model, const SunState& sun, const Viewpoint& viewpoint,
-                                 const PlaneOrientation& plane, int first_nodes, int second_nodes) {
+Spectrum sky_irradiance_on_plane(const SkyModel& model, const SunState& sun,
+                                 const Viewpoint& viewpoint, const PlaneOrientation& plane,
+                                 int first_nodes, int second_nodes) {
   const WeightedDirections rule = sky_plane_quadrature(plane, first_nodes, second_nodes);
   Spectrum irradiance(model.wavelengths().size(), 0.0);
   if (rule.views.empty()) return irradiance;

@@ -28,11 +28,13 @@ struct WeightedDirections {
 
 // first_nodes x second_nodes directions: (cos theta, azimuth) for a horizontal plane (tilt
 // below 1e-9 rad), (alpha, psi) for a tilted one; no direction for a plane facing straight down.
-WeightedDirections sky_plane_quadrature(const PlaneOrientation& plane, int first_nodes, int second_nodes);
+WeightedDirections sky_plane_quadrature(const PlaneOrientation& plane, int first_nodes,
+                                        int second_nodes);
 
 // The sky irradiance (W/(m2.nm) on model.wavelengths()) of a ground-view model by that rule,
 // through model.sky_radiance(); samples the model does not answer contribute nothing.
-Spectrum sky_irradiance_on_plane(const SkyModel& model, const SunState& sun, const Viewpoint& viewpoint,
-                                 const PlaneOrientation& plane, int first_nodes, int second_nodes);
+Spectrum sky_irradiance_on_plane(const SkyModel& model, const SunState& sun,
+                                 const Viewpoint& viewpoint, const PlaneOrientation& plane,
+                                 int first_nodes, int second_nodes);
 
 }  // namespace clearsky

@@ -19,30 +19,42 @@ ModelDescriptor make_descriptor() {
   d.id = std::string("hosek");
   d.name = std::string("Hosek-Wilkie 2012");
   d.version = std::string("1");
-  d.citation =
-      std::string("L. Hosek, A. Wilkie. An Analytic Model for Full Spectral Sky-Dome Radiance. ACM Transactions on "
-      "Graphics 31(4) (SIGGRAPH 2012), article 95. Solar disc: L. Hosek, A. Wilkie. Adding a Solar-Radiance "
-      "Function to the Hosek-Wilkie Skylight Model. IEEE Computer Graphics and Applications 33(3), 2013.");
-  d.summary =
-      std::string("Analytic sky radiance fitted to path-traced skies: a 9-coefficient distribution per band (11 bands, "
-      "320..720 nm every 40 nm), interpolated in turbidity, ground albedo and solar elevation. As in the "
-      "2016 study: turbidity 2.53, ground albedo of grass per wavelength, bands interpolated linearly at each "
-      "grid wavelength and the result rescaled to the study's extraterrestrial spectrum (ratio to the fit's "
-      "solar radiance times 6.87e-5 sr). Sun irradiance from the fit's solar disc radiance with limb "
+  d.citation = std::string(
+      "L. Hosek, A. Wilkie. An Analytic Model for Full Spectral Sky-Dome Radiance. ACM "
+      "Transactions on "
+      "Graphics 31(4) (SIGGRAPH 2012), article 95. Solar disc: L. Hosek, A. Wilkie. Adding a "
+      "Solar-Radiance "
+      "Function to the Hosek-Wilkie Skylight Model. IEEE Computer Graphics and Applications 33(3), "
+      "2013.");
+  d.summary = std::string(
+      "Analytic sky radiance fitted to path-traced skies: a 9-coefficient distribution per band "
+      "(11 bands, "
+      "320..720 nm every 40 nm), interpolated in turbidity, ground albedo and solar elevation. As "
+      "in the "
+      "2016 study: turbidity 2.53, ground albedo of grass per wavelength, bands interpolated "
+      "linearly at each "
+      "grid wavelength and the result rescaled to the study's extraterrestrial spectrum (ratio to "
+      "the fit's "
+      "solar radiance times 6.87e-5 sr). Sun irradiance from the fit's solar disc radiance with "
+      "limb "
       "darkening. Ground views only, sun above the horizon.");
-  for (int b = 0; b < hosek::kBandCount; ++b) d.native_wavelengths_nm.push_back(hosek::band_wavelength_nm(b));
+  for (int b = 0; b < hosek::kBandCount; ++b)
+    d.native_wavelengths_nm.push_back(hosek::band_wavelength_nm(b));
   d.min_wavelength_nm = hosek::kFirstBandNm;
   d.max_wavelength_nm = hosek::kLastBandNm;
   d.parameters = {
-      ParameterSpec{"turbidity", "", "atmospheric turbidity (the study: 2.53)", 2.53, 1.0, 10.0, false, true},
-      ParameterSpec{"albedo", "",
-                    "ground albedo, constant in [0, 1]; default 'grass': the spectral albedo of grass "
-                    "(Feister and Grewe 1995) at each wavelength, as in the study",
-                    0.0, 0.0, 1.0, false, true},
-      ParameterSpec{"native_bands", "",
-                    "1: cook the 11 fitted bands once each (albedo at the band's wavelength) and interpolate "
-                    "their radiances; 0: the study's one state per grid wavelength",
-                    0.0, 0.0, 1.0, true, false},
+      ParameterSpec{"turbidity", "", "atmospheric turbidity (the study: 2.53)", 2.53, 1.0, 10.0,
+                    false, true},
+      ParameterSpec{
+          "albedo", "",
+          "ground albedo, constant in [0, 1]; default 'grass': the spectral albedo of grass "
+          "(Feister and Grewe 1995) at each wavelength, as in the study",
+          0.0, 0.0, 1.0, false, true},
+      ParameterSpec{
+          "native_bands", "",
+          "1: cook the 11 fitted bands once each (albedo at the band's wavelength) and interpolate "
+          "their radiances; 0: the study's one state per grid wavelength",
+          0.0, 0.0, 1.0, true, false},
   };
   ModelCapabilities& c = d.capabilities;
   c.min_altitude_m = 0.0;
@@ -87,7 +99,8 @@ class HosekSunState final : public SunState {
 
 const HosekSunState& as_hosek_state(const SunState& sun) {
   const auto* state = dynamic_cast<const HosekSunState*>(&sun);
-  if (state == nullptr) throw std::invalid_argument("sun state was not prepared by the hosek model");
+  if (state == nullptr)
+    throw std::invalid_argument("sun state was not prepared by the hosek model");
   return *state;
 }
 
@@ -102,7 +115,8 @@ const ModelDescriptor& hosek_descriptor() {
 
 ModelFactory hosek_factory() { return ModelFactory{&hosek_descriptor(), &HosekModel::create}; }
 
-std::shared_ptr<const SkyModel> HosekModel::create(const ModelConfig& config, const PrecomputeContext&) {
+std::shared_ptr<const SkyModel> HosekModel::create(const ModelConfig& config,
+                                                   const PrecomputeContext&) {
   validate_config(hosek_descriptor(), config);
   const double t = config.atmosphere.turbidity;
   const ParameterSpec& spec = *hosek_descriptor().find_parameter("turbidity");
@@ -140,7 +154,8 @@ HosekModel::HosekModel(const ModelConfig& config) : SkyModel(config) {
     w.albedo = atmosphere().ground_albedo[i];
     const double original = (1.0 - w.fraction) * tables.original_solar_radiance[w.band] +
                             w.fraction * tables.original_solar_radiance[next];
-    const double disc = (1.0 - w.fraction) * disc_solid_angle[w.band] + w.fraction * disc_solid_angle[next];
+    const double disc =
+        (1.0 - w.fraction) * disc_solid_angle[w.band] + w.fraction * disc_solid_angle[next];
     const double solar = atmosphere().solar_irradiance_w_m2_nm[i];
     w.sky_correction = solar / (original * hosek::kStudySunSolidAngleSr);
     w.disc_correction = solar / (original * disc);
@@ -187,7 +202,8 @@ std::shared_ptr<const SunState> HosekModel::compute_sun_state(const SunPosition&
   return state;
 }
 
-void HosekModel::compute_sky_radiance(const SunState& sun, const Viewpoint&, std::span<const ViewDirection> views,
+void HosekModel::compute_sky_radiance(const SunState& sun, const Viewpoint&,
+                                      std::span<const ViewDirection> views,
                                       SpectralBatch& out) const {
   const HosekSunState& state = as_hosek_state(sun);
   const Vec3 sun_direction = state.sun().unit_vector();
@@ -211,8 +227,9 @@ void HosekModel::compute_sky_radiance(const SunState& sun, const Viewpoint&, std
       const double g = c[8][t];
       const double mie_base = 1.0 + g * g - 2.0 * g * v.cos_gamma;
       const double mie = (1.0 + v.cos2_gamma) / (mie_base * std::sqrt(mie_base));
-      f[t] = (1.0 + c[0][t] * gradation[t]) * (c[2][t] + c[3][t] * peak[t] + c[5][t] * v.cos2_gamma +
-                                               c[6][t] * mie + c[7][t] * v.sqrt_cos_theta);
+      f[t] =
+          (1.0 + c[0][t] * gradation[t]) * (c[2][t] + c[3][t] * peak[t] + c[5][t] * v.cos2_gamma +
+                                            c[6][t] * mie + c[7][t] * v.sqrt_cos_theta);
     }
     auto spectrum = out.spectrum(i);
     std::fill(spectrum.begin(), spectrum.end(), 0.0);
@@ -236,10 +253,11 @@ Spectrum HosekModel::sun_disc_radiance(const SunState& sun, const ViewDirection&
     const WavelengthTerms& w = terms_[i];
     if (!w.in_range) continue;
     const int next = std::min(w.band + 1, hosek::kBandCount - 1);
-    const double centre = (1.0 - w.fraction) * hosek::solar_centre_radiance(w.band, turbidity(), elevation) +
-                          w.fraction * hosek::solar_centre_radiance(next, turbidity(), elevation);
-    const double darkening =
-        (1.0 - w.fraction) * hosek::limb_darkening(w.band, mu) + w.fraction * hosek::limb_darkening(next, mu);
+    const double centre =
+        (1.0 - w.fraction) * hosek::solar_centre_radiance(w.band, turbidity(), elevation) +
+        w.fraction * hosek::solar_centre_radiance(next, turbidity(), elevation);
+    const double darkening = (1.0 - w.fraction) * hosek::limb_darkening(w.band, mu) +
+                             w.fraction * hosek::limb_darkening(next, mu);
     radiance[i] = centre * darkening * w.disc_correction;
   }
   return radiance;
@@ -286,8 +304,10 @@ Spectrum HosekModel::compute_sun_irradiance(const SunState& sun, const Viewpoint
     const int next = std::min(w.band + 1, hosek::kBandCount - 1);
     double sum = 0.0;
     for (const Node& node : nodes) {
-      const double centre = (1.0 - w.fraction) * node.centre[w.band] + w.fraction * node.centre[next];
-      const double darkening = (1.0 - w.fraction) * node.darkening[w.band] + w.fraction * node.darkening[next];
+      const double centre =
+          (1.0 - w.fraction) * node.centre[w.band] + w.fraction * node.centre[next];
+      const double darkening =
+          (1.0 - w.fraction) * node.darkening[w.band] + w.fraction * node.darkening[next];
       sum += node.weight * centre * darkening;
     }
     irradiance[i] = sum * w.disc_correction;
@@ -296,10 +316,11 @@ Spectrum HosekModel::compute_sun_irradiance(const SunState& sun, const Viewpoint
 }
 
 Spectrum HosekModel::compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
-                                           const PlaneOrientation& plane) const {
+                                            const PlaneOrientation& plane) const {
   // Horizontal: 24 x 48 directions (Gauss-Legendre in cos(theta) x midpoint in azimuth),
   // within 0.01% of a 200 x 400 rule. Tilted: the lune rule, 32 x 32 directions, within 0.4%
-  // of a 200 x 200 rule up to a tilt of 150 degrees (tests/models/hosek).
+  // of a fine rule (120 x 240 over the sky, and a 200 x 200 lune) up to a tilt of 150 degrees
+  // (tests/models/hosek).
   if (plane.tilt_rad < 1e-9) return sky_irradiance_on_plane(*this, sun, viewpoint, plane, 24, 48);
   return sky_irradiance_on_plane(*this, sun, viewpoint, plane, 32, 32);
 }

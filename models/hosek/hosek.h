@@ -36,7 +36,8 @@ ModelFactory hosek_factory();
 
 class HosekModel final : public SkyModel {
  public:
-  static std::shared_ptr<const SkyModel> create(const ModelConfig& config, const PrecomputeContext& context);
+  static std::shared_ptr<const SkyModel> create(const ModelConfig& config,
+                                                const PrecomputeContext& context);
 
   const ModelDescriptor& descriptor() const override { return hosek_descriptor(); }
 
@@ -47,9 +48,10 @@ class HosekModel final : public SkyModel {
   double turbidity() const { return config().atmosphere.turbidity; }
 
  protected:
-  std::shared_ptr<const SunState> compute_sun_state(const SunPosition& sun,
-                                                    const PrecomputeContext& context) const override;
-  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint, std::span<const ViewDirection> views,
+  std::shared_ptr<const SunState> compute_sun_state(
+      const SunPosition& sun, const PrecomputeContext& context) const override;
+  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
+                            std::span<const ViewDirection> views,
                             SpectralBatch& out) const override;
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
   Spectrum compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
@@ -62,8 +64,8 @@ class HosekModel final : public SkyModel {
   // move the fit's solar spectrum to the study's.
   struct WavelengthTerms {
     bool in_range = false;
-    int band = 0;              // lower band
-    double fraction = 0;       // weight of band + 1
+    int band = 0;         // lower band
+    double fraction = 0;  // weight of band + 1
     double albedo = 0;
     double sky_correction = 0;   // solar / (original x 6.87e-5 sr)
     double disc_correction = 0;  // solar / (original x limb-darkened disc solid angle)

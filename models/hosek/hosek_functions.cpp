@@ -43,7 +43,8 @@ double bezier_parameter(double solar_elevation_rad) {
 
 }  // namespace
 
-Configuration cook(const SkyChannel& channel, double turbidity, double albedo, double solar_elevation_rad) {
+Configuration cook(const SkyChannel& channel, double turbidity, double albedo,
+                   double solar_elevation_rad) {
   const auto bernstein = bezier_weights(bezier_parameter(solar_elevation_rad));
   Configuration config;
   for (const Knot& knot : knots(turbidity, albedo)) {
@@ -82,8 +83,8 @@ double solar_centre_radiance(int band, double turbidity, double solar_elevation_
     low = kTurbidityCount - 2;
     fraction = 1.0;
   }
-  const int segment = std::min(static_cast<int>(std::cbrt(elevation / (0.5 * kPi)) * kSolarSegments),
-                               kSolarSegments - 1);
+  const int segment = std::min(
+      static_cast<int>(std::cbrt(elevation / (0.5 * kPi)) * kSolarSegments), kSolarSegments - 1);
   const double start = std::pow(static_cast<double>(segment) / kSolarSegments, 3.0) * (0.5 * kPi);
   const double x = elevation - start;
   const auto cubic = [&](int turbidity_index) {
@@ -122,14 +123,16 @@ TristimulusState make_tristimulus_state(Tristimulus kind, double turbidity, doub
                                         double solar_elevation_rad) {
   const auto& channels = kind == Tristimulus::rgb ? Tables::get().rgb : Tables::get().xyz;
   TristimulusState state;
-  for (int c = 0; c < 3; ++c) state.channels[c] = cook(channels[c], turbidity, albedo, solar_elevation_rad);
+  for (int c = 0; c < 3; ++c)
+    state.channels[c] = cook(channels[c], turbidity, albedo, solar_elevation_rad);
   return state;
 }
 
 std::array<double, 3> tristimulus_radiance(const TristimulusState& state, double view_zenith_rad,
                                            double gamma_rad) {
   const ViewTerms v = view_terms(std::cos(view_zenith_rad), std::cos(gamma_rad));
-  return {radiance(state.channels[0], v), radiance(state.channels[1], v), radiance(state.channels[2], v)};
+  return {radiance(state.channels[0], v), radiance(state.channels[1], v),
+          radiance(state.channels[2], v)};
 }
 
 }  // namespace clearsky::hosek

@@ -29,7 +29,8 @@ struct Configuration {
 };
 
 // Turbidity in [1, 10], albedo in [0, 1], solar elevation in [0, pi/2] (clamped).
-Configuration cook(const SkyChannel& channel, double turbidity, double albedo, double solar_elevation_rad);
+Configuration cook(const SkyChannel& channel, double turbidity, double albedo,
+                   double solar_elevation_rad);
 
 // The view-dependent quantities of the distribution, shared by all channels.
 struct ViewTerms {

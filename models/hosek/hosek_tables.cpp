@@ -25,7 +25,8 @@ int index_of(double value, double first, double step, int count, const std::stri
   const double position = (value - first) / step;
   const double rounded = std::round(position);
   if (!(std::abs(position - rounded) < 1e-9 && rounded >= 0 && rounded < count)) {
-    throw std::runtime_error(source + ": " + what + " " + std::to_string(value) + " is not in the table");
+    throw std::runtime_error(source + ": " + what + " " + std::to_string(value) +
+                             " is not in the table");
   }
   return static_cast<int>(rounded);
 }
@@ -47,14 +48,16 @@ void read_sky(const std::string& coefficients_path, const std::string& radiance_
     const std::size_t first = table.column_index("A");
     std::vector<int> seen(N * kEntries, 0);
     for (const auto& row : table.rows) {
-      const int ci = index_of(row[c], first_channel, channel_step, channel_count, channel_column, coefficients_path);
+      const int ci = index_of(row[c], first_channel, channel_step, channel_count, channel_column,
+                              coefficients_path);
       const int ai = index_of(row[a], 0, 1, 2, "albedo", coefficients_path);
       const int ti = index_of(row[t], 1, 1, kTurbidityCount, "turbidity", coefficients_path);
       const int pi = index_of(row[p], 0, 1, kControlPoints, "control_point", coefficients_path);
       for (int k = 0; k < kCoefficientCount; ++k) {
         channels[ci].coefficients[ai][ti][pi][k] = row[first + k];
       }
-      ++seen[static_cast<std::size_t>(ci) * kEntries + (ai * kTurbidityCount + ti) * kControlPoints + pi];
+      ++seen[static_cast<std::size_t>(ci) * kEntries +
+             (ai * kTurbidityCount + ti) * kControlPoints + pi];
     }
     for (int s : seen) {
       if (s != 1) throw std::runtime_error(coefficients_path + ": missing or duplicated entries");
@@ -69,12 +72,14 @@ void read_sky(const std::string& coefficients_path, const std::string& radiance_
     const std::size_t r = table.column_index("radiance");
     std::vector<int> seen(N * kEntries, 0);
     for (const auto& row : table.rows) {
-      const int ci = index_of(row[c], first_channel, channel_step, channel_count, channel_column, radiance_path);
+      const int ci = index_of(row[c], first_channel, channel_step, channel_count, channel_column,
+                              radiance_path);
       const int ai = index_of(row[a], 0, 1, 2, "albedo", radiance_path);
       const int ti = index_of(row[t], 1, 1, kTurbidityCount, "turbidity", radiance_path);
       const int pi = index_of(row[p], 0, 1, kControlPoints, "control_point", radiance_path);
       channels[ci].radiance[ai][ti][pi] = row[r];
-      ++seen[static_cast<std::size_t>(ci) * kEntries + (ai * kTurbidityCount + ti) * kControlPoints + pi];
+      ++seen[static_cast<std::size_t>(ci) * kEntries +
+             (ai * kTurbidityCount + ti) * kControlPoints + pi];
     }
     for (int s : seen) {
       if (s != 1) throw std::runtime_error(radiance_path + ": missing or duplicated entries");
@@ -86,10 +91,12 @@ void read_sky(const std::string& coefficients_path, const std::string& radiance_
 std::unique_ptr<Tables> load() {
   auto owned = std::make_unique<Tables>();
   Tables& tables = *owned;
-  read_sky("hosek/spectral_sky_coefficients.csv", "hosek/spectral_sky_radiance_scale.csv", "wavelength_nm",
-           kFirstBandNm, kBandSpacingNm, tables.spectral);
-  read_sky("hosek/rgb_sky_coefficients.csv", "hosek/rgb_sky_radiance_scale.csv", "channel", 0, 1, tables.rgb);
-  read_sky("hosek/xyz_sky_coefficients.csv", "hosek/xyz_sky_radiance_scale.csv", "channel", 0, 1, tables.xyz);
+  read_sky("hosek/spectral_sky_coefficients.csv", "hosek/spectral_sky_radiance_scale.csv",
+           "wavelength_nm", kFirstBandNm, kBandSpacingNm, tables.spectral);
+  read_sky("hosek/rgb_sky_coefficients.csv", "hosek/rgb_sky_radiance_scale.csv", "channel", 0, 1,
+           tables.rgb);
+  read_sky("hosek/xyz_sky_coefficients.csv", "hosek/xyz_sky_radiance_scale.csv", "channel", 0, 1,
+           tables.xyz);
   {
     const std::string path = "hosek/solar_radiance_coefficients.csv";
     const NumericTable table = read_embedded(path);
@@ -99,7 +106,8 @@ std::unique_ptr<Tables> load() {
     const std::size_t first = table.column_index("c0");
     std::vector<int> seen(kBandCount * kTurbidityCount * kSolarSegments, 0);
     for (const auto& row : table.rows) {
-      const int wi = index_of(row[w], kFirstBandNm, kBandSpacingNm, kBandCount, "wavelength_nm", path);
+      const int wi =
+          index_of(row[w], kFirstBandNm, kBandSpacingNm, kBandCount, "wavelength_nm", path);
       const int ti = index_of(row[t], 1, 1, kTurbidityCount, "turbidity", path);
       const int si = index_of(row[s], 0, 1, kSolarSegments, "segment", path);
       for (int k = 0; k < kSolarOrder; ++k) tables.solar[wi][ti][si][k] = row[first + k];
@@ -116,7 +124,8 @@ std::unique_ptr<Tables> load() {
     const std::size_t first = table.column_index("c0");
     std::vector<int> seen(kBandCount, 0);
     for (const auto& row : table.rows) {
-      const int wi = index_of(row[w], kFirstBandNm, kBandSpacingNm, kBandCount, "wavelength_nm", path);
+      const int wi =
+          index_of(row[w], kFirstBandNm, kBandSpacingNm, kBandCount, "wavelength_nm", path);
       for (int k = 0; k < kLimbDarkeningOrder; ++k) tables.limb_darkening[wi][k] = row[first + k];
       ++seen[wi];
     }
@@ -131,7 +140,8 @@ std::unique_ptr<Tables> load() {
     const std::size_t r = table.column_index("radiance");
     std::vector<int> seen(kBandCount, 0);
     for (const auto& row : table.rows) {
-      const int wi = index_of(row[w], kFirstBandNm, kBandSpacingNm, kBandCount, "wavelength_nm", path);
+      const int wi =
+          index_of(row[w], kFirstBandNm, kBandSpacingNm, kBandCount, "wavelength_nm", path);
       tables.original_solar_radiance[wi] = row[r];
       ++seen[wi];
     }

@@ -32,7 +32,8 @@ using Coefficients = std::array<double, kCoefficientCount>;
 // One channel of a sky dataset.
 struct SkyChannel {
   // [albedo 0..1][turbidity 1..10 -> 0..9][control point 0..5]
-  std::array<std::array<std::array<Coefficients, kControlPoints>, kTurbidityCount>, 2> coefficients{};
+  std::array<std::array<std::array<Coefficients, kControlPoints>, kTurbidityCount>, 2>
+      coefficients{};
   std::array<std::array<std::array<double, kControlPoints>, kTurbidityCount>, 2> radiance{};
 };
 
@@ -42,8 +43,9 @@ struct Tables {
   std::array<SkyChannel, 3> xyz;                // CIE XYZ, radiometric (x 683 for cd/m2)
   // Solar disc radiance fit, W/(m2.sr.nm): [band][turbidity 0..9][segment 0..44], with the
   // polynomial c0 x^3 + c1 x^2 + c2 x + c3 in x = elevation - start of the segment (rad).
-  std::array<std::array<std::array<std::array<double, kSolarOrder>, kSolarSegments>, kTurbidityCount>,
-             kBandCount>
+  std::array<
+      std::array<std::array<std::array<double, kSolarOrder>, kSolarSegments>, kTurbidityCount>,
+      kBandCount>
       solar{};
   // Limb darkening polynomial sum_k c_k mu^k in the cosine mu on the solar surface.
   std::array<std::array<double, kLimbDarkeningOrder>, kBandCount> limb_darkening{};

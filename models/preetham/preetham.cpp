@@ -18,19 +18,25 @@ ModelDescriptor make_descriptor() {
   d.id = std::string("preetham");
   d.name = std::string("Preetham 1999");
   d.version = std::string("1");
-  d.citation =
-      std::string("A. J. Preetham, P. Shirley, B. Smits. A Practical Analytic Model for Daylight. Proceedings of "
+  d.citation = std::string(
+      "A. J. Preetham, P. Shirley, B. Smits. A Practical Analytic Model for Daylight. Proceedings "
+      "of "
       "SIGGRAPH 1999, pages 91-100.");
   d.summary =
-      "Analytic sky luminance and chromaticity: Perez distributions fitted to Nishita96 skies, with zenith "
-      "luminance and chromaticity as functions of turbidity and sun zenith; the spectrum is the CIE daylight "
-      "basis S0 + M1 S1 + M2 S2 for the chromaticity, scaled to the luminance. As in the 2016 study: turbidity "
-      "2.53; the extraterrestrial spectrum, albedo and aerosol parameters are built into the fit and ignored. "
+      "Analytic sky luminance and chromaticity: Perez distributions fitted to Nishita96 skies, "
+      "with zenith "
+      "luminance and chromaticity as functions of turbidity and sun zenith; the spectrum is the "
+      "CIE daylight "
+      "basis S0 + M1 S1 + M2 S2 for the chromaticity, scaled to the luminance. As in the 2016 "
+      "study: turbidity "
+      "2.53; the extraterrestrial spectrum, albedo and aerosol parameters are built into the fit "
+      "and ignored. "
       "Ground views only, sun above the horizon.";
   d.min_wavelength_nm = 360.0;  // the CIE daylight basis table
   d.max_wavelength_nm = 830.0;
   d.parameters = {
-      ParameterSpec{"turbidity", "", "atmospheric turbidity (the study: 2.53)", 2.53, 2.0, 10.0, false, true},
+      ParameterSpec{"turbidity", "", "atmospheric turbidity (the study: 2.53)", 2.53, 2.0, 10.0,
+                    false, true},
   };
   ModelCapabilities& c = d.capabilities;
   c.min_altitude_m = 0.0;
@@ -62,8 +68,10 @@ class PreethamSunState final : public SunState {
     // kcd/m2 -> cd/m2.
     luminance = make(preetham::luminance_coefficients(turbidity),
                      1000.0 * preetham::zenith_luminance_kcd_m2(turbidity, zenith));
-    chroma_x = make(preetham::chromaticity_x_coefficients(turbidity), preetham::zenith_chromaticity_x(turbidity, zenith));
-    chroma_y = make(preetham::chromaticity_y_coefficients(turbidity), preetham::zenith_chromaticity_y(turbidity, zenith));
+    chroma_x = make(preetham::chromaticity_x_coefficients(turbidity),
+                    preetham::zenith_chromaticity_x(turbidity, zenith));
+    chroma_y = make(preetham::chromaticity_y_coefficients(turbidity),
+                    preetham::zenith_chromaticity_y(turbidity, zenith));
   }
   std::size_t memory_bytes() const override { return sizeof(*this); }
 
@@ -72,20 +80,23 @@ class PreethamSunState final : public SunState {
 
 const PreethamSunState& as_preetham_state(const SunState& sun) {
   const auto* state = dynamic_cast<const PreethamSunState*>(&sun);
-  if (state == nullptr) throw std::invalid_argument("sun state was not prepared by the preetham model");
+  if (state == nullptr)
+    throw std::invalid_argument("sun state was not prepared by the preetham model");
   return *state;
 }
 
 // F(theta, gamma) for the three distributions at once: they share cos(theta), gamma and
 // cos^2(gamma).
-PreethamModel::LuminanceChromaticity evaluate(const PreethamSunState& s, double cos_theta, double cos_gamma) {
+PreethamModel::LuminanceChromaticity evaluate(const PreethamSunState& s, double cos_theta,
+                                              double cos_gamma) {
   const double mu = std::max(cos_theta, 1e-9);
   const double inverse_mu = 1.0 / mu;
   const double gamma = std::acos(std::clamp(cos_gamma, -1.0, 1.0));
   const double cos2 = cos_gamma * cos_gamma;
   const auto f = [&](const ScaledPerez& d) {
     const auto& p = d.p;
-    return d.scale * (1.0 + p.a * std::exp(p.b * inverse_mu)) * (1.0 + p.c * std::exp(p.d * gamma) + p.e * cos2);
+    return d.scale * (1.0 + p.a * std::exp(p.b * inverse_mu)) *
+           (1.0 + p.c * std::exp(p.d * gamma) + p.e * cos2);
   };
   return {f(s.luminance), f(s.chroma_x), f(s.chroma_y)};
 }
@@ -97,9 +108,12 @@ const ModelDescriptor& preetham_descriptor() {
   return descriptor;
 }
 
-ModelFactory preetham_factory() { return ModelFactory{&preetham_descriptor(), &PreethamModel::create}; }
+ModelFactory preetham_factory() {
+  return ModelFactory{&preetham_descriptor(), &PreethamModel::create};
+}
 
-std::shared_ptr<const SkyModel> PreethamModel::create(const ModelConfig& config, const PrecomputeContext&) {
+std::shared_ptr<const SkyModel> PreethamModel::create(const ModelConfig& config,
+                                                      const PrecomputeContext&) {
   validate_config(preetham_descriptor(), config);
   const double t = config.atmosphere.turbidity;
   const ParameterSpec& spec = *preetham_descriptor().find_parameter("turbidity");
@@ -132,13 +146,14 @@ std::shared_ptr<const SunState> PreethamModel::compute_sun_state(const SunPositi
   return std::make_shared<PreethamSunState>(sun, turbidity());
 }
 
-PreethamModel::LuminanceChromaticity PreethamModel::luminance_chromaticity(const SunState& sun,
-                                                                           const ViewDirection& view) const {
+PreethamModel::LuminanceChromaticity PreethamModel::luminance_chromaticity(
+    const SunState& sun, const ViewDirection& view) const {
   const PreethamSunState& state = as_preetham_state(sun);
   return evaluate(state, std::cos(view.zenith_rad), cos_angle_between(view, state.sun()));
 }
 
-void PreethamModel::compute_sky_radiance(const SunState& sun, const Viewpoint&, std::span<const ViewDirection> views,
+void PreethamModel::compute_sky_radiance(const SunState& sun, const Viewpoint&,
+                                         std::span<const ViewDirection> views,
                                          SpectralBatch& out) const {
   const PreethamSunState& state = as_preetham_state(sun);
   const Vec3 sun_direction = state.sun().unit_vector();
@@ -148,28 +163,32 @@ void PreethamModel::compute_sky_radiance(const SunState& sun, const Viewpoint&, 
     const LuminanceChromaticity v = evaluate(state, d.z, dot(d, sun_direction));
     const preetham::BasisWeights m = preetham::daylight_basis_weights(v.chroma_x, v.chroma_y);
     // L = k (S0 + M1 S1 + M2 S2) with 683 k (Y_S0 + M1 Y_S1 + M2 Y_S2) = Y (cd/m2).
-    const double k = v.luminance_cd_m2 / (kMaxLuminousEfficacy * (y_s0_ + m.m1 * y_s1_ + m.m2 * y_s2_));
+    const double k =
+        v.luminance_cd_m2 / (kMaxLuminousEfficacy * (y_s0_ + m.m1 * y_s1_ + m.m2 * y_s2_));
     auto spectrum = out.spectrum(i);
     // For a low sun, views near the horizon towards it get chromaticities far from the
     // daylight locus, where the basis combination turns negative at the short wavelengths:
     // clamped to no light, the physical limit.
-    for (std::size_t w = 0; w < n; ++w) spectrum[w] = std::max(k * (s0_[w] + m.m1 * s1_[w] + m.m2 * s2_[w]), 0.0);
+    for (std::size_t w = 0; w < n; ++w)
+      spectrum[w] = std::max(k * (s0_[w] + m.m1 * s1_[w] + m.m2 * s2_[w]), 0.0);
   }
 }
 
 Spectrum PreethamModel::compute_sun_irradiance(const SunState& sun, const Viewpoint&) const {
   Spectrum irradiance = atmosphere().solar_irradiance_w_m2_nm;
   for (std::size_t i = 0; i < irradiance.size(); ++i) {
-    irradiance[i] *= preetham::sun_transmittance(turbidity(), sun.sun().zenith_rad, wavelengths()[i]);
+    irradiance[i] *=
+        preetham::sun_transmittance(turbidity(), sun.sun().zenith_rad, wavelengths()[i]);
   }
   return irradiance;
 }
 
 Spectrum PreethamModel::compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
-                                              const PlaneOrientation& plane) const {
+                                               const PlaneOrientation& plane) const {
   // Horizontal: 24 x 48 directions (Gauss-Legendre in cos(theta) x midpoint in azimuth),
   // within 0.01% of a 200 x 400 rule. Tilted: the lune rule, 32 x 32 directions, within 0.4%
-  // of a 200 x 200 rule up to a tilt of 150 degrees (tests/models/preetham).
+  // of a fine rule (120 x 240 over the sky, and a 200 x 200 lune) up to a tilt of 150 degrees
+  // (tests/models/preetham).
   if (plane.tilt_rad < 1e-9) return sky_irradiance_on_plane(*this, sun, viewpoint, plane, 24, 48);
   return sky_irradiance_on_plane(*this, sun, viewpoint, plane, 32, 32);
 }

@@ -29,7 +29,8 @@ ModelFactory preetham_factory();
 
 class PreethamModel final : public SkyModel {
  public:
-  static std::shared_ptr<const SkyModel> create(const ModelConfig& config, const PrecomputeContext& context);
+  static std::shared_ptr<const SkyModel> create(const ModelConfig& config,
+                                                const PrecomputeContext& context);
 
   const ModelDescriptor& descriptor() const override { return preetham_descriptor(); }
   double turbidity() const { return config().atmosphere.turbidity; }
@@ -38,12 +39,14 @@ class PreethamModel final : public SkyModel {
   struct LuminanceChromaticity {
     double luminance_cd_m2 = 0, chroma_x = 0, chroma_y = 0;
   };
-  LuminanceChromaticity luminance_chromaticity(const SunState& sun, const ViewDirection& view) const;
+  LuminanceChromaticity luminance_chromaticity(const SunState& sun,
+                                               const ViewDirection& view) const;
 
  protected:
-  std::shared_ptr<const SunState> compute_sun_state(const SunPosition& sun,
-                                                    const PrecomputeContext& context) const override;
-  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint, std::span<const ViewDirection> views,
+  std::shared_ptr<const SunState> compute_sun_state(
+      const SunPosition& sun, const PrecomputeContext& context) const override;
+  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
+                            std::span<const ViewDirection> views,
                             SpectralBatch& out) const override;
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
   Spectrum compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,

@@ -30,7 +30,8 @@ double perez(const PerezCoefficients& p, double cos_theta, double gamma_rad) {
   // by zero.
   const double mu = std::max(cos_theta, 1e-9);
   const double cos_gamma = std::cos(gamma_rad);
-  return (1.0 + p.a * std::exp(p.b / mu)) * (1.0 + p.c * std::exp(p.d * gamma_rad) + p.e * cos_gamma * cos_gamma);
+  return (1.0 + p.a * std::exp(p.b / mu)) *
+         (1.0 + p.c * std::exp(p.d * gamma_rad) + p.e * cos_gamma * cos_gamma);
 }
 
 double zenith_luminance_kcd_m2(double t, double sun_zenith_rad) {
@@ -59,7 +60,8 @@ BasisWeights daylight_basis_weights(double x, double y) {
 
 double relative_air_mass(double sun_zenith_rad) {
   const double zenith_deg = radians_to_degrees(std::clamp(sun_zenith_rad, 0.0, 0.5 * kPi));
-  return 1.0 / (std::cos(degrees_to_radians(zenith_deg)) + 0.15 * std::pow(93.885 - zenith_deg, -1.253));
+  return 1.0 /
+         (std::cos(degrees_to_radians(zenith_deg)) + 0.15 * std::pow(93.885 - zenith_deg, -1.253));
 }
 
 namespace {
@@ -70,19 +72,21 @@ struct AbsorptionTables {
   TabulatedSpectrum ozone, vapour, gas;
 
   AbsorptionTables() {
-    const std::vector<double> k_o = {0.0, 0.3, 0.6, 0.9, 1.4, 2.1, 3.0, 4.0, 4.8, 6.3, 7.5, 8.5,
-                                     10.3, 12.0, 12.0, 11.5, 12.5, 12.0, 10.5, 9.0, 7.9, 6.7, 5.7, 4.8,
-                                     3.6, 2.8, 2.3, 1.8, 1.4, 1.1, 1.0, 0.9, 0.7, 0.4, 0.0, 0.0};
+    const std::vector<double> k_o = {0.0,  0.3, 0.6, 0.9,  1.4,  2.1,  3.0,  4.0,  4.8,
+                                     6.3,  7.5, 8.5, 10.3, 12.0, 12.0, 11.5, 12.5, 12.0,
+                                     10.5, 9.0, 7.9, 6.7,  5.7,  4.8,  3.6,  2.8,  2.3,
+                                     1.8,  1.4, 1.1, 1.0,  0.9,  0.7,  0.4,  0.0,  0.0};
     std::vector<double> k_wa(k_o.size(), 0.0), k_g(k_o.size(), 0.0);
     // Water vapour absorbs at 690..780 nm, mixed gases (the oxygen A band) at 760..770 nm.
-    const std::vector<std::pair<int, double>> vapour_bands = {{25, 1.6}, {26, 2.4}, {27, 1.25}, {28, 100.0},
-                                                        {29, 87.0}, {30, 6.1}, {31, 0.1}, {32, 0.001},
-                                                        {33, 0.001}, {34, 0.06}};
+    const std::vector<std::pair<int, double>> vapour_bands = {
+        {25, 1.6}, {26, 2.4}, {27, 1.25},  {28, 100.0}, {29, 87.0},
+        {30, 6.1}, {31, 0.1}, {32, 0.001}, {33, 0.001}, {34, 0.06}};
     for (const auto& [i, k] : vapour_bands) k_wa[i] = k;
     k_g[32] = 3.0;
     k_g[33] = 0.21;
     std::vector<double> nm;
-    for (std::size_t i = 0; i < k_o.size(); ++i) nm.push_back(440.0 + 10.0 * static_cast<double>(i));
+    for (std::size_t i = 0; i < k_o.size(); ++i)
+      nm.push_back(440.0 + 10.0 * static_cast<double>(i));
     ozone = TabulatedSpectrum(nm, k_o);
     vapour = TabulatedSpectrum(nm, k_wa);
     gas = TabulatedSpectrum(nm, k_g);

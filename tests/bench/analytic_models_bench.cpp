@@ -19,7 +19,8 @@ const SunPosition kSun{degrees_to_radians(35.0), degrees_to_radians(120.0)};
 std::shared_ptr<const SkyModel> make(const char* id, double native_bands = 0.0) {
   ModelConfig config;
   if (native_bands != 0.0) config.options["native_bands"] = native_bands;
-  return std::string(id) == "preetham" ? preetham_factory().create(config, {}) : hosek_factory().create(config, {});
+  return std::string(id) == "preetham" ? preetham_factory().create(config, {})
+                                       : hosek_factory().create(config, {});
 }
 
 // The study's 81 directions: a 9 x 9 grid of the unit square mapped to the disk
@@ -63,9 +64,9 @@ void radiance_batch(benchmark::State& state, const char* id, double native_bands
     model->sky_radiance(*sun, {}, views, out);
     benchmark::DoNotOptimize(out.values.data());
   }
-  state.counters["per_view"] =
-      benchmark::Counter(static_cast<double>(views.size()), benchmark::Counter::kIsIterationInvariantRate |
-                                                                benchmark::Counter::kInvert);
+  state.counters["per_view"] = benchmark::Counter(
+      static_cast<double>(views.size()),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void sky_irradiance(benchmark::State& state, const char* id, double native_bands) {

@@ -15,24 +15,26 @@ namespace clearsky {
 namespace {
 
 void print(const char* model, const EvaluationResult& r) {
-  std::printf("%s: RMSE %.3f mW/(m2.sr.nm) over %zu captures, evaluate %.3f s\n", model, r.rmse, r.captures.size(),
-              r.evaluate_seconds);
+  std::printf("%s: RMSE %.3f mW/(m2.sr.nm) over %zu captures, evaluate %.3f s\n", model, r.rmse,
+              r.captures.size(), r.evaluate_seconds);
   for (const auto& c : r.captures) {
-    std::printf("  %s sun zenith %.3f azimuth %.3f RMSE %.3f\n", c.time_iso.c_str(), c.sun_zenith_deg,
-                c.sun_azimuth_deg, c.rmse);
+    std::printf("  %s sun zenith %.3f azimuth %.3f RMSE %.3f\n", c.time_iso.c_str(),
+                c.sun_zenith_deg, c.sun_azimuth_deg, c.rmse);
   }
 }
 
 TEST(PreethamAccuracy, StudyRmseOnThe15PublicCaptures) {
   CLEARSKY_REQUIRE_SHARED_DATA("kider2014/2013-05-27/RADIANCE");
-  const EvaluationResult r = evaluate_model(*find_model("preetham"), ModelConfig{}, testing::public_captures(), {});
+  const EvaluationResult r =
+      evaluate_model(*find_model("preetham"), ModelConfig{}, testing::public_captures(), {});
   print("preetham", r);
   EXPECT_NEAR(r.rmse, 88.72, 0.05 * 88.72);
 }
 
 TEST(HosekAccuracy, StudyRmseOnThe15PublicCaptures) {
   CLEARSKY_REQUIRE_SHARED_DATA("kider2014/2013-05-27/RADIANCE");
-  const EvaluationResult r = evaluate_model(*find_model("hosek"), ModelConfig{}, testing::public_captures(), {});
+  const EvaluationResult r =
+      evaluate_model(*find_model("hosek"), ModelConfig{}, testing::public_captures(), {});
   print("hosek", r);
   EXPECT_NEAR(r.rmse, 41.59, 0.05 * 41.59);
 }
@@ -43,7 +45,8 @@ TEST(HosekAccuracy, NativeBandsCostLittleAccuracy) {
   CLEARSKY_REQUIRE_SHARED_DATA("kider2014/2013-05-27/RADIANCE");
   ModelConfig config;
   config.options["native_bands"] = 1.0;
-  const EvaluationResult r = evaluate_model(*find_model("hosek"), config, testing::public_captures(), {});
+  const EvaluationResult r =
+      evaluate_model(*find_model("hosek"), config, testing::public_captures(), {});
   print("hosek native_bands=1", r);
   EXPECT_NEAR(r.rmse, 41.59, 0.05 * 41.59);
 }

@@ -23,7 +23,8 @@ TEST(SkyPlaneQuadrature, UniformSkyGivesTheViewFactor) {
         ASSERT_GT(dot(rule.views[i].unit_vector(), n), 0.0);
         sum += rule.weights[i];
       }
-      EXPECT_NEAR(sum, kPi * (1.0 + std::cos(plane.tilt_rad)) / 2.0, 1e-12) << tilt_deg << " " << azimuth_deg;
+      EXPECT_NEAR(sum, kPi * (1.0 + std::cos(plane.tilt_rad)) / 2.0, 1e-12)
+          << tilt_deg << " " << azimuth_deg;
     }
   }
   EXPECT_TRUE(sky_plane_quadrature({kPi, 0.0}, 12, 16).views.empty());
@@ -34,7 +35,8 @@ TEST(SkyPlaneQuadrature, IntegratesTheCosineOfTheViewZenithExactly) {
   // sphere = integral of sin^3(alpha) x integral of cos(psi) sin(psi) = 4/3 x 1/2.
   const WeightedDirections rule = sky_plane_quadrature({0.5 * kPi, 0.0}, 16, 8);
   double sum = 0.0;
-  for (std::size_t i = 0; i < rule.views.size(); ++i) sum += rule.weights[i] * std::cos(rule.views[i].zenith_rad);
+  for (std::size_t i = 0; i < rule.views.size(); ++i)
+    sum += rule.weights[i] * std::cos(rule.views[i].zenith_rad);
   EXPECT_NEAR(sum, 2.0 / 3.0, 1e-12);
 }
 
