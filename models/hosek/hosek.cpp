@@ -248,14 +248,12 @@ Spectrum HosekModel::sun_disc_radiance(const SunState& sun, const ViewDirection&
   if (check_sun(sun.sun()) != SampleStatus::ok) return radiance;
   const double mu = hosek::solar_surface_cosine(safe_acos(cos_angle_between(view, sun.sun())));
   if (mu < 0.0) return radiance;
-  const double elevation = 0.5 * kPi - view.zenith_rad;
+  const auto centres = hosek::solar_centre_radiances(turbidity(), 0.5 * kPi - view.zenith_rad);
   for (std::size_t i = 0; i < terms_.size(); ++i) {
     const WavelengthTerms& w = terms_[i];
     if (!w.in_range) continue;
     const int next = std::min(w.band + 1, hosek::kBandCount - 1);
-    const double centre =
-        (1.0 - w.fraction) * hosek::solar_centre_radiance(w.band, turbidity(), elevation) +
-        w.fraction * hosek::solar_centre_radiance(next, turbidity(), elevation);
+    const double centre = (1.0 - w.fraction) * centres[w.band] + w.fraction * centres[next];
     const double darkening = (1.0 - w.fraction) * hosek::limb_darkening(w.band, mu) +
                              w.fraction * hosek::limb_darkening(next, mu);
     radiance[i] = centre * darkening * w.disc_correction;
@@ -290,10 +288,8 @@ Spectrum HosekModel::compute_sun_irradiance(const SunState& sun, const Viewpoint
       const double elevation = std::asin(std::clamp(sin_elevation, -1.0, 1.0));
       Node node;
       node.weight = w_mu * s * s * mu / cos_gamma * (2.0 * kPi / kAngularNodes);
-      for (int b = 0; b < hosek::kBandCount; ++b) {
-        node.centre[b] = hosek::solar_centre_radiance(b, t, elevation);
-        node.darkening[b] = hosek::limb_darkening(b, mu);
-      }
+      node.centre = hosek::solar_centre_radiances(t, elevation);
+      for (int b = 0; b < hosek::kBandCount; ++b) node.darkening[b] = hosek::limb_darkening(b, mu);
       nodes.push_back(node);
     }
   }

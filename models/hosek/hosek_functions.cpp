@@ -72,8 +72,10 @@ ViewTerms view_terms(double cos_view_zenith, double cos_gamma) {
   return v;
 }
 
-double solar_centre_radiance(int band, double turbidity, double solar_elevation_rad) {
-  if (!(solar_elevation_rad >= 0.0)) return 0.0;  // the disc centre is below the horizon
+std::array<double, kBandCount> solar_centre_radiances(double turbidity,
+                                                      double solar_elevation_rad) {
+  std::array<double, kBandCount> radiance{};
+  if (!(solar_elevation_rad >= 0.0)) return radiance;  // the disc centre is below the horizon
   const double elevation = std::min(solar_elevation_rad, 0.5 * kPi);
   // Turbidity knots as in the authors' code: turbidity 10 is the upper end of [9, 10].
   const double t = std::clamp(turbidity, 1.0, static_cast<double>(kTurbidityCount));
@@ -87,11 +89,19 @@ double solar_centre_radiance(int band, double turbidity, double solar_elevation_
       static_cast<int>(std::cbrt(elevation / (0.5 * kPi)) * kSolarSegments), kSolarSegments - 1);
   const double start = std::pow(static_cast<double>(segment) / kSolarSegments, 3.0) * (0.5 * kPi);
   const double x = elevation - start;
-  const auto cubic = [&](int turbidity_index) {
-    const auto& c = Tables::get().solar[band][turbidity_index][segment];
-    return ((c[0] * x + c[1]) * x + c[2]) * x + c[3];
-  };
-  return (1.0 - fraction) * cubic(low) + fraction * cubic(low + 1);
+  const auto& solar = Tables::get().solar;
+  for (int band = 0; band < kBandCount; ++band) {
+    const auto cubic = [&](int turbidity_index) {
+      const auto& c = solar[band][turbidity_index][segment];
+      return ((c[0] * x + c[1]) * x + c[2]) * x + c[3];
+    };
+    radiance[band] = (1.0 - fraction) * cubic(low) + fraction * cubic(low + 1);
+  }
+  return radiance;
+}
+
+double solar_centre_radiance(int band, double turbidity, double solar_elevation_rad) {
+  return solar_centre_radiances(turbidity, solar_elevation_rad)[band];
 }
 
 double limb_darkening(int band, double mu) {

@@ -70,6 +70,8 @@ inline constexpr double kStudySunSolidAngleSr = 6.87e-5;
 // a piecewise cubic in elevation over 45 pieces equally spaced in elevation^(1/3),
 // interpolated linearly in turbidity.
 double solar_centre_radiance(int band, double turbidity, double solar_elevation_rad);
+// The same for all bands at once.
+std::array<double, kBandCount> solar_centre_radiances(double turbidity, double solar_elevation_rad);
 
 // Limb darkening of band b at cosine mu on the solar surface (1 at the disc centre).
 double limb_darkening(int band, double mu);
