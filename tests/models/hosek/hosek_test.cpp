@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "models/colour/colour_spaces.h"
@@ -431,6 +432,27 @@ TEST(Hosek, TiltedPlaneSkyIrradianceIsWithinHalfAPercentOfAFineRule) {
   const auto sun = model->prepare_sun(sun_at(30.0));
   const SpectralSample down = model->sky_irradiance(*sun, {}, {kPi, 0.0});
   for (double v : down.value) EXPECT_EQ(v, 0.0);
+}
+
+TEST(Hosek, ConcurrentQueriesOnOneModelAgreeWithSerialOnes) {
+  // The model and its sun states are immutable: threads share them without locks.
+  const auto model = make_hosek();
+  const auto sun = model->prepare_sun(sun_at(35.0));
+  std::vector<ViewDirection> views;
+  for (int i = 0; i < 64; ++i)
+    views.push_back({degrees_to_radians(1.3 * i), degrees_to_radians(5.7 * i)});
+  SpectralBatch serial;
+  model->sky_radiance(*sun, {}, views, serial);
+  std::vector<SpectralBatch> results(4);
+  std::vector<std::thread> threads;
+  for (auto& result : results) {
+    threads.emplace_back([&model, &views, &result] {
+      const auto own_sun = model->prepare_sun(sun_at(35.0));
+      for (int repeat = 0; repeat < 20; ++repeat) model->sky_radiance(*own_sun, {}, views, result);
+    });
+  }
+  for (auto& thread : threads) thread.join();
+  for (const auto& result : results) EXPECT_EQ(result.values, serial.values);
 }
 
 }  // namespace
