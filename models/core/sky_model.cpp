@@ -137,10 +137,15 @@ void SkyModel::sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
       out.status[index[k]] = partial.status[k];
     }
   }
+  // Which wavelengths the model answers, decided once per batch rather than once per view.
+  std::vector<std::size_t> unanswered;
+  for (std::size_t w = 0; w < n_wavelengths; ++w) {
+    if (!answers_wavelength(w)) unanswered.push_back(w);
+  }
   for (std::size_t i = 0; i < views.size(); ++i) {
     auto spectrum = out.spectrum(i);
     if (out.status[i] == SampleStatus::ok) {
-      zero_out_of_range(*this, spectrum);
+      for (std::size_t w : unanswered) spectrum[w] = 0.0;
       out.status[i] = sanitize(spectrum);
     }
     if (out.status[i] != SampleStatus::ok) std::fill(spectrum.begin(), spectrum.end(), 0.0);

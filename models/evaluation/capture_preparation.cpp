@@ -23,8 +23,11 @@ void compute_sun_position(MeasuredCapture& capture, const CapturePreparation& pr
   capture.sun_zenith_computed_deg = sun.zenith_deg;
   capture.sun_azimuth_computed_deg = sun.azimuth_deg;
   char step[200];
-  std::snprintf(step, sizeof step, "sun position from SPA (%s refraction, delta T %.1f s): zenith %.3f deg, azimuth %.3f deg",
-                preparation.refraction ? "with" : "no", preparation.delta_t_s, sun.zenith_deg, sun.azimuth_deg);
+  std::snprintf(
+      step, sizeof step,
+      "sun position from SPA (%s refraction, delta T %.1f s): zenith %.3f deg, azimuth %.3f deg",
+      preparation.refraction ? "with" : "no", preparation.delta_t_s, sun.zenith_deg,
+      sun.azimuth_deg);
   capture.processing_steps.emplace_back(step);
 }
 
@@ -38,7 +41,8 @@ void prepare_capture(MeasuredCapture& capture, const CapturePreparation& prepara
     capture.sun_azimuth_estimated_deg = estimate.azimuth_deg;
     char step[200];
     std::snprintf(step, sizeof step,
-                  "sun azimuth estimated from mirror symmetry: %.3f deg (computed %.3f deg, %d candidates, +-%.1f deg "
+                  "sun azimuth estimated from mirror symmetry: %.3f deg (computed %.3f deg, %d "
+                  "candidates, +-%.1f deg "
                   "in %.2f deg steps)",
                   estimate.azimuth_deg, capture.sun_azimuth_computed_deg, estimate.candidates,
                   preparation.search.half_range_deg, preparation.search.step_deg);

@@ -35,10 +35,10 @@ std::array<std::vector<std::size_t>, kConcentricRingCount> arrange_concentric_ri
   for (int k = 0; k < kConcentricRingCount; ++k) {
     for (std::size_t m = 0; m < rings[k].size(); ++m) {
       if (rings[k][m] == kUnset)
-        throw std::invalid_argument("no sample on ring " + std::to_string(k) + " at azimuth " +
-                                    std::to_string(360.0 * static_cast<double>(m) /
-                                                   static_cast<double>(rings[k].size())) +
-                                    " deg");
+        throw std::invalid_argument(
+            "no sample on ring " + std::to_string(k) + " at azimuth " +
+            std::to_string(360.0 * static_cast<double>(m) / static_cast<double>(rings[k].size())) +
+            " deg");
     }
   }
   return rings;

@@ -26,7 +26,7 @@
 
 namespace clearsky {
 
-constexpr int kConcentricRingCount = 5;      // rings 0 (zenith) .. 4 (lowest)
+constexpr int kConcentricRingCount = 5;       // rings 0 (zenith) .. 4 (lowest)
 constexpr double kConcentricRingScale = 4.5;  // ring k at disk radius k / 4.5
 
 // Zenith angle (radians) of ring k of the concentric layout.
@@ -34,7 +34,9 @@ inline double concentric_ring_zenith_rad(int ring) {
   const double r = ring / kConcentricRingScale;
   return safe_acos(1.0 - r * r);
 }
-inline std::size_t concentric_ring_size(int ring) { return ring == 0 ? 1 : 8 * static_cast<std::size_t>(ring); }
+inline std::size_t concentric_ring_size(int ring) {
+  return ring == 0 ? 1 : 8 * static_cast<std::size_t>(ring);
+}
 
 // For each ring, the indices (into samples) of its samples by increasing clockwise azimuth.
 // Throws std::invalid_argument when the samples are not the 81 directions of the layout
@@ -52,7 +54,8 @@ class ConcentricSkyInterpolant {
     for (int k = 0; k < kConcentricRingCount; ++k) {
       if (rings_[k].size() != concentric_ring_size(k))
         throw std::invalid_argument("concentric interpolant: ring " + std::to_string(k) +
-                                    " needs " + std::to_string(concentric_ring_size(k)) + " values");
+                                    " needs " + std::to_string(concentric_ring_size(k)) +
+                                    " values");
     }
   }
 
@@ -63,8 +66,9 @@ class ConcentricSkyInterpolant {
     double u = kConcentricRingScale * safe_sqrt(1.0 - cos_zenith);
     const int ring = static_cast<int>(std::floor(u));
     u -= ring;
-    return catmull_rom(u, ring_value(ring - 1, view.azimuth_rad), ring_value(ring, view.azimuth_rad),
-                       ring_value(ring + 1, view.azimuth_rad), ring_value(ring + 2, view.azimuth_rad));
+    return catmull_rom(u, ring_value(ring - 1, view.azimuth_rad),
+                       ring_value(ring, view.azimuth_rad), ring_value(ring + 1, view.azimuth_rad),
+                       ring_value(ring + 2, view.azimuth_rad));
   }
 
  private:
@@ -93,7 +97,8 @@ class ConcentricSkyInterpolant {
     const double m = std::floor(u);
     u -= m;
     const long i = static_cast<long>(m);
-    return catmull_rom(u, sample(ring, i - 1), sample(ring, i), sample(ring, i + 1), sample(ring, i + 2));
+    return catmull_rom(u, sample(ring, i - 1), sample(ring, i), sample(ring, i + 1),
+                       sample(ring, i + 2));
   }
 
   // Change per ring step at the zenith in the direction of azimuth: the gradient estimated

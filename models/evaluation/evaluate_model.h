@@ -24,28 +24,28 @@ struct EvaluationOptions {
   double max_wavelength_nm = 720.0;
   bool use_estimated_sun_azimuth = true;  // false: the computed azimuth
   double viewer_altitude_m = 0.0;
-  PrecomputeContext context;      // for the model's precomputation
-  unsigned capture_threads = 0;   // captures evaluated in parallel; 0: all cores
+  PrecomputeContext context;     // for the model's precomputation
+  unsigned capture_threads = 0;  // captures evaluated in parallel; 0: all cores
 };
 
 struct CaptureEvaluation {
   std::string label;
-  std::string time_iso;           // local time with offset
+  std::string time_iso;  // local time with offset
   double unix_time_utc_s = 0;
-  double sun_zenith_deg = 0;      // as given to the model
-  double sun_azimuth_deg = 0;     // as given to the model (clockwise from North)
-  double rmse = 0;                // mW/(m2.sr.nm)
+  double sun_zenith_deg = 0;   // as given to the model
+  double sun_azimuth_deg = 0;  // as given to the model (clockwise from North)
+  double rmse = 0;             // mW/(m2.sr.nm)
   std::size_t values_compared = 0;
 };
 
 struct EvaluationResult {
   std::string model_id;
   std::string model_version;
-  double rmse = 0;                // mW/(m2.sr.nm), over all captures
-  std::vector<CaptureEvaluation> captures;   // in the order given
-  std::vector<double> wavelengths_nm;        // the wavelengths compared
+  double rmse = 0;                          // mW/(m2.sr.nm), over all captures
+  std::vector<CaptureEvaluation> captures;  // in the order given
+  std::vector<double> wavelengths_nm;       // the wavelengths compared
   double precompute_seconds = 0;
-  double evaluate_seconds = 0;    // sun preparation and queries of all captures
+  double evaluate_seconds = 0;  // sun preparation and queries of all captures
 };
 
 // Precomputes the model (timed) and evaluates it. Throws std::invalid_argument for an
@@ -56,7 +56,8 @@ EvaluationResult evaluate_model(const ModelFactory& factory, const ModelConfig& 
                                 const EvaluationOptions& options = {});
 
 // Evaluates an already built model (precompute_seconds = 0).
-EvaluationResult evaluate_sky_model(const SkyModel& model, std::span<const MeasuredCapture> captures,
+EvaluationResult evaluate_sky_model(const SkyModel& model,
+                                    std::span<const MeasuredCapture> captures,
                                     const EvaluationOptions& options = {});
 
 }  // namespace clearsky

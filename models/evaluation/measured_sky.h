@@ -37,8 +37,8 @@ enum SampleQualityFlag : std::uint32_t {
 };
 
 struct MeasuredSample {
-  int index = 0;         // position in the instrument's scan sequence (Kider: file index 0..80)
-  ViewDirection view;    // radians, azimuth clockwise from North
+  int index = 0;       // position in the instrument's scan sequence (Kider: file index 0..80)
+  ViewDirection view;  // radians, azimuth clockwise from North
   TabulatedSpectrum radiance;  // W/(m2.sr.nm) against wavelength (nm)
   std::uint32_t quality_flags = 0;
 };
@@ -46,9 +46,9 @@ struct MeasuredSample {
 constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
 
 struct MeasuredCapture {
-  std::string label;              // e.g. "2013-05-27___09.30.00" (the Kider archive name)
-  double unix_time_utc_s = 0;     // instant of the capture (seconds since 1970-01-01T00:00Z)
-  int utc_offset_minutes = 0;     // local time of the site = UTC + offset (EDT: -240)
+  std::string label;           // e.g. "2013-05-27___09.30.00" (the Kider archive name)
+  double unix_time_utc_s = 0;  // instant of the capture (seconds since 1970-01-01T00:00Z)
+  int utc_offset_minutes = 0;  // local time of the site = UTC + offset (EDT: -240)
   SiteLocation site;
   std::vector<MeasuredSample> samples;  // in scan order
   // Sun position from the time and place (degrees; NaN until computed), and the sun azimuth

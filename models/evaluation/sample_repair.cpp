@@ -29,7 +29,8 @@ int repair_defective_samples(MeasuredCapture& capture) {
   constexpr double kSameRing = 0.01 * kDegree;
   int repaired = 0;
   for (MeasuredSample& target : capture.samples) {
-    if ((target.quality_flags & kSampleKnownDefective) == 0 || (target.quality_flags & kSampleRepaired) != 0)
+    if ((target.quality_flags & kSampleKnownDefective) == 0 ||
+        (target.quality_flags & kSampleRepaired) != 0)
       continue;
     const MeasuredSample* after = nullptr;   // nearest clockwise
     const MeasuredSample* before = nullptr;  // nearest counter-clockwise

@@ -22,9 +22,11 @@ SunAzimuthEstimate estimate_sun_azimuth(const MeasuredCapture& capture, double c
   std::array<std::vector<double>, kConcentricRingCount> integrals;
   for (int k = 0; k < kConcentricRingCount; ++k) {
     for (std::size_t s : rings[k]) {
-      const Spectrum values = capture.samples[s].radiance.resample(grid, Resampling::point, OutOfRange::hold_end_values);
+      const Spectrum values = capture.samples[s].radiance.resample(grid, Resampling::point,
+                                                                   OutOfRange::hold_end_values);
       double integral = 0;
-      for (std::size_t i = 0; i < grid.size(); ++i) integral += values[i] * grid.integration_weight_nm(i);
+      for (std::size_t i = 0; i < grid.size(); ++i)
+        integral += values[i] * grid.integration_weight_nm(i);
       integrals[k].push_back(integral);
     }
   }

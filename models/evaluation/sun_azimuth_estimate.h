@@ -21,9 +21,9 @@ struct SunAzimuthSearch {
 };
 
 struct SunAzimuthEstimate {
-  double azimuth_deg = 0;      // clockwise from North, in [0, 360)
-  double symmetry_error = 0;   // the minimal error, W/(m2.sr) summed over the 1024 directions
-  int candidates = 0;          // number of azimuths tried
+  double azimuth_deg = 0;     // clockwise from North, in [0, 360)
+  double symmetry_error = 0;  // the minimal error, W/(m2.sr) summed over the 1024 directions
+  int candidates = 0;         // number of azimuths tried
 };
 
 // Estimate around computed_azimuth_deg for a capture of the 81-direction layout (repair its

@@ -27,7 +27,8 @@ std::string_view next_token(std::string_view& s) {
     return {};
   }
   const auto end = s.find_first_of(" \t", begin);
-  const std::string_view token = s.substr(begin, end == std::string_view::npos ? s.size() - begin : end - begin);
+  const std::string_view token =
+      s.substr(begin, end == std::string_view::npos ? s.size() - begin : end - begin);
   s = end == std::string_view::npos ? std::string_view{} : s.substr(end);
   return token;
 }
@@ -35,14 +36,17 @@ std::string_view next_token(std::string_view& s) {
 std::optional<double> parse_number(std::string_view token) {
   double value = 0;
   const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-  if (error != std::errc{} || end != token.data() + token.size() || !std::isfinite(value)) return std::nullopt;
+  if (error != std::errc{} || end != token.data() + token.size() || !std::isfinite(value))
+    return std::nullopt;
   return value;
 }
 
 }  // namespace
 
 KiderFormatError::KiderFormatError(const std::string& source, long line, const std::string& what)
-    : std::runtime_error(source + ":" + std::to_string(line) + ": " + what), source_(source), line_(line) {}
+    : std::runtime_error(source + ":" + std::to_string(line) + ": " + what),
+      source_(source),
+      line_(line) {}
 
 std::optional<KiderFileName> parse_kider_file_name(std::string_view base_name) {
   static const std::regex pattern(
@@ -75,13 +79,15 @@ ViewDirection kider_view_direction(double azimuth_ccw_deg, double elevation_deg)
 TabulatedSpectrum read_kider_spectrum(std::istream& in, const std::string& source) {
   std::string line;
   long line_number = 0;
-  if (!std::getline(in, line)) throw KiderFormatError(source, 1, "empty file (expected a header line)");
+  if (!std::getline(in, line))
+    throw KiderFormatError(source, 1, "empty file (expected a header line)");
   ++line_number;
   {
     std::string_view header = trim(line);
     std::string_view probe = header;
     if (header.empty() || parse_number(next_token(probe)))
-      throw KiderFormatError(source, line_number, "expected a header line, found '" + std::string(header) + "'");
+      throw KiderFormatError(source, line_number,
+                             "expected a header line, found '" + std::string(header) + "'");
   }
   std::vector<double> wavelengths, values;
   wavelengths.reserve(2151);
@@ -96,10 +102,12 @@ TabulatedSpectrum read_kider_spectrum(std::istream& in, const std::string& sourc
     const auto w = parse_number(w_token);
     const auto v = v_token.empty() ? std::nullopt : parse_number(v_token);
     if (!w || !v || !next_token(rest).empty())
-      throw KiderFormatError(source, line_number,
-                             "expected two numbers 'wavelength_nm radiance', found '" + std::string(trim(line)) + "'");
+      throw KiderFormatError(
+          source, line_number,
+          "expected two numbers 'wavelength_nm radiance', found '" + std::string(trim(line)) + "'");
     if (!wavelengths.empty() && !(*w > wavelengths.back()))
-      throw KiderFormatError(source, line_number, "wavelength " + std::string(w_token) + " nm does not increase");
+      throw KiderFormatError(source, line_number,
+                             "wavelength " + std::string(w_token) + " nm does not increase");
     wavelengths.push_back(*w);
     values.push_back(*v);
     last_data_line = line_number;
@@ -111,32 +119,38 @@ TabulatedSpectrum read_kider_spectrum(std::istream& in, const std::string& sourc
                                   ? std::string("no data rows")
                                   : "rows cover " + std::to_string(wavelengths.front()) + ".." +
                                         std::to_string(wavelengths.back()) + " nm";
-    throw KiderFormatError(source, last_data_line, "short file: " + found + ", expected 350..2500 nm");
+    throw KiderFormatError(source, last_data_line,
+                           "short file: " + found + ", expected 350..2500 nm");
   }
   return TabulatedSpectrum(std::move(wavelengths), std::move(values));
 }
 
-MeasuredCapture assemble_kider_capture(std::vector<KiderSampleFile> files, const KiderImportOptions& options) {
+MeasuredCapture assemble_kider_capture(std::vector<KiderSampleFile> files,
+                                       const KiderImportOptions& options) {
   if (files.empty()) throw std::invalid_argument("a Kider capture needs its 81 files, none given");
   const std::string label = files.front().name.capture_label;
-  std::sort(files.begin(), files.end(),
-            [](const KiderSampleFile& a, const KiderSampleFile& b) { return a.name.index < b.name.index; });
+  std::sort(files.begin(), files.end(), [](const KiderSampleFile& a, const KiderSampleFile& b) {
+    return a.name.index < b.name.index;
+  });
   for (std::size_t i = 0; i < files.size(); ++i) {
     const KiderSampleFile& f = files[i];
     if (f.name.capture_label != label)
-      throw std::invalid_argument("capture " + label + ": file " + f.source + " belongs to capture " + f.name.capture_label);
+      throw std::invalid_argument("capture " + label + ": file " + f.source +
+                                  " belongs to capture " + f.name.capture_label);
     if (i > 0 && files[i - 1].name.index == f.name.index)
       throw std::invalid_argument("capture " + label + ": sample " + std::to_string(f.name.index) +
                                   " appears twice (" + files[i - 1].source + ", " + f.source + ")");
   }
   std::vector<int> missing;
   for (int index = 0; index < kKiderSampleCount; ++index) {
-    if (!std::any_of(files.begin(), files.end(), [&](const KiderSampleFile& f) { return f.name.index == index; }))
+    if (!std::any_of(files.begin(), files.end(),
+                     [&](const KiderSampleFile& f) { return f.name.index == index; }))
       missing.push_back(index);
   }
   if (!missing.empty() || files.size() != kKiderSampleCount) {
     std::string list;
-    for (std::size_t i = 0; i < missing.size() && i < 10; ++i) list += (i ? ", " : "") + std::to_string(missing[i]);
+    for (std::size_t i = 0; i < missing.size() && i < 10; ++i)
+      list += (i ? ", " : "") + std::to_string(missing[i]);
     throw std::invalid_argument("capture " + label + ": has " + std::to_string(files.size()) +
                                 " sample files, expected the 81 scan indices 0..80" +
                                 (missing.empty() ? std::string() : "; missing " + list));

@@ -30,11 +30,11 @@ class KiderFormatError : public std::runtime_error {
 };
 
 struct KiderFileName {
-  std::string capture_label;  // "2013-05-27___09.30.00"
+  std::string capture_label;                                           // "2013-05-27___09.30.00"
   int year = 0, month = 0, day = 0, hour = 0, minute = 0, second = 0;  // local time of the site
-  int index = 0;                 // scan index 0..80
-  double azimuth_ccw_deg = 0;    // as written: counter-clockwise from North
-  double elevation_deg = 0;      // above the horizon
+  int index = 0;                                                       // scan index 0..80
+  double azimuth_ccw_deg = 0;  // as written: counter-clockwise from North
+  double elevation_deg = 0;    // above the horizon
 };
 
 // Decodes a file's base name; nullopt when it is not a Kider .asd.rad.txt name (the archives
@@ -69,7 +69,8 @@ struct KiderImportOptions {
 // Assembles the files of one capture: exactly the scan indices 0..80 once each, ordered by
 // index; sample 0 (North, lowest ring) is flagged kSampleKnownDefective (kept as measured).
 // Throws std::invalid_argument naming the capture when samples are missing or repeated.
-MeasuredCapture assemble_kider_capture(std::vector<KiderSampleFile> files, const KiderImportOptions& options);
+MeasuredCapture assemble_kider_capture(std::vector<KiderSampleFile> files,
+                                       const KiderImportOptions& options);
 
 constexpr int kKiderSampleCount = 81;
 

@@ -76,9 +76,10 @@ ImportReport import_kider(Database& db, const KiderImportRequest& request) {
         continue;
       }
       if (const auto existing = captures.find_by_label(dataset_id, capture.label))
-        throw std::runtime_error(d.source + ": capture " + capture.label + " is already in dataset '" +
-                                 request.dataset_name + "' with different content (hash " + existing->second +
-                                 ", new " + hash + ")");
+        throw std::runtime_error(d.source + ": capture " + capture.label +
+                                 " is already in dataset '" + request.dataset_name +
+                                 "' with different content (hash " + existing->second + ", new " +
+                                 hash + ")");
       compute_sun_position(capture);
       captures.insert(dataset_id, capture, hash, d.source);
       report.added.push_back(capture.label);

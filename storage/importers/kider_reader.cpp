@@ -29,7 +29,9 @@ std::string base_name_of(const std::string& path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-bool is_radiance_file(const std::string& path) { return parse_kider_file_name(base_name_of(path)).has_value(); }
+bool is_radiance_file(const std::string& path) {
+  return parse_kider_file_name(base_name_of(path)).has_value();
+}
 
 std::vector<KiderRawFile> read_archive_files(const std::filesystem::path& path) {
   std::unique_ptr<archive, ArchiveDeleter> reader(archive_read_new());
@@ -45,23 +47,26 @@ std::vector<KiderRawFile> read_archive_files(const std::filesystem::path& path) 
     const int status = archive_read_next_header(reader.get(), &entry);
     if (status == ARCHIVE_EOF) break;
     if (status != ARCHIVE_OK && status != ARCHIVE_WARN)
-      throw std::runtime_error(name + ": corrupt or truncated archive: " + error_text(reader.get()));
+      throw std::runtime_error(name +
+                               ": corrupt or truncated archive: " + error_text(reader.get()));
     if (archive_entry_filetype(entry) != AE_IFREG) continue;
     const char* entry_path = archive_entry_pathname(entry);
     const std::string inner = entry_path ? entry_path : "";
     if (!is_radiance_file(inner)) continue;
     std::string bytes;
-    if (archive_entry_size_is_set(entry)) bytes.reserve(static_cast<std::size_t>(archive_entry_size(entry)));
+    if (archive_entry_size_is_set(entry))
+      bytes.reserve(static_cast<std::size_t>(archive_entry_size(entry)));
     char buffer[1 << 16];
     for (;;) {
       const la_ssize_t n = archive_read_data(reader.get(), buffer, sizeof buffer);
       if (n == 0) break;
       if (n < 0)
-        throw std::runtime_error(name + ": " + inner + ": corrupt or truncated archive: " +
-                                 error_text(reader.get()));
+        throw std::runtime_error(name + ": " + inner +
+                                 ": corrupt or truncated archive: " + error_text(reader.get()));
       bytes.append(buffer, static_cast<std::size_t>(n));
     }
-    if (archive_entry_size_is_set(entry) && bytes.size() != static_cast<std::size_t>(archive_entry_size(entry)))
+    if (archive_entry_size_is_set(entry) &&
+        bytes.size() != static_cast<std::size_t>(archive_entry_size(entry)))
       throw std::runtime_error(name + ": " + inner + ": truncated archive entry");
     files.push_back({inner, std::move(bytes)});
   }
@@ -87,11 +92,14 @@ std::vector<KiderRawFile> read_folder_files(const std::filesystem::path& folder)
 }  // namespace
 
 std::vector<KiderRawFile> read_kider_raw_files(const std::filesystem::path& path) {
-  if (!std::filesystem::exists(path)) throw std::runtime_error(path.string() + ": no such file or folder");
+  if (!std::filesystem::exists(path))
+    throw std::runtime_error(path.string() + ": no such file or folder");
   std::vector<KiderRawFile> files =
       std::filesystem::is_directory(path) ? read_folder_files(path) : read_archive_files(path);
-  std::sort(files.begin(), files.end(), [](const KiderRawFile& a, const KiderRawFile& b) { return a.path < b.path; });
-  if (files.empty()) throw std::runtime_error(path.string() + ": no Kider .asd.rad.txt files found");
+  std::sort(files.begin(), files.end(),
+            [](const KiderRawFile& a, const KiderRawFile& b) { return a.path < b.path; });
+  if (files.empty())
+    throw std::runtime_error(path.string() + ": no Kider .asd.rad.txt files found");
   return files;
 }
 
@@ -117,11 +125,13 @@ std::vector<MeasuredCapture> read_kider_archive(const std::filesystem::path& arc
   return decode_kider_files(read_archive_files(archive_path), archive_path.string(), options);
 }
 
-std::vector<MeasuredCapture> read_kider_folder(const std::filesystem::path& folder, const KiderImportOptions& options) {
+std::vector<MeasuredCapture> read_kider_folder(const std::filesystem::path& folder,
+                                               const KiderImportOptions& options) {
   return decode_kider_files(read_folder_files(folder), folder.string(), options);
 }
 
-std::vector<MeasuredCapture> read_kider_path(const std::filesystem::path& path, const KiderImportOptions& options) {
+std::vector<MeasuredCapture> read_kider_path(const std::filesystem::path& path,
+                                             const KiderImportOptions& options) {
   return decode_kider_files(read_kider_raw_files(path), path.string(), options);
 }
 

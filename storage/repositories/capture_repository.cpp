@@ -8,16 +8,18 @@
 
 namespace clearsky::storage {
 
-std::optional<std::int64_t> CaptureRepository::find_by_hash(std::int64_t dataset_id, const std::string& content_hash) {
+std::optional<std::int64_t> CaptureRepository::find_by_hash(std::int64_t dataset_id,
+                                                            const std::string& content_hash) {
   auto query = db_.prepare("SELECT id FROM captures WHERE dataset_id = ? AND content_hash = ?");
   query.bind(1, dataset_id).bind(2, content_hash);
   if (!query.step()) return std::nullopt;
   return query.column_int64(0);
 }
 
-std::optional<std::pair<std::int64_t, std::string>> CaptureRepository::find_by_label(std::int64_t dataset_id,
-                                                                                      const std::string& label) {
-  auto query = db_.prepare("SELECT id, content_hash FROM captures WHERE dataset_id = ? AND label = ?");
+std::optional<std::pair<std::int64_t, std::string>> CaptureRepository::find_by_label(
+    std::int64_t dataset_id, const std::string& label) {
+  auto query =
+      db_.prepare("SELECT id, content_hash FROM captures WHERE dataset_id = ? AND label = ?");
   query.bind(1, dataset_id).bind(2, label);
   if (!query.step()) return std::nullopt;
   return std::make_pair(query.column_int64(0), query.column_text(1));
@@ -26,8 +28,10 @@ std::optional<std::pair<std::int64_t, std::string>> CaptureRepository::find_by_l
 std::int64_t CaptureRepository::insert(std::int64_t dataset_id, const MeasuredCapture& capture,
                                        const std::string& content_hash, const std::string& source) {
   auto insert_capture = db_.prepare(
-      "INSERT INTO captures (dataset_id, label, time_utc_s, utc_offset_minutes, latitude_deg, longitude_deg,"
-      " elevation_m, sun_zenith_computed_deg, sun_azimuth_computed_deg, sun_azimuth_estimated_deg, content_hash,"
+      "INSERT INTO captures (dataset_id, label, time_utc_s, utc_offset_minutes, latitude_deg, "
+      "longitude_deg,"
+      " elevation_m, sun_zenith_computed_deg, sun_azimuth_computed_deg, sun_azimuth_estimated_deg, "
+      "content_hash,"
       " source, imported_utc) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
   insert_capture.bind(1, dataset_id)
       .bind(2, capture.label)
@@ -45,7 +49,8 @@ std::int64_t CaptureRepository::insert(std::int64_t dataset_id, const MeasuredCa
   insert_capture.run();
   const std::int64_t capture_id = db_.last_insert_rowid();
   auto insert_sample = db_.prepare(
-      "INSERT INTO samples (capture_id, scan_index, view_zenith_rad, view_azimuth_rad, wavelengths_nm, radiance,"
+      "INSERT INTO samples (capture_id, scan_index, view_zenith_rad, view_azimuth_rad, "
+      "wavelengths_nm, radiance,"
       " quality_flags) VALUES (?, ?, ?, ?, ?, ?, ?)");
   for (const MeasuredSample& s : capture.samples) {
     insert_sample.reset();
@@ -66,7 +71,8 @@ std::vector<StoredCapture> CaptureRepository::load(std::int64_t dataset_id) {
   std::map<std::int64_t, std::size_t> position;
   auto captures = db_.prepare(
       "SELECT id, label, time_utc_s, utc_offset_minutes, latitude_deg, longitude_deg, elevation_m,"
-      " sun_zenith_computed_deg, sun_azimuth_computed_deg, sun_azimuth_estimated_deg, content_hash, source"
+      " sun_zenith_computed_deg, sun_azimuth_computed_deg, sun_azimuth_estimated_deg, "
+      "content_hash, source"
       " FROM captures WHERE dataset_id = ? ORDER BY time_utc_s, label");
   captures.bind(1, dataset_id);
   while (captures.step()) {
@@ -86,15 +92,18 @@ std::vector<StoredCapture> CaptureRepository::load(std::int64_t dataset_id) {
     result.push_back(std::move(stored));
   }
   auto samples = db_.prepare(
-      "SELECT s.capture_id, s.scan_index, s.view_zenith_rad, s.view_azimuth_rad, s.wavelengths_nm, s.radiance,"
-      " s.quality_flags FROM samples s JOIN captures c ON s.capture_id = c.id WHERE c.dataset_id = ?"
+      "SELECT s.capture_id, s.scan_index, s.view_zenith_rad, s.view_azimuth_rad, s.wavelengths_nm, "
+      "s.radiance,"
+      " s.quality_flags FROM samples s JOIN captures c ON s.capture_id = c.id WHERE c.dataset_id = "
+      "?"
       " ORDER BY s.capture_id, s.scan_index");
   samples.bind(1, dataset_id);
   while (samples.step()) {
     MeasuredSample s;
     s.index = static_cast<int>(samples.column_int64(1));
     s.view = {samples.column_double(2), samples.column_double(3)};
-    s.radiance = TabulatedSpectrum(decode_doubles(samples.column_blob(4)), decode_doubles(samples.column_blob(5)));
+    s.radiance = TabulatedSpectrum(decode_doubles(samples.column_blob(4)),
+                                   decode_doubles(samples.column_blob(5)));
     s.quality_flags = static_cast<std::uint32_t>(samples.column_int64(6));
     result[position.at(samples.column_int64(0))].capture.samples.push_back(std::move(s));
   }

@@ -24,12 +24,14 @@ struct StoredCapture {
 class CaptureRepository {
  public:
   explicit CaptureRepository(Database& db) : db_(db) {}
-  std::optional<std::int64_t> find_by_hash(std::int64_t dataset_id, const std::string& content_hash);
+  std::optional<std::int64_t> find_by_hash(std::int64_t dataset_id,
+                                           const std::string& content_hash);
   // The id and content hash of the capture with this label.
-  std::optional<std::pair<std::int64_t, std::string>> find_by_label(std::int64_t dataset_id, const std::string& label);
+  std::optional<std::pair<std::int64_t, std::string>> find_by_label(std::int64_t dataset_id,
+                                                                    const std::string& label);
   // Inserts a capture and its samples (call inside a Transaction); returns its id.
-  std::int64_t insert(std::int64_t dataset_id, const MeasuredCapture& capture, const std::string& content_hash,
-                      const std::string& source);
+  std::int64_t insert(std::int64_t dataset_id, const MeasuredCapture& capture,
+                      const std::string& content_hash, const std::string& source);
   // Every capture of a dataset with its samples, in time order.
   std::vector<StoredCapture> load(std::int64_t dataset_id);
   void set_estimated_sun_azimuth(std::int64_t capture_id, double azimuth_deg);

@@ -11,12 +11,13 @@ namespace {
 constexpr const char* kSummarySelect =
     "SELECT d.id, d.name, d.format, d.created_utc,"
     " (SELECT COUNT(*) FROM captures c WHERE c.dataset_id = d.id),"
-    " (SELECT COUNT(*) FROM samples s JOIN captures c ON s.capture_id = c.id WHERE c.dataset_id = d.id)"
+    " (SELECT COUNT(*) FROM samples s JOIN captures c ON s.capture_id = c.id WHERE c.dataset_id = "
+    "d.id)"
     " FROM datasets d";
 
 DatasetSummary read_summary(const Statement& row) {
-  return {row.column_int64(0), row.column_text(1), row.column_text(2), row.column_text(3), row.column_int64(4),
-          row.column_int64(5)};
+  return {row.column_int64(0), row.column_text(1),  row.column_text(2),
+          row.column_text(3),  row.column_int64(4), row.column_int64(5)};
 }
 
 }  // namespace
@@ -27,8 +28,8 @@ std::int64_t DatasetRepository::find_or_create(const std::string& name, const st
   query.bind(1, name);
   if (query.step()) {
     if (query.column_text(1) != format)
-      throw std::invalid_argument("dataset '" + name + "' exists with format " + query.column_text(1) + ", not " +
-                                  format);
+      throw std::invalid_argument("dataset '" + name + "' exists with format " +
+                                  query.column_text(1) + ", not " + format);
     return query.column_int64(0);
   }
   auto insert = db_.prepare("INSERT INTO datasets (name, format, created_utc) VALUES (?, ?, ?)");

@@ -8,8 +8,10 @@ namespace clearsky::storage {
 namespace {
 
 constexpr const char* kRunSelect =
-    "SELECT id, dataset_id, job_id, model_id, model_version, parameters, software_version, min_wavelength_nm,"
-    " max_wavelength_nm, started_utc, finished_utc, status, error, rmse, precompute_seconds, evaluate_seconds,"
+    "SELECT id, dataset_id, job_id, model_id, model_version, parameters, software_version, "
+    "min_wavelength_nm,"
+    " max_wavelength_nm, started_utc, finished_utc, status, error, rmse, precompute_seconds, "
+    "evaluate_seconds,"
     " processing_steps FROM evaluation_runs";
 
 std::optional<double> optional_double(const Statement& row, int column) {
@@ -48,8 +50,10 @@ RunRecord read_run(const Statement& row) {
 
 std::int64_t EvaluationRunRepository::start(const NewRun& run) {
   auto statement = db_.prepare(
-      "INSERT INTO evaluation_runs (dataset_id, job_id, model_id, model_version, parameters, software_version,"
-      " min_wavelength_nm, max_wavelength_nm, started_utc, status) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, 'running')");
+      "INSERT INTO evaluation_runs (dataset_id, job_id, model_id, model_version, parameters, "
+      "software_version,"
+      " min_wavelength_nm, max_wavelength_nm, started_utc, status) VALUES (?, ?, ?, ?, ?, ?, ?, ?, "
+      "?, 'running')");
   statement.bind(1, run.dataset_id);
   if (run.job_id)
     statement.bind(2, *run.job_id);
@@ -71,7 +75,8 @@ void EvaluationRunRepository::finish(std::int64_t run_id, double rmse, double pr
                                      const std::vector<RunCaptureResult>& captures) {
   Transaction transaction(db_);
   auto insert = db_.prepare(
-      "INSERT INTO evaluation_capture_results (run_id, capture_id, sun_zenith_deg, sun_azimuth_deg, rmse,"
+      "INSERT INTO evaluation_capture_results (run_id, capture_id, sun_zenith_deg, "
+      "sun_azimuth_deg, rmse,"
       " values_compared) VALUES (?, ?, ?, ?, ?, ?)");
   for (const RunCaptureResult& c : captures) {
     insert.reset();
@@ -84,7 +89,8 @@ void EvaluationRunRepository::finish(std::int64_t run_id, double rmse, double pr
     insert.run();
   }
   auto update = db_.prepare(
-      "UPDATE evaluation_runs SET status = 'succeeded', finished_utc = ?, rmse = ?, precompute_seconds = ?,"
+      "UPDATE evaluation_runs SET status = 'succeeded', finished_utc = ?, rmse = ?, "
+      "precompute_seconds = ?,"
       " evaluate_seconds = ?, processing_steps = ? WHERE id = ?");
   update.bind(1, utc_now_iso8601())
       .bind(2, rmse)
@@ -97,8 +103,8 @@ void EvaluationRunRepository::finish(std::int64_t run_id, double rmse, double pr
 }
 
 void EvaluationRunRepository::fail(std::int64_t run_id, const std::string& error) {
-  auto update =
-      db_.prepare("UPDATE evaluation_runs SET status = 'failed', finished_utc = ?, error = ? WHERE id = ?");
+  auto update = db_.prepare(
+      "UPDATE evaluation_runs SET status = 'failed', finished_utc = ?, error = ? WHERE id = ?");
   update.bind(1, utc_now_iso8601()).bind(2, error).bind(3, run_id);
   update.run();
 }
@@ -109,20 +115,24 @@ std::optional<RunRecord> EvaluationRunRepository::get(std::int64_t run_id) {
   if (!query.step()) return std::nullopt;
   RunRecord run = read_run(query);
   auto results = db_.prepare(
-      "SELECT r.capture_id, c.label, c.time_utc_s, c.utc_offset_minutes, r.sun_zenith_deg, r.sun_azimuth_deg,"
-      " r.rmse, r.values_compared FROM evaluation_capture_results r JOIN captures c ON r.capture_id = c.id"
+      "SELECT r.capture_id, c.label, c.time_utc_s, c.utc_offset_minutes, r.sun_zenith_deg, "
+      "r.sun_azimuth_deg,"
+      " r.rmse, r.values_compared FROM evaluation_capture_results r JOIN captures c ON "
+      "r.capture_id = c.id"
       " WHERE r.run_id = ? ORDER BY c.time_utc_s, c.label");
   results.bind(1, run_id);
   while (results.step()) {
-    run.captures.push_back({results.column_int64(0), results.column_text(1), results.column_double(2),
-                            static_cast<int>(results.column_int64(3)), results.column_double(4),
-                            results.column_double(5), results.column_double(6), results.column_int64(7)});
+    run.captures.push_back({results.column_int64(0), results.column_text(1),
+                            results.column_double(2), static_cast<int>(results.column_int64(3)),
+                            results.column_double(4), results.column_double(5),
+                            results.column_double(6), results.column_int64(7)});
   }
   return run;
 }
 
 std::vector<RunRecord> EvaluationRunRepository::list(std::int64_t dataset_id) {
-  auto query = db_.prepare(std::string(kRunSelect) + " WHERE dataset_id = ? ORDER BY started_utc DESC, id DESC");
+  auto query = db_.prepare(std::string(kRunSelect) +
+                           " WHERE dataset_id = ? ORDER BY started_utc DESC, id DESC");
   query.bind(1, dataset_id);
   std::vector<RunRecord> runs;
   while (query.step()) runs.push_back(read_run(query));

@@ -16,7 +16,7 @@ namespace clearsky::storage {
 
 struct RunCaptureResult {
   std::int64_t capture_id = 0;
-  std::string capture_label;   // filled when read
+  std::string capture_label;      // filled when read
   double capture_time_utc_s = 0;  // filled when read
   int utc_offset_minutes = 0;     // filled when read
   double sun_zenith_deg = 0;
@@ -30,7 +30,7 @@ struct NewRun {
   std::optional<std::int64_t> job_id;
   std::string model_id;
   std::string model_version;
-  std::string parameters;        // ModelConfig::canonical_string()
+  std::string parameters;  // ModelConfig::canonical_string()
   std::string software_version;
   double min_wavelength_nm = 360;
   double max_wavelength_nm = 720;
@@ -47,7 +47,7 @@ struct RunRecord {
   std::string status;  // running, succeeded, failed
   std::optional<std::string> error;
   std::optional<double> rmse, precompute_seconds, evaluate_seconds;
-  std::string processing_steps;  // one step per line
+  std::string processing_steps;            // one step per line
   std::vector<RunCaptureResult> captures;  // filled by get()
 };
 

@@ -7,7 +7,8 @@ namespace clearsky::storage {
 namespace {
 
 constexpr const char* kJobSelect =
-    "SELECT id, name, schedule, dataset_id, models, parameters, paused, created_utc, last_run_utc, next_run_utc"
+    "SELECT id, name, schedule, dataset_id, models, parameters, paused, created_utc, last_run_utc, "
+    "next_run_utc"
     " FROM jobs";
 
 JobRecord read_job(const Statement& row) {
@@ -29,7 +30,8 @@ JobRecord read_job(const Statement& row) {
 
 std::int64_t JobRepository::create(const JobRecord& job) {
   auto statement = db_.prepare(
-      "INSERT INTO jobs (name, schedule, dataset_id, models, parameters, paused, created_utc, next_run_utc)"
+      "INSERT INTO jobs (name, schedule, dataset_id, models, parameters, paused, created_utc, "
+      "next_run_utc)"
       " VALUES (?, ?, ?, ?, ?, ?, ?, ?)");
   statement.bind(1, job.name)
       .bind(2, job.schedule)

@@ -34,7 +34,8 @@ class JobRepository {
   std::vector<JobRecord> list();
   std::optional<JobRecord> get(std::int64_t id);
   bool set_paused(std::int64_t id, bool paused);
-  bool record_run(std::int64_t id, const std::string& last_run_utc, const std::optional<std::string>& next_run_utc);
+  bool record_run(std::int64_t id, const std::string& last_run_utc,
+                  const std::optional<std::string>& next_run_utc);
   bool remove(std::int64_t id);
 
  private:

@@ -11,7 +11,8 @@
 
 namespace clearsky::storage {
 
-static_assert(std::endian::native == std::endian::little, "blob encoding assumes a little-endian host");
+static_assert(std::endian::native == std::endian::little,
+              "blob encoding assumes a little-endian host");
 
 inline std::vector<std::byte> encode_doubles(std::span<const double> values) {
   std::vector<std::byte> bytes(values.size() * sizeof(double));
@@ -20,7 +21,8 @@ inline std::vector<std::byte> encode_doubles(std::span<const double> values) {
 }
 
 inline std::vector<double> decode_doubles(std::span<const std::byte> bytes) {
-  if (bytes.size() % sizeof(double) != 0) throw std::runtime_error("corrupt blob: size is not a multiple of 8 bytes");
+  if (bytes.size() % sizeof(double) != 0)
+    throw std::runtime_error("corrupt blob: size is not a multiple of 8 bytes");
   std::vector<double> values(bytes.size() / sizeof(double));
   if (!values.empty()) std::memcpy(values.data(), bytes.data(), bytes.size());
   return values;

@@ -17,12 +17,14 @@ namespace {
 
 }  // namespace
 
-SqliteError::SqliteError(int code, const std::string& message) : std::runtime_error(message), code_(code) {}
+SqliteError::SqliteError(int code, const std::string& message)
+    : std::runtime_error(message), code_(code) {}
 
 Database Database::open(const std::filesystem::path& path, const DatabaseOptions& options) {
   sqlite3* db = nullptr;
-  const int flags = (options.read_only ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE) |
-                    SQLITE_OPEN_NOMUTEX;
+  const int flags =
+      (options.read_only ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE) |
+      SQLITE_OPEN_NOMUTEX;
   const std::string name = path.string();
   const int code = sqlite3_open_v2(name.c_str(), &db, flags, nullptr);
   Database database(db);  // owns db even when opening failed
@@ -65,7 +67,8 @@ void Database::execute(std::string_view sql) {
 
 Statement Database::prepare(std::string_view sql) {
   sqlite3_stmt* statement = nullptr;
-  const int code = sqlite3_prepare_v2(db_, sql.data(), static_cast<int>(sql.size()), &statement, nullptr);
+  const int code =
+      sqlite3_prepare_v2(db_, sql.data(), static_cast<int>(sql.size()), &statement, nullptr);
   if (code != SQLITE_OK) {
     sqlite3_finalize(statement);
     fail(db_, code, "cannot prepare '" + std::string(sql.substr(0, 80)) + "'");
@@ -83,7 +86,8 @@ int Database::user_version() {
 }
 
 Statement::Statement(Statement&& other) noexcept
-    : db_(std::exchange(other.db_, nullptr)), statement_(std::exchange(other.statement_, nullptr)) {}
+    : db_(std::exchange(other.db_, nullptr)),
+      statement_(std::exchange(other.statement_, nullptr)) {}
 
 Statement& Statement::operator=(Statement&& other) noexcept {
   if (this != &other) {
@@ -108,20 +112,24 @@ Statement& Statement::bind(int index, std::int64_t value) {
 }
 
 Statement& Statement::bind(int index, double value) {
-  check(std::isnan(value) ? sqlite3_bind_null(statement_, index) : sqlite3_bind_double(statement_, index, value),
+  check(std::isnan(value) ? sqlite3_bind_null(statement_, index)
+                          : sqlite3_bind_double(statement_, index, value),
         "bind");
   return *this;
 }
 
 Statement& Statement::bind(int index, std::string_view text) {
-  check(sqlite3_bind_text64(statement_, index, text.data(), text.size(), SQLITE_TRANSIENT, SQLITE_UTF8), "bind");
+  check(sqlite3_bind_text64(statement_, index, text.data(), text.size(), SQLITE_TRANSIENT,
+                            SQLITE_UTF8),
+        "bind");
   return *this;
 }
 
 Statement& Statement::bind_blob(int index, std::span<const std::byte> bytes) {
   // A zero-length blob must still be a blob, not NULL: SQLite needs a non-null pointer.
   static const std::byte empty{};
-  check(sqlite3_bind_blob64(statement_, index, bytes.empty() ? &empty : bytes.data(), bytes.size(), SQLITE_TRANSIENT),
+  check(sqlite3_bind_blob64(statement_, index, bytes.empty() ? &empty : bytes.data(), bytes.size(),
+                            SQLITE_TRANSIENT),
         "bind");
   return *this;
 }
@@ -143,7 +151,8 @@ bool Statement::step() {
 }
 
 void Statement::run() {
-  if (step()) throw SqliteError(SQLITE_MISUSE, "a statement expected to return no rows returned one");
+  if (step())
+    throw SqliteError(SQLITE_MISUSE, "a statement expected to return no rows returned one");
 }
 
 void Statement::reset() {
@@ -151,9 +160,15 @@ void Statement::reset() {
   sqlite3_clear_bindings(statement_);
 }
 
-bool Statement::is_null(int column) const { return sqlite3_column_type(statement_, column) == SQLITE_NULL; }
-std::int64_t Statement::column_int64(int column) const { return sqlite3_column_int64(statement_, column); }
-double Statement::column_double(int column) const { return sqlite3_column_double(statement_, column); }
+bool Statement::is_null(int column) const {
+  return sqlite3_column_type(statement_, column) == SQLITE_NULL;
+}
+std::int64_t Statement::column_int64(int column) const {
+  return sqlite3_column_int64(statement_, column);
+}
+double Statement::column_double(int column) const {
+  return sqlite3_column_double(statement_, column);
+}
 double Statement::column_double_or_nan(int column) const {
   return is_null(column) ? std::nan("") : sqlite3_column_double(statement_, column);
 }
@@ -161,7 +176,9 @@ double Statement::column_double_or_nan(int column) const {
 std::string Statement::column_text(int column) const {
   const auto* text = sqlite3_column_text(statement_, column);
   const int size = sqlite3_column_bytes(statement_, column);
-  return text != nullptr ? std::string(reinterpret_cast<const char*>(text), static_cast<std::size_t>(size)) : std::string();
+  return text != nullptr
+             ? std::string(reinterpret_cast<const char*>(text), static_cast<std::size_t>(size))
+             : std::string();
 }
 
 std::vector<std::byte> Statement::column_blob(int column) const {

@@ -13,8 +13,9 @@ struct TempDir {
   std::filesystem::path path;
   TempDir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path = std::filesystem::temp_directory_path() /
-           ("clearsky_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" + info->name());
+    path =
+        std::filesystem::temp_directory_path() / ("clearsky_" + std::to_string(::getpid()) + "_" +
+                                                  info->test_suite_name() + "_" + info->name());
     std::filesystem::remove_all(path);
     std::filesystem::create_directories(path);
   }

@@ -34,12 +34,14 @@ const Loaded& loaded() {
 
     const auto start = std::chrono::steady_clock::now();
     std::vector<std::vector<MeasuredCapture>> per_archive(archives.size());
-    parallel_for(archives.size(), [&](std::size_t i) { per_archive[i] = storage::read_kider_archive(archives[i]); });
+    parallel_for(archives.size(),
+                 [&](std::size_t i) { per_archive[i] = storage::read_kider_archive(archives[i]); });
     for (auto& captures : per_archive)
       for (auto& capture : captures) result.imported.push_back(std::move(capture));
     const auto imported = std::chrono::steady_clock::now();
     result.prepared = result.imported;
-    parallel_for(result.prepared.size(), [&](std::size_t i) { prepare_capture(result.prepared[i]); });
+    parallel_for(result.prepared.size(),
+                 [&](std::size_t i) { prepare_capture(result.prepared[i]); });
     const auto prepared = std::chrono::steady_clock::now();
     result.timing.import_seconds = std::chrono::duration<double>(imported - start).count();
     result.timing.prepare_seconds = std::chrono::duration<double>(prepared - imported).count();

@@ -27,14 +27,16 @@ TEST(PublicCaptures, FifteenCompleteRepairedCaptures) {
     EXPECT_EQ(c.samples.size(), 81u) << c.label;
     EXPECT_EQ(c.samples[0].quality_flags, kSampleKnownDefective | kSampleRepaired) << c.label;
     EXPECT_EQ(c.processing_steps.size(), 3u) << c.label;
-    std::printf("%s  sun zenith %.3f  azimuth computed %.3f  estimated %.3f (%+.1f)\n", local_time_iso8601(c).c_str(),
-                c.sun_zenith_computed_deg, c.sun_azimuth_computed_deg, c.sun_azimuth_estimated_deg,
+    std::printf("%s  sun zenith %.3f  azimuth computed %.3f  estimated %.3f (%+.1f)\n",
+                local_time_iso8601(c).c_str(), c.sun_zenith_computed_deg,
+                c.sun_azimuth_computed_deg, c.sun_azimuth_estimated_deg,
                 c.sun_azimuth_estimated_deg - c.sun_azimuth_computed_deg);
   }
   EXPECT_EQ(local_time_iso8601(captures.front()), "2013-05-27T09:30:00-04:00");
   EXPECT_EQ(local_time_iso8601(captures.back()), "2013-05-27T13:30:00-04:00");
   // As imported, sample 0 is kept as measured.
-  EXPECT_EQ(testing::public_captures_as_imported()[0].samples[0].quality_flags, kSampleKnownDefective);
+  EXPECT_EQ(testing::public_captures_as_imported()[0].samples[0].quality_flags,
+            kSampleKnownDefective);
   const auto timing = testing::public_captures_timing();
   std::printf("import %.2f s, preparation %.2f s\n", timing.import_seconds, timing.prepare_seconds);
 }

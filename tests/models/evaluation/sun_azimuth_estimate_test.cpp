@@ -17,19 +17,23 @@ ConcentricSkyInterpolant<double> interpolant_of(const MeasuredCapture& capture, 
   const auto rings = arrange_concentric_rings(capture.samples);
   std::array<std::vector<double>, kConcentricRingCount> values;
   for (int k = 0; k < kConcentricRingCount; ++k)
-    for (std::size_t s : rings[k]) values[k].push_back(capture.samples[s].radiance.at(nm, OutOfRange::error));
+    for (std::size_t s : rings[k])
+      values[k].push_back(capture.samples[s].radiance.at(nm, OutOfRange::error));
   return ConcentricSkyInterpolant<double>(std::move(values));
 }
 
 double bump(const ViewDirection& v, double) {
-  return 0.1 + 0.05 * std::cos(v.zenith_rad) + 0.03 * std::sin(v.zenith_rad) * std::cos(v.azimuth_rad - 1.0);
+  return 0.1 + 0.05 * std::cos(v.zenith_rad) +
+         0.03 * std::sin(v.zenith_rad) * std::cos(v.azimuth_rad - 1.0);
 }
 
 TEST(ConcentricSkyInterpolant, ReproducesTheSamplesAndConstants) {
   const MeasuredCapture capture = testing::synthetic_capture(bump);
   const auto sky = interpolant_of(capture, 500);
-  for (const MeasuredSample& s : capture.samples) EXPECT_NEAR(sky(s.view), bump(s.view, 500), 1e-12);
-  const auto flat = interpolant_of(testing::synthetic_capture([](const ViewDirection&, double) { return 0.25; }), 500);
+  for (const MeasuredSample& s : capture.samples)
+    EXPECT_NEAR(sky(s.view), bump(s.view, 500), 1e-12);
+  const auto flat = interpolant_of(
+      testing::synthetic_capture([](const ViewDirection&, double) { return 0.25; }), 500);
   for (double zenith_deg : {0.0, 5.0, 30.0, 60.0, 85.0, 90.0})
     for (double azimuth_deg : {-30.0, 0.0, 77.0, 200.0, 359.0, 400.0})
       EXPECT_NEAR(flat({zenith_deg * kDegree, azimuth_deg * kDegree}), 0.25, 1e-12);
@@ -39,8 +43,8 @@ TEST(ConcentricSkyInterpolant, IsCloseToASmoothSkyBetweenSamples) {
   const auto sky = interpolant_of(testing::synthetic_capture(bump), 500);
   for (double zenith_deg : {3.0, 25.0, 47.0, 70.0, 84.0})
     for (double azimuth_deg : {10.0, 100.0, 190.0, 280.0})
-      EXPECT_NEAR(sky({zenith_deg * kDegree, azimuth_deg * kDegree}), bump({zenith_deg * kDegree, azimuth_deg * kDegree}, 500),
-                  2e-3);
+      EXPECT_NEAR(sky({zenith_deg * kDegree, azimuth_deg * kDegree}),
+                  bump({zenith_deg * kDegree, azimuth_deg * kDegree}, 500), 2e-3);
 }
 
 TEST(ConcentricSkyInterpolant, RefusesAnotherLayout) {
@@ -72,15 +76,19 @@ TEST(SunAzimuthEstimate, FindsTheSymmetryAxisOfASymmetricSky) {
 TEST(SunAzimuthEstimate, CandidatesAreOnTheStepGridAroundTheComputedAzimuth) {
   // The axis 90 (a symmetry axis of the sample layout, so exactly symmetric once interpolated)
   // is a candidate when searching around 96 (96 - 20 + 70 * 0.2).
-  const SunAzimuthEstimate e = estimate_sun_azimuth(testing::synthetic_capture(symmetric_sky(90.0)), 96.0);
+  const SunAzimuthEstimate e =
+      estimate_sun_azimuth(testing::synthetic_capture(symmetric_sky(90.0)), 96.0);
   EXPECT_NEAR(e.azimuth_deg, 90.0, 1e-9);
   EXPECT_NEAR(e.symmetry_error, 0.0, 1e-9);
   // Outside the search range the estimate stops at the nearest end.
-  EXPECT_NEAR(estimate_sun_azimuth(testing::synthetic_capture(symmetric_sky(100.0)), 130.0).azimuth_deg, 110.0, 1e-9);
+  EXPECT_NEAR(
+      estimate_sun_azimuth(testing::synthetic_capture(symmetric_sky(100.0)), 130.0).azimuth_deg,
+      110.0, 1e-9);
 }
 
 TEST(SunAzimuthEstimate, WrapsAroundNorth) {
-  const SunAzimuthEstimate e = estimate_sun_azimuth(testing::synthetic_capture(symmetric_sky(2.0)), 355.0);
+  const SunAzimuthEstimate e =
+      estimate_sun_azimuth(testing::synthetic_capture(symmetric_sky(2.0)), 355.0);
   EXPECT_NEAR(e.azimuth_deg, 2.0, 0.2 + 1e-9);
 }
 

@@ -28,7 +28,8 @@ inline MeasuredCapture synthetic_capture(const SkyFunction& radiance, double sun
     for (std::size_t m = 0; m < n; ++m) {
       MeasuredSample sample;
       sample.index = index++;
-      sample.view = {concentric_ring_zenith_rad(ring), 2.0 * kPi * static_cast<double>(m) / static_cast<double>(n)};
+      sample.view = {concentric_ring_zenith_rad(ring),
+                     2.0 * kPi * static_cast<double>(m) / static_cast<double>(n)};
       std::vector<double> values;
       for (double w : nm) values.push_back(radiance(sample.view, w));
       sample.radiance = TabulatedSpectrum(nm, std::move(values));

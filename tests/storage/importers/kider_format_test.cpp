@@ -12,7 +12,8 @@ namespace clearsky::storage {
 namespace {
 
 TEST(KiderFileName, DecodesTimeIndexAndDirection) {
-  const auto name = parse_kider_file_name("2013-05-27___09.30.00_-_42____195.0___33.749.asd.rad.txt");
+  const auto name =
+      parse_kider_file_name("2013-05-27___09.30.00_-_42____195.0___33.749.asd.rad.txt");
   ASSERT_TRUE(name.has_value());
   EXPECT_EQ(name->capture_label, "2013-05-27___09.30.00");
   EXPECT_EQ(name->year, 2013);
@@ -44,7 +45,8 @@ TEST(KiderViewDirection, CounterClockwiseFileAzimuthBecomesClockwise) {
 TEST(KiderSpectrum, ReadsRowsWithCarriageReturnsAndExponents) {
   std::ostringstream text;
   text << "Wavelength\tfile.asd.rad\r\n";
-  for (int w = 350; w <= 2500; ++w) text << w << "\t " << (w == 351 ? "5.70084191858768E-02" : "0.5") << " \r\n";
+  for (int w = 350; w <= 2500; ++w)
+    text << w << "\t " << (w == 351 ? "5.70084191858768E-02" : "0.5") << " \r\n";
   std::istringstream in(text.str());
   const TabulatedSpectrum s = read_kider_spectrum(in, "file");
   EXPECT_EQ(s.wavelengths_nm().size(), 2151u);
@@ -72,7 +74,9 @@ void expect_error_at(const std::string& text, long line, const std::string& frag
   } catch (const KiderFormatError& e) {
     EXPECT_EQ(e.line(), line) << e.what();
     EXPECT_EQ(e.source(), "sky/a.asd.rad.txt");
-    EXPECT_NE(std::string(e.what()).find("sky/a.asd.rad.txt:" + std::to_string(line) + ": "), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("sky/a.asd.rad.txt:" + std::to_string(line) + ": "),
+              std::string::npos)
+        << e.what();
     EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
   }
 }

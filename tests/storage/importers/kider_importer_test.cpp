@@ -29,9 +29,10 @@ std::filesystem::path archive(const std::string& time) {
 // Everything stored, as text, to compare databases before and after.
 std::string snapshot(Database& db) {
   std::string text;
-  for (const char* sql : {"SELECT id, name, format, created_utc FROM datasets ORDER BY id",
-                          "SELECT id, label, content_hash, imported_utc FROM captures ORDER BY id",
-                          "SELECT id, capture_id, scan_index, length(radiance) FROM samples ORDER BY id"}) {
+  for (const char* sql :
+       {"SELECT id, name, format, created_utc FROM datasets ORDER BY id",
+        "SELECT id, label, content_hash, imported_utc FROM captures ORDER BY id",
+        "SELECT id, capture_id, scan_index, length(radiance) FROM samples ORDER BY id"}) {
     auto q = db.prepare(sql);
     while (q.step()) {
       for (int c = 0; c < 4; ++c) text += q.column_text(c) + "|";
@@ -41,7 +42,8 @@ std::string snapshot(Database& db) {
   return text;
 }
 
-KiderImportRequest request(std::vector<std::filesystem::path> paths, const std::string& dataset = "kider2014") {
+KiderImportRequest request(std::vector<std::filesystem::path> paths,
+                           const std::string& dataset = "kider2014") {
   KiderImportRequest r;
   r.dataset_name = dataset;
   r.paths = std::move(paths);
@@ -51,9 +53,11 @@ KiderImportRequest request(std::vector<std::filesystem::path> paths, const std::
 void write_folder_capture(const std::filesystem::path& folder, int bad_sample) {
   std::filesystem::create_directories(folder);
   for (int i = 0; i < 81; ++i) {
-    std::ofstream out(folder / ("2013-05-27___14.00.00_-_" + std::to_string(i) + "____0.0___12.1151.asd.rad.txt"));
+    std::ofstream out(folder / ("2013-05-27___14.00.00_-_" + std::to_string(i) +
+                                "____0.0___12.1151.asd.rad.txt"));
     out << "Wavelength\tx\n";
-    for (int w = 350; w <= 2500; ++w) out << w << "\t" << (i == bad_sample && w == 360 ? "0.1 0.2" : "0.1") << "\n";
+    for (int w = 350; w <= 2500; ++w)
+      out << w << "\t" << (i == bad_sample && w == 360 ? "0.1 0.2" : "0.1") << "\n";
   }
 }
 
@@ -120,8 +124,10 @@ TEST(KiderImporter, TruncatedArchiveLeavesTheDatabaseUnchanged) {
   const std::string before = snapshot(db);
   std::ifstream in(archive("10.00"), std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::ofstream(dir.path / "cut.7z", std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size() * 3 / 4));
-  EXPECT_THROW(import_kider(db, request({archive("09.45"), dir.path / "cut.7z"})), std::runtime_error);
+  std::ofstream(dir.path / "cut.7z", std::ios::binary)
+      .write(bytes.data(), static_cast<std::streamsize>(bytes.size() * 3 / 4));
+  EXPECT_THROW(import_kider(db, request({archive("09.45"), dir.path / "cut.7z"})),
+               std::runtime_error);
   EXPECT_EQ(snapshot(db), before);
 }
 
@@ -158,7 +164,8 @@ TEST(KiderImporter, ProcessKilledDuringImportLeavesTheDatabaseAsBefore) {
     // The child imports three captures and is killed after writing the second, mid-transaction.
     try {
       Database db = open_database(path);
-      KiderImportRequest interrupted = request({archive("09.45"), archive("10.00"), archive("10.15")});
+      KiderImportRequest interrupted =
+          request({archive("09.45"), archive("10.00"), archive("10.15")});
       interrupted.after_capture_written = [](int written) {
         if (written == 2) ::kill(::getpid(), SIGKILL);
       };

@@ -3,10 +3,10 @@
 #include "storage/importers/kider_reader.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <fstream>
-#include <unistd.h>
 
 #include "models/core/numeric.h"
 #include "tests/support/shared_data.h"
@@ -76,7 +76,8 @@ TEST(KiderReader, TruncatedArchiveIsRefused) {
   std::ifstream in(source, std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const auto truncated = dir.path / "truncated.7z";
-  std::ofstream(truncated, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size() / 2));
+  std::ofstream(truncated, std::ios::binary)
+      .write(bytes.data(), static_cast<std::streamsize>(bytes.size() / 2));
   try {
     read_kider_archive(truncated);
     FAIL() << "truncated archive accepted";
@@ -90,9 +91,11 @@ TEST(KiderReader, FolderWithAMalformedFileIsRefusedNamingFileAndLine) {
   const auto folder = dir.path / "2013-05-27___09.30.00";
   std::filesystem::create_directories(folder);
   for (int i = 0; i < 81; ++i) {
-    std::ofstream out(folder / ("2013-05-27___09.30.00_-_" + std::to_string(i) + "____0.0___12.1151.asd.rad.txt"));
+    std::ofstream out(folder / ("2013-05-27___09.30.00_-_" + std::to_string(i) +
+                                "____0.0___12.1151.asd.rad.txt"));
     out << "Wavelength\tx\n";
-    for (int w = 350; w <= 2500; ++w) out << w << "\t" << (i == 7 && w == 500 ? "x" : "0.1") << "\n";
+    for (int w = 350; w <= 2500; ++w)
+      out << w << "\t" << (i == 7 && w == 500 ? "x" : "0.1") << "\n";
   }
   try {
     read_kider_path(dir.path);

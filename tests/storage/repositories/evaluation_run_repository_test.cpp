@@ -21,7 +21,8 @@ struct Fixture {
   Fixture() {
     migrate(db);
     dataset = DatasetRepository(db).find_or_create("set", "kider2014");
-    MeasuredCapture c = clearsky::testing::synthetic_capture([](const ViewDirection&, double) { return 0.1; });
+    MeasuredCapture c =
+        clearsky::testing::synthetic_capture([](const ViewDirection&, double) { return 0.1; });
     c.label = "2013-05-27___09.30.00";
     capture = CaptureRepository(db).insert(dataset, c, "0123456789abcdef", "test");
   }
@@ -31,7 +32,8 @@ NewRun new_run(std::int64_t dataset) {
   NewRun run;
   run.dataset_id = dataset;
   run.model_id = "preetham";
-  run.model_version = std::string("1");  // (assigning the literal trips a GCC 12 -Wrestrict false positive)
+  run.model_version =
+      std::string("1");  // (assigning the literal trips a GCC 12 -Wrestrict false positive)
   run.parameters = "alpha=0.8;beta=0.04";
   run.software_version = "0.1.0";
   return run;
@@ -106,10 +108,12 @@ TEST(CaptureRepository, RoundTripsCapturesExactly) {
   Fixture f;
   const auto stored = CaptureRepository(f.db).load(f.dataset);
   ASSERT_EQ(stored.size(), 1u);
-  const MeasuredCapture original = clearsky::testing::synthetic_capture([](const ViewDirection&, double) { return 0.1; });
+  const MeasuredCapture original =
+      clearsky::testing::synthetic_capture([](const ViewDirection&, double) { return 0.1; });
   ASSERT_EQ(stored[0].capture.samples.size(), original.samples.size());
   for (std::size_t i = 0; i < original.samples.size(); ++i) {
-    EXPECT_EQ(stored[0].capture.samples[i].radiance.values(), original.samples[i].radiance.values());
+    EXPECT_EQ(stored[0].capture.samples[i].radiance.values(),
+              original.samples[i].radiance.values());
     EXPECT_EQ(stored[0].capture.samples[i].view.zenith_rad, original.samples[i].view.zenith_rad);
   }
   EXPECT_EQ(stored[0].capture.sun_zenith_computed_deg, original.sun_zenith_computed_deg);

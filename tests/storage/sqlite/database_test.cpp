@@ -58,7 +58,10 @@ TEST(Database, BindsAndReadsEveryType) {
   db.execute("CREATE TABLE t (i INTEGER, d REAL, s TEXT, b BLOB, n REAL)");
   const std::vector<double> values = {1.5, -2.25, 1e-300};
   auto insert = db.prepare("INSERT INTO t VALUES (?, ?, ?, ?, ?)");
-  insert.bind(1, std::int64_t{1} << 40).bind(2, 0.125).bind(3, "text").bind_blob(4, encode_doubles(values));
+  insert.bind(1, std::int64_t{1} << 40)
+      .bind(2, 0.125)
+      .bind(3, "text")
+      .bind_blob(4, encode_doubles(values));
   insert.bind(5, std::nan(""));
   insert.run();
   auto q = db.prepare("SELECT i, d, s, b, n FROM t");
@@ -83,10 +86,12 @@ TEST(Database, FileDatabasesUseWalAndForeignKeys) {
   auto fk = db.prepare("PRAGMA foreign_keys");
   ASSERT_TRUE(fk.step());
   EXPECT_EQ(fk.column_int64(0), 1);
-  EXPECT_THROW(db.execute("INSERT INTO captures (dataset_id, label, time_utc_s, utc_offset_minutes, latitude_deg,"
-                          " longitude_deg, elevation_m, content_hash, source, imported_utc)"
-                          " VALUES (999, 'x', 0, 0, 0, 0, 0, 'h', 's', 't')"),
-               SqliteError);
+  EXPECT_THROW(
+      db.execute(
+          "INSERT INTO captures (dataset_id, label, time_utc_s, utc_offset_minutes, latitude_deg,"
+          " longitude_deg, elevation_m, content_hash, source, imported_utc)"
+          " VALUES (999, 'x', 0, 0, 0, 0, 0, 'h', 's', 't')"),
+      SqliteError);
 }
 
 TEST(Migrations, BringAnEmptyDatabaseToTheLatestVersionOnce) {
@@ -100,14 +105,15 @@ TEST(Migrations, BringAnEmptyDatabaseToTheLatestVersionOnce) {
   }
   Database reopened = open_database(dir.path / "m.db");
   EXPECT_EQ(reopened.user_version(), latest_schema_version());
-  for (const char* table : {"datasets", "captures", "samples", "evaluation_runs", "evaluation_capture_results", "jobs"})
+  for (const char* table :
+       {"datasets", "captures", "samples", "evaluation_runs", "evaluation_capture_results", "jobs"})
     EXPECT_EQ(count(reopened, table), 0) << table;
 }
 
 TEST(Migrations, AFailedMigrationLeavesThePreviousVersion) {
   Database db = Database::open(":memory:");
-  const std::vector<std::string_view> steps = {"CREATE TABLE a (x INTEGER);",
-                                               "CREATE TABLE b (y INTEGER); INSERT INTO nowhere VALUES (1);"};
+  const std::vector<std::string_view> steps = {
+      "CREATE TABLE a (x INTEGER);", "CREATE TABLE b (y INTEGER); INSERT INTO nowhere VALUES (1);"};
   EXPECT_THROW(migrate(db, steps), SqliteError);
   EXPECT_EQ(db.user_version(), 1);
   EXPECT_THROW(db.prepare("SELECT * FROM b"), SqliteError);  // rolled back with its version
