@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "models/core/quadrature.h"
+#include "models/core/sky_plane_quadrature.h"
 
 namespace clearsky {
 
@@ -215,7 +216,12 @@ ScatteringAlongRay SkyModel::compute_aerial_perspective(const SunState&, const V
 
 Spectrum SkyModel::compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
                                           const PlaneOrientation& plane) const {
-  return sky_irradiance_by_quadrature(sun, viewpoint, plane);
+  if (descriptor().capabilities.view_below_horizon) return sky_irradiance_by_quadrature(sun, viewpoint, plane);
+  // Ground-view models: the sky a plane sees is a lune (sky_plane_quadrature.h). Horizontal:
+  // 24 x 48 directions, within 0.01% of a 200 x 400 rule; tilted: 32 x 32, within 0.4% of a
+  // fine rule up to a tilt of 150 degrees (measured on Preetham and Hosek, tests/models/*).
+  if (plane.tilt_rad < 1e-9) return sky_irradiance_on_plane(*this, sun, viewpoint, plane, 24, 48);
+  return sky_irradiance_on_plane(*this, sun, viewpoint, plane, 32, 32);
 }
 
 Spectrum SkyModel::sky_irradiance_by_quadrature(const SunState& sun, const Viewpoint& viewpoint,

@@ -8,7 +8,6 @@
 #include <string>
 
 #include "models/core/quadrature.h"
-#include "models/core/sky_plane_quadrature.h"
 #include "models/spectral/reference_spectra.h"
 
 namespace clearsky {
@@ -311,14 +310,5 @@ Spectrum HosekModel::compute_sun_irradiance(const SunState& sun, const Viewpoint
   return irradiance;
 }
 
-Spectrum HosekModel::compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
-                                            const PlaneOrientation& plane) const {
-  // Horizontal: 24 x 48 directions (Gauss-Legendre in cos(theta) x midpoint in azimuth),
-  // within 0.01% of a 200 x 400 rule. Tilted: the lune rule, 32 x 32 directions, within 0.4%
-  // of a fine rule (120 x 240 over the sky, and a 200 x 200 lune) up to a tilt of 150 degrees
-  // (tests/models/hosek).
-  if (plane.tilt_rad < 1e-9) return sky_irradiance_on_plane(*this, sun, viewpoint, plane, 24, 48);
-  return sky_irradiance_on_plane(*this, sun, viewpoint, plane, 32, 32);
-}
 
 }  // namespace clearsky

@@ -8,7 +8,6 @@
 
 #include "models/colour/colour_spaces.h"
 #include "models/colour/daylight_spectrum.h"
-#include "models/core/sky_plane_quadrature.h"
 
 namespace clearsky {
 namespace {
@@ -183,14 +182,5 @@ Spectrum PreethamModel::compute_sun_irradiance(const SunState& sun, const Viewpo
   return irradiance;
 }
 
-Spectrum PreethamModel::compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
-                                               const PlaneOrientation& plane) const {
-  // Horizontal: 24 x 48 directions (Gauss-Legendre in cos(theta) x midpoint in azimuth),
-  // within 0.01% of a 200 x 400 rule. Tilted: the lune rule, 32 x 32 directions, within 0.4%
-  // of a fine rule (120 x 240 over the sky, and a 200 x 200 lune) up to a tilt of 150 degrees
-  // (tests/models/preetham).
-  if (plane.tilt_rad < 1e-9) return sky_irradiance_on_plane(*this, sun, viewpoint, plane, 24, 48);
-  return sky_irradiance_on_plane(*this, sun, viewpoint, plane, 32, 32);
-}
 
 }  // namespace clearsky

@@ -49,8 +49,6 @@ class PreethamModel final : public SkyModel {
                             std::span<const ViewDirection> views,
                             SpectralBatch& out) const override;
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
-  Spectrum compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
-                                  const PlaneOrientation& plane) const override;
 
  private:
   explicit PreethamModel(const ModelConfig& config);
