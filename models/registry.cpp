@@ -3,15 +3,20 @@
 
 #include <vector>
 
+#include "models/hosek/hosek.h"
 #include "models/nishita93/nishita93.h"
 #include "models/oneal/oneal.h"
+#include "models/preetham/preetham.h"
 
 namespace clearsky {
 
 std::span<const ModelFactory> registered_models() {
   static const std::vector<ModelFactory> factories = {
+      // The paper's order: Nishita93, Nishita96, Preetham, O'Neal, Haber, Bruneton, Elek, Hosek.
       nishita93_factory(),
+      preetham_factory(),
       oneal_factory(),
+      hosek_factory(),
   };
   return factories;
 }
