@@ -3,10 +3,13 @@
 
 #include <vector>
 
+#include "models/bruneton/bruneton.h"
+#include "models/elek/elek.h"
+
 namespace clearsky {
 
 std::span<const ModelFactory> registered_models() {
-  static const std::vector<ModelFactory> factories = {};
+  static const std::vector<ModelFactory> factories = {bruneton_factory(), elek_factory()};
   return factories;
 }
 
