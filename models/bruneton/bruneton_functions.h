@@ -148,11 +148,11 @@ inline double texel_mu(int j, int res_mu, const Layer& l, const ShellGeometry& g
     double d = (1.0 - y / (half - 1.0)) * l.dmaxp;
     d = std::min(std::max(l.dminp, d), l.dmaxp * 0.999);
     const double mu = (g.bottom_m * g.bottom_m - l.r * l.r - d * d) / (2.0 * l.r * d);
-    return std::min(mu, horizon_mu(l.r, g) - 0.001);
+    return std::max(std::min(mu, horizon_mu(l.r, g) - 0.001), -1.0);
   }
   double d = ((y - half) / (half - 1.0)) * l.dmax;
   d = std::min(std::max(l.dmin, d), l.dmax * 0.999);
-  return (g.top_m * g.top_m - l.r * l.r - d * d) / (2.0 * l.r * d);
+  return std::min((g.top_m * g.top_m - l.r * l.r - d * d) / (2.0 * l.r * d), 1.0);
 }
 
 // The 2008 code's "better" mu_s mapping: mu_s = tan((2 x - 1 + 0.26) 1.1) / tan(1.26 1.1).

@@ -351,6 +351,32 @@ struct Builder {
     bool first() const { return scattered == nullptr; }
   };
 
+  // Incident light from each zenith cos_t[i], in each nu slice k: the table at
+  // (r, cos_t[i], mu_s) without interpolation in nu, (i * res.nu + k) * stride. For the first
+  // order, a holds single Rayleigh and b single Mie; later, a holds the previous order.
+  void build_profiles(const Source& source, double r, double mu_s, const std::vector<double>& cos_t,
+                      std::vector<float>& profile_a, std::vector<float>& profile_b) const {
+    const int n_theta = static_cast<int>(cos_t.size());
+    const std::size_t profile_size = static_cast<std::size_t>(n_theta) * res.nu * stride;
+    profile_a.assign(profile_size, 0.0f);
+    profile_b.assign(source.first() ? profile_size : 0, 0.0f);
+    RowList<std::uint16_t> list;
+    for (int i = 0; i < n_theta; ++i) {
+      Coord4 c = coordinates_4d(r, cos_t[i], mu_s, 0.0, res, g);
+      for (int kk = 0; kk < res.nu; ++kk) {
+        c.nu = Axis{kk, kk, 0.0};
+        list.clear();
+        gather_4d(source.first() ? *source.rayleigh : *source.scattered, c, 1.0, list);
+        list.sum(stride, profile_a.data() + (static_cast<std::size_t>(i) * res.nu + kk) * stride);
+        if (source.first()) {
+          list.clear();
+          gather_4d(*source.mie, c, 1.0, list);
+          list.sum(stride, profile_b.data() + (static_cast<std::size_t>(i) * res.nu + kk) * stride);
+        }
+      }
+    }
+  }
+
   // Density J (Eq. 7) of the order after `source`, whose ground irradiance is delta_e.
   void build_density(const Source& source, const FloatTable2D& delta_e, HalfTable4D& j_table,
                      double progress_units) {
@@ -421,28 +447,8 @@ struct Builder {
     const double dtheta = kPi / n_theta;
     const double dphi = kPi / n_theta;
     const double mu_s = std::clamp(texel_mu_s(ms, res.mu_s), -1.0, 1.0);
-    // Incident light from each fixed zenith theta_i, in each nu slice k: the table at
-    // (r, cos theta_i, mu_s) without interpolation in nu.
-    const std::size_t profile_size = static_cast<std::size_t>(n_theta) * n_nu * stride;
-    std::vector<float> profile_a(profile_size), profile_b(source.first() ? profile_size : 0);
-    {
-      RowList<std::uint16_t> list;
-      for (int i = 0; i < n_theta; ++i) {
-        Coord4 c = coordinates_4d(r, cos_t[i], mu_s, 0.0, res, g);
-        for (int kk = 0; kk < n_nu; ++kk) {
-          c.nu = Axis{kk, kk, 0.0};
-          float* out_a = profile_a.data() + (static_cast<std::size_t>(i) * n_nu + kk) * stride;
-          list.clear();
-          gather_4d(source.first() ? *source.rayleigh : *source.scattered, c, 1.0, list);
-          list.sum(stride, out_a);
-          if (source.first()) {
-            list.clear();
-            gather_4d(*source.mie, c, 1.0, list);
-            list.sum(stride, profile_b.data() + (static_cast<std::size_t>(i) * n_nu + kk) * stride);
-          }
-        }
-      }
-    }
+    std::vector<float> profile_a, profile_b;
+    build_profiles(source, r, mu_s, cos_t, profile_a, profile_b);
     const std::size_t n_dir = static_cast<std::size_t>(n_theta) * n_phi;
     std::vector<double> wx(n_dir), wy(n_dir), wz(n_dir), dw(n_dir);
     for (int i = 0; i < n_theta; ++i) {
@@ -557,41 +563,55 @@ struct Builder {
   }
 
   // Delta E of the order after `source` (Eq. 15): the sky irradiance it produces on a
-  // horizontal plane.
+  // horizontal plane, over irradiance_samples / 2 zeniths x 2 irradiance_samples azimuths. As
+  // for J, the lookups at each fixed zenith are linear in the nu slices: the sum becomes
+  // scalar weights on precomputed profiles, the same terms in another order.
   FloatTable2D build_irradiance(const Source& source) {
     FloatTable2D e;
     e.allocate(res.irradiance_mu_s, res.irradiance_r, stride);
     const int n = res.irradiance_samples;
     const double dphi = kPi / n;
     const double dtheta = kPi / n;
+    std::vector<double> cos_t(n / 2), sin_t(n / 2), cos_p(2 * n);
+    for (int it = 0; it < n / 2; ++it) {
+      cos_t[it] = std::cos((it + 0.5) * dtheta);
+      sin_t[it] = std::sin((it + 0.5) * dtheta);
+    }
+    for (int ip = 0; ip < 2 * n; ++ip) cos_p[ip] = std::cos((ip + 0.5) * dphi);
     for_each(static_cast<std::size_t>(res.irradiance_mu_s) * res.irradiance_r, [&](std::size_t texel) {
       const int i = static_cast<int>(texel % res.irradiance_mu_s);
       const int j = static_cast<int>(texel / res.irradiance_mu_s);
       const double r = irradiance_texel_r(j, res.irradiance_r, g);
       const double mu_s = irradiance_texel_mu_s(i, res.irradiance_mu_s);
       const double sx = std::sqrt(1.0 - mu_s * mu_s);
-      std::vector<float> sum(stride);
-      float* out = e.texel(i, j);
-      RowList<std::uint16_t> list;
-      for (int ip = 0; ip < 2 * n; ++ip) {
-        const double phi = (ip + 0.5) * dphi;
-        for (int it = 0; it < n / 2; ++it) {
-          const double theta = (it + 0.5) * dtheta;
-          const double dw = dtheta * dphi * std::sin(theta);
-          const double wz = std::cos(theta);
-          const double nu = sx * std::cos(phi) * std::sin(theta) + mu_s * wz;
-          const Coord4 c = coordinates_4d(r, wz, mu_s, nu, res, g);
+      std::vector<float> profile_a, profile_b;
+      build_profiles(source, r, mu_s, cos_t, profile_a, profile_b);
+      const std::size_t n_profile = cos_t.size() * static_cast<std::size_t>(res.nu);
+      std::vector<double> weight_a(n_profile, 0.0), weight_b(n_profile, 0.0);
+      for (std::size_t it = 0; it < cos_t.size(); ++it) {
+        const double dw = dtheta * dphi * sin_t[it];
+        for (int ip = 0; ip < 2 * n; ++ip) {
+          const double nu = sx * cos_p[ip] * sin_t[it] + mu_s * cos_t[it];
+          const Axis slice = nu_axis_4d(nu, res);
+          const double w = cos_t[it] * dw;
+          const double wa = source.first() ? rayleigh_phase(nu) * w : w;
+          const std::size_t s0 = it * res.nu + slice.i0;
+          const std::size_t s1 = it * res.nu + slice.i1;
+          weight_a[s0] += (1.0 - slice.f) * wa;
+          weight_a[s1] += slice.f * wa;
           if (source.first()) {
-            gather_4d(*source.rayleigh, c, rayleigh_phase(nu) * wz * dw, list);
-            gather_4d(*source.mie, c, cornette_shanks_phase(nu, k.mie_g) * wz * dw, list);
-          } else {
-            gather_4d(*source.scattered, c, wz * dw, list);
+            const double wb = cornette_shanks_phase(nu, k.mie_g) * w;
+            weight_b[s0] += (1.0 - slice.f) * wb;
+            weight_b[s1] += slice.f * wb;
           }
         }
-        list.sum(stride, sum.data());
-        list.clear();
-        for (int w = 0; w < stride; ++w) out[w] += sum[w];
       }
+      RowList<float> rows;
+      for (std::size_t p = 0; p < n_profile; ++p) {
+        rows.add(profile_a.data() + p * stride, weight_a[p]);
+        if (source.first()) rows.add(profile_b.data() + p * stride, weight_b[p]);
+      }
+      rows.sum(stride, e.texel(i, j));
     });
     return e;
   }
