@@ -10,6 +10,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("clearsky ") + CLEARSKY_VERSION);
   app.require_subcommand(1);
   clearsky::cli::add_models_command(app);
+  clearsky::cli::add_import_command(app);
+  clearsky::cli::add_datasets_command(app);
+  clearsky::cli::add_evaluate_command(app, CLEARSKY_VERSION);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
