@@ -195,9 +195,14 @@ void BrunetonModel::radiance(double r, double mu, double mu_s, double nu, float*
   }
   r = std::clamp(r, g.bottom_m, g.top_m);
   tables_.scattering(r, mu, mu_s, nu, atmosphere().parameters.mie_phase_g, out);
-  if (!(mu < bruneton::horizon_mu(r, g))) return;
+  if (mu < bruneton::horizon_mu(r, g)) add_ground(r, mu, mu_s, nu, out);
+}
+
+void BrunetonModel::add_ground(double r, double mu, double mu_s, double nu, float* out) const {
   // The ray ends on the ground: add the Lambertian reflection of the direct sun and the sky
   // there, attenuated on the way (the 2008 code's ground colour, without the sun's glint).
+  const bruneton::ShellGeometry& g = tables_.geometry;
+  const int stride = tables_.stride;
   const double d = distance_to_sphere_from_outside(r, mu, g.bottom_m);
   if (!std::isfinite(d)) return;
   const double mu_ground = clamp_cosine((r * mu_s + d * nu) / g.bottom_m);
@@ -217,15 +222,32 @@ void BrunetonModel::radiance(double r, double mu, double mu_s, double nu, float*
 
 void BrunetonModel::compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
                                          std::span<const ViewDirection> views, SpectralBatch& out) const {
-  const double r = tables_.geometry.bottom_m + viewpoint.altitude_m;
+  const bruneton::ShellGeometry& g = tables_.geometry;
+  const double r = g.bottom_m + viewpoint.altitude_m;
   const double mu_s = std::cos(sun.sun().zenith_rad);
-  const int stride = tables_.stride;
+  const double sin_s = std::sin(sun.sun().zenith_rad);
   const std::size_t n = wavelengths().size();
-  Scratch value(stride);
+  const double mie_g = atmosphere().parameters.mie_phase_g;
+  Scratch value(tables_.stride);
+  // Inside the atmosphere the altitude and sun axes of the lookup are the same for every view.
+  const bool inside = r <= g.top_m;
+  const double r_lookup = std::max(r, g.bottom_m);
+  const bruneton::Axis r_axis = bruneton::r_axis_4d(r_lookup, tables_.resolution, g);
+  const bruneton::Axis mu_s_axis =
+      bruneton::texture_axis(bruneton::u_mu_s(mu_s, tables_.resolution.mu_s), tables_.resolution.mu_s);
+  const double mu_horizon = bruneton::horizon_mu(r_lookup, g);
   for (std::size_t i = 0; i < views.size(); ++i) {
     const double mu = std::cos(views[i].zenith_rad);
-    const double nu = cos_angle_between(views[i], sun.sun());
-    radiance(r, mu, mu_s, nu, value.data());
+    const double sin_v = std::sin(views[i].zenith_rad);
+    const double nu = clamp_cosine(mu * mu_s + sin_v * sin_s * std::cos(views[i].azimuth_rad - sun.sun().azimuth_rad));
+    if (inside) {
+      const bruneton::Coord4 c{r_axis, bruneton::mu_axis_4d(r_lookup, mu, tables_.resolution, g), mu_s_axis,
+                               bruneton::nu_axis_4d(nu, tables_.resolution)};
+      tables_.scattering(c, nu, mie_g, value.data());
+      if (mu < mu_horizon) add_ground(r_lookup, mu, mu_s, nu, value.data());
+    } else {
+      radiance(r, mu, mu_s, nu, value.data());
+    }
     auto spectrum = out.spectrum(i);
     for (std::size_t w = 0; w < n; ++w) spectrum[w] = static_cast<double>(value.data()[w]) * solar_[w];
   }

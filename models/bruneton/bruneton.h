@@ -81,6 +81,9 @@ class BrunetonModel : public SkyModel {
   // scattering of all orders plus, when the ray hits the ground, the attenuated light the
   // ground reflects. out holds tables().stride floats.
   void radiance(double r, double mu, double mu_s, double nu, float* out) const;
+  // The ground's reflected light seen along (r, mu) (r within the atmosphere, the ray hitting
+  // the ground), attenuated, added to out.
+  void add_ground(double r, double mu, double mu_s, double nu, float* out) const;
 
   const ModelDescriptor* descriptor_;
   bruneton::Tables tables_;

@@ -138,7 +138,10 @@ void Tables::irradiance(double r, double mu_s, float* out) const {
 }
 
 void Tables::scattering(double r, double mu, double mu_s, double nu, double mie_g, float* out) const {
-  const Coord4 c = coordinates_4d(r, mu, mu_s, nu, resolution, geometry);
+  scattering(coordinates_4d(r, mu, mu_s, nu, resolution, geometry), nu, mie_g, out);
+}
+
+void Tables::scattering(const Coord4& c, double nu, double mie_g, float* out) const {
   FixedRowList<std::uint16_t, 48> list;
   gather_4d(single_rayleigh, c, rayleigh_phase(nu), list);
   gather_4d(single_mie, c, cornette_shanks_phase(nu, mie_g), list);

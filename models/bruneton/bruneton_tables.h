@@ -147,6 +147,8 @@ struct Tables {
   // multiple-scattering table) at (r, mu, mu_s, nu), 1/sr per unit solar irradiance. r within
   // [Rg, Rt]; the caller handles views from space.
   void scattering(double r, double mu, double mu_s, double nu, double mie_g, float* out) const;
+  // The same at precomputed coordinates (batches share the r and mu_s axes).
+  void scattering(const Coord4& c, double nu, double mie_g, float* out) const;
 };
 
 // Builds every table on spectra.grid with the given resolution; all cores unless
