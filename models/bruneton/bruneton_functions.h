@@ -74,9 +74,19 @@ struct Axis {
   double f = 0;  // weight of i1
 };
 
+// floor() for |x| < 2^62 without a libm call (baseline x86-64 has no rounding instruction,
+// and this runs a billion times per precomputation).
+inline double floor_small(double x) {
+  const double t = static_cast<double>(static_cast<long long>(x));
+  return t > x ? t - 1.0 : t;
+}
+
 inline Axis texture_axis(double u, int n) {
-  const double p = u * n - 0.5;
-  double fl = std::floor(p);
+  // Positions beyond [-1, n] read the edge texels whatever their fraction; NaN reads texel 0.
+  double p = u * n - 0.5;
+  if (!(p >= -1.0)) p = -1.0;
+  if (p > n) p = n;
+  double fl = floor_small(p);
   double f = p - fl;
   if (f < 1e-9) {
     f = 0.0;
@@ -201,7 +211,7 @@ inline Axis mu_axis_4d(double r, double mu, const Resolution& res, const ShellGe
 
 inline Axis nu_axis_4d(double nu, const Resolution& res) {
   const double lerp = (std::clamp(nu, -1.0, 1.0) + 1.0) / 2.0 * (res.nu - 1);
-  double k = std::floor(lerp);
+  double k = floor_small(lerp);
   double f = lerp - k;
   if (f < 1e-9) {
     f = 0.0;

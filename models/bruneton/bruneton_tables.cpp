@@ -19,6 +19,7 @@
 #include <cmath>
 #include <memory>
 #include <mutex>
+#include <utility>
 
 #include "models/atmosphere/phase_functions.h"
 #include "models/core/parallel.h"
@@ -438,6 +439,74 @@ struct Builder {
     }
   }
 
+  // The scalar weights of one texel of J: for each direction (theta_i, phi_p), its lookup's
+  // two nu slices get (1 - f) and f times the phase towards the view (times, for the first
+  // order, the phase of the single scattering), and the ground columns seen in that direction
+  // get their share. Same terms as the 2008 code's loop; ground_range[i] receives the columns
+  // touched at zenith i.
+  template <bool First>
+  void accumulate_weights(int n_theta, int n_phi, double sx, double sy, double mu_s, double r,
+                          const std::vector<double>& wx, const std::vector<double>& wy,
+                          const std::vector<double>& cos_t, const std::vector<double>& phase_r,
+                          const std::vector<double>& phase_m, const std::vector<char>& ground,
+                          const std::vector<double>& d_ground, int n_e, std::vector<double>& a_r,
+                          std::vector<double>& a_m, std::vector<double>& b_r, std::vector<double>& b_m,
+                          std::vector<double>& g_r, std::vector<double>& g_m,
+                          std::vector<std::pair<int, int>>& ground_range) const {
+    const int n_nu = res.nu;
+    for (int i = 0; i < n_theta; ++i) {
+      const bool sees_ground = ground[i] != 0;
+      const double z = mu_s * cos_t[i];
+      double* ar = a_r.data() + static_cast<std::size_t>(i) * n_nu;
+      double* am = a_m.data() + static_cast<std::size_t>(i) * n_nu;
+      double* br = First ? b_r.data() + static_cast<std::size_t>(i) * n_nu : nullptr;
+      double* bm = First ? b_m.data() + static_cast<std::size_t>(i) * n_nu : nullptr;
+      int lowest = n_e, highest = -1;
+      for (int p = 0; p < n_phi; ++p) {
+        const std::size_t d = static_cast<std::size_t>(i) * n_phi + p;
+        const double nu1 = sx * wx[d] + sy * wy[d] + z;
+        const Axis slice = nu_axis_4d(nu1, res);
+        double pr = phase_r[d];
+        double pm = phase_m[d];
+        const double f1 = 1.0 - slice.f;
+        const double f2 = slice.f;
+        if constexpr (First) {
+          // Single scattering gets its phase functions here (2008 code, first iteration).
+          const double p1r = rayleigh_phase(nu1);
+          const double p1m = cornette_shanks_phase(nu1, k.mie_g);
+          ar[slice.i0] += f1 * p1r * pr;
+          ar[slice.i1] += f2 * p1r * pr;
+          am[slice.i0] += f1 * p1r * pm;
+          am[slice.i1] += f2 * p1r * pm;
+          br[slice.i0] += f1 * p1m * pr;
+          br[slice.i1] += f2 * p1m * pr;
+          bm[slice.i0] += f1 * p1m * pm;
+          bm[slice.i1] += f2 * p1m * pm;
+        } else {
+          ar[slice.i0] += f1 * pr;
+          ar[slice.i1] += f2 * pr;
+          am[slice.i0] += f1 * pm;
+          am[slice.i1] += f2 * pm;
+        }
+        if (sees_ground) {
+          // Light reflected by the ground point seen in direction w (Lambertian, delta E of
+          // the previous order at the ground, for the sun at gnormal . s).
+          const double mu_ground = (r * mu_s + d_ground[i] * nu1) / g.bottom_m;
+          const Axis e = texture_axis(irradiance_u_mu_s(mu_ground), n_e);
+          const std::size_t c0 = static_cast<std::size_t>(i) * n_e + e.i0;
+          const std::size_t c1 = static_cast<std::size_t>(i) * n_e + e.i1;
+          g_r[c0] += (1.0 - e.f) * pr;
+          g_r[c1] += e.f * pr;
+          g_m[c0] += (1.0 - e.f) * pm;
+          g_m[c1] += e.f * pm;
+          lowest = std::min(lowest, e.i0);
+          highest = std::max(highest, e.i1);
+        }
+      }
+      ground_range[i] = {lowest, highest};
+    }
+  }
+
   void density_column(const Source& source, int layer, int ms, double r, double /*cos_theta_min*/, float density_r,
                       float density_m, const std::vector<double>& cos_t, const std::vector<double>& sin_t,
                       const std::vector<double>& cos_p, const std::vector<double>& sin_p,
@@ -468,7 +537,8 @@ struct Builder {
     const std::size_t n_profile = static_cast<std::size_t>(n_theta) * n_nu;
     const std::size_t n_ground = static_cast<std::size_t>(n_theta) * n_e;
     std::vector<double> a_r(n_profile), a_m(n_profile), b_r(n_profile), b_m(n_profile);
-    std::vector<double> g_r(n_ground), g_m(n_ground);
+    std::vector<double> g_r(n_ground, 0.0), g_m(n_ground, 0.0);  // kept zero outside ground_range
+    std::vector<std::pair<int, int>> ground_range(n_theta);
     std::vector<double> phase_r(n_dir), phase_m(n_dir);
     std::vector<float> sum_r(stride), sum_m(stride);
     RowList<float> rows_r, rows_m;
@@ -489,51 +559,14 @@ struct Builder {
         const double sy = std::sqrt(std::max(0.0, 1.0 - sx * sx - mu_s * mu_s));
         std::fill(a_r.begin(), a_r.end(), 0.0);
         std::fill(a_m.begin(), a_m.end(), 0.0);
-        std::fill(b_r.begin(), b_r.end(), 0.0);
-        std::fill(b_m.begin(), b_m.end(), 0.0);
-        std::fill(g_r.begin(), g_r.end(), 0.0);
-        std::fill(g_m.begin(), g_m.end(), 0.0);
-        for (int i = 0; i < n_theta; ++i) {
-          const bool sees_ground = ground[i] != 0;
-          for (int p = 0; p < n_phi; ++p) {
-            const std::size_t d = static_cast<std::size_t>(i) * n_phi + p;
-            const double nu1 = sx * wx[d] + sy * wy[d] + mu_s * wz[d];
-            const Axis slice = nu_axis_4d(nu1, res);
-            const double pr = phase_r[d];
-            const double pm = phase_m[d];
-            const std::size_t s0 = static_cast<std::size_t>(i) * n_nu + slice.i0;
-            const std::size_t s1 = static_cast<std::size_t>(i) * n_nu + slice.i1;
-            if (source.first()) {
-              // Single scattering gets its phase functions here (2008 code, first iteration).
-              const double p1r = rayleigh_phase(nu1);
-              const double p1m = cornette_shanks_phase(nu1, k.mie_g);
-              a_r[s0] += (1.0 - slice.f) * p1r * pr;
-              a_r[s1] += slice.f * p1r * pr;
-              a_m[s0] += (1.0 - slice.f) * p1r * pm;
-              a_m[s1] += slice.f * p1r * pm;
-              b_r[s0] += (1.0 - slice.f) * p1m * pr;
-              b_r[s1] += slice.f * p1m * pr;
-              b_m[s0] += (1.0 - slice.f) * p1m * pm;
-              b_m[s1] += slice.f * p1m * pm;
-            } else {
-              a_r[s0] += (1.0 - slice.f) * pr;
-              a_r[s1] += slice.f * pr;
-              a_m[s0] += (1.0 - slice.f) * pm;
-              a_m[s1] += slice.f * pm;
-            }
-            if (sees_ground) {
-              // Light reflected by the ground point seen in direction w (Lambertian, delta E of
-              // the previous order at the ground, for the sun at gnormal . s).
-              const double mu_ground = (r * mu_s + d_ground[i] * nu1) / g.bottom_m;
-              const Axis e = texture_axis(irradiance_u_mu_s(mu_ground), n_e);
-              const std::size_t c0 = static_cast<std::size_t>(i) * n_e + e.i0;
-              const std::size_t c1 = static_cast<std::size_t>(i) * n_e + e.i1;
-              g_r[c0] += (1.0 - e.f) * pr;
-              g_r[c1] += e.f * pr;
-              g_m[c0] += (1.0 - e.f) * pm;
-              g_m[c1] += e.f * pm;
-            }
-          }
+        if (source.first()) {
+          std::fill(b_r.begin(), b_r.end(), 0.0);
+          std::fill(b_m.begin(), b_m.end(), 0.0);
+          accumulate_weights<true>(n_theta, n_phi, sx, sy, mu_s, r, wx, wy, cos_t, phase_r, phase_m, ground, d_ground,
+                                   n_e, a_r, a_m, b_r, b_m, g_r, g_m, ground_range);
+        } else {
+          accumulate_weights<false>(n_theta, n_phi, sx, sy, mu_s, r, wx, wy, cos_t, phase_r, phase_m, ground, d_ground,
+                                    n_e, a_r, a_m, b_r, b_m, g_r, g_m, ground_range);
         }
         rows_r.clear();
         rows_m.clear();
@@ -547,11 +580,16 @@ struct Builder {
             rows_m.add(pb, b_m[s]);
           }
         }
-        for (std::size_t c = 0; c < n_ground; ++c) {
-          if (g_r[c] == 0.0 && g_m[c] == 0.0) continue;
-          const float* light = ground_light.data() + c * stride;
-          rows_r.add(light, g_r[c]);
-          rows_m.add(light, g_m[c]);
+        for (int i = 0; i < n_theta; ++i) {
+          if (ground_range[i].first > ground_range[i].second) continue;
+          for (int col = ground_range[i].first; col <= ground_range[i].second; ++col) {
+            const std::size_t c = static_cast<std::size_t>(i) * n_e + col;
+            const float* light = ground_light.data() + c * stride;
+            rows_r.add(light, g_r[c]);
+            rows_m.add(light, g_m[c]);
+            g_r[c] = 0.0;
+            g_m[c] = 0.0;
+          }
         }
         rows_r.sum(stride, sum_r.data());
         rows_m.sum(stride, sum_m.data());
