@@ -15,6 +15,8 @@ namespace clearsky {
 
 namespace {
 
+using bruneton::ScratchRow;
+
 // Bumped whenever the numbers of the tables change (part of every cache key).
 constexpr const char* kTablesVersion = "1";
 
@@ -46,24 +48,6 @@ std::vector<float> padded(const Spectrum& s, int stride) {
   for (std::size_t i = 0; i < s.size(); ++i) v[i] = static_cast<float>(s[i]);
   return v;
 }
-
-class Scratch {
- public:
-  explicit Scratch(int n) {
-    if (n > static_cast<int>(small_.size())) {
-      big_.resize(static_cast<std::size_t>(n));
-      data_ = big_.data();
-    } else {
-      data_ = small_.data();
-    }
-  }
-  float* data() { return data_; }
-
- private:
-  std::array<float, 256> small_;
-  std::vector<float> big_;
-  float* data_;
-};
 
 // Moves an observer above the atmosphere to where its ray enters it. False when the ray
 // misses the atmosphere. The sun's cosine is transported along the ray.
@@ -206,7 +190,7 @@ void BrunetonModel::add_ground(double r, double mu, double mu_s, double nu, floa
   const double d = distance_to_sphere_from_outside(r, mu, g.bottom_m);
   if (!std::isfinite(d)) return;
   const double mu_ground = clamp_cosine((r * mu_s + d * nu) / g.bottom_m);
-  Scratch sun(stride), sky(stride), path(stride);
+  ScratchRow sun(stride), sky(stride), path(stride);
   if (mu_ground > 0.0) {
     tables_.transmittance_to_top(g.bottom_m, mu_ground, sun.data());
   } else {
@@ -228,7 +212,7 @@ void BrunetonModel::compute_sky_radiance(const SunState& sun, const Viewpoint& v
   const double sin_s = std::sin(sun.sun().zenith_rad);
   const std::size_t n = wavelengths().size();
   const double mie_g = atmosphere().parameters.mie_phase_g;
-  Scratch value(tables_.stride);
+  ScratchRow value(tables_.stride);
   // Inside the atmosphere the altitude and sun axes of the lookup are the same for every view.
   const bool inside = r <= g.top_m;
   const double r_lookup = std::max(r, g.bottom_m);
@@ -271,7 +255,7 @@ Spectrum BrunetonModel::compute_sun_irradiance(const SunState& sun, const Viewpo
     enter_atmosphere(g, r, mu_s, transported, 1.0);
   }
   if (mu_s < bruneton::horizon_mu(r, g)) return result;
-  Scratch t(tables_.stride);
+  ScratchRow t(tables_.stride);
   tables_.transmittance_to_top(r, mu_s, t.data());
   for (std::size_t w = 0; w < n; ++w) result[w] = static_cast<double>(t.data()[w]) * solar_[w];
   return result;
@@ -282,7 +266,7 @@ Spectrum BrunetonModel::compute_sky_irradiance(const SunState& sun, const Viewpo
   const bruneton::ShellGeometry& g = tables_.geometry;
   const double r = g.bottom_m + viewpoint.altitude_m;
   if (plane.tilt_rad != 0.0 || r > g.top_m) return sky_irradiance_by_quadrature(sun, viewpoint, plane);
-  Scratch e(tables_.stride);
+  ScratchRow e(tables_.stride);
   tables_.irradiance(r, std::cos(sun.sun().zenith_rad), e.data());
   Spectrum result(wavelengths().size(), 0.0);
   for (std::size_t w = 0; w < result.size(); ++w) result[w] = static_cast<double>(e.data()[w]) * solar_[w];
@@ -319,7 +303,7 @@ AerialPerspectiveSample BrunetonModel::aerial_perspective(const SunState& sun, c
   const double mie_g = atmosphere().parameters.mie_phase_g;
   const AtmosphereSegment segment = atmosphere_segment(r, mu, g.bottom_m, g.top_m);
   const double d = std::min(distance_m - travelled, segment.end);
-  Scratch radiance_value(stride), transmittance_value(stride), far(stride), near_b(stride), far_b(stride);
+  ScratchRow radiance_value(stride), transmittance_value(stride), far(stride), near_b(stride), far_b(stride);
   float* l = radiance_value.data();
   float* t = transmittance_value.data();
   tables_.transmittance_between(r, mu, d, t);

@@ -75,25 +75,6 @@ void HalfTable4D::load_row(int r, int mu, float* row) const {
 
 namespace {
 
-// A spectrum-sized float buffer, on the stack for the usual sizes (queries must not allocate).
-class Scratch {
- public:
-  explicit Scratch(int n) {
-    if (n > static_cast<int>(small_.size())) {
-      big_.resize(static_cast<std::size_t>(n));
-      data_ = big_.data();
-    } else {
-      data_ = small_.data();
-    }
-  }
-  float* data() { return data_; }
-
- private:
-  std::array<float, 256> small_;
-  std::vector<float> big_;
-  float* data_;
-};
-
 void lookup_2d(const FloatTable2D& t, double u, double v, float* out) {
   const Axis ax = texture_axis(u, t.width);
   const Axis ay = texture_axis(v, t.height);
@@ -119,7 +100,7 @@ void Tables::transmittance_to_top(double r, double mu, float* out) const {
 void Tables::transmittance_between(double r, double mu, double d, float* out) const {
   const double r1 = std::sqrt(std::max(r * r + d * d + 2.0 * r * mu * d, 0.0));
   const double mu1 = r1 > 0.0 ? (r * mu + d) / r1 : 1.0;
-  Scratch other(stride);
+  ScratchRow other(stride);
   if (mu > 0.0) {
     transmittance_to_top(r, mu, out);
     transmittance_to_top(r1, mu1, other.data());

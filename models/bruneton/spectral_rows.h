@@ -13,8 +13,10 @@
 // once at run time), portable C++ otherwise. Results agree to float rounding (FMA).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace clearsky::bruneton {
 
@@ -35,6 +37,27 @@ std::uint16_t float_to_half(float value);
 float half_to_float(std::uint16_t half);
 // out[i] = half(in[i] * scale) for i in [0, n).
 void floats_to_halves(const float* in, float scale, std::uint16_t* out, std::size_t n);
+
+// A spectrum-sized float buffer, on the stack for the usual sizes (queries must not allocate).
+class ScratchRow {
+ public:
+  explicit ScratchRow(int n) {
+    if (n > static_cast<int>(small_.size())) {
+      big_.resize(static_cast<std::size_t>(n));
+      data_ = big_.data();
+    } else {
+      data_ = small_.data();
+    }
+  }
+  ScratchRow(const ScratchRow&) = delete;
+  ScratchRow& operator=(const ScratchRow&) = delete;
+  float* data() { return data_; }
+
+ private:
+  std::array<float, 256> small_;
+  std::vector<float> big_;
+  float* data_;
+};
 
 // Whether the AVX2/F16C implementation is in use (for the benchmarks' report).
 bool using_avx2_kernels();
