@@ -20,7 +20,8 @@ using bruneton::ScratchRow;
 // Bumped whenever the numbers of the tables change (part of every cache key).
 constexpr const char* kTablesVersion = "1";
 
-ParameterSpec integer_option(std::string name, std::string description, double value, double min, double max) {
+ParameterSpec integer_option(std::string name, std::string description, double value, double min,
+                             double max) {
   ParameterSpec p;
   p.name = std::move(name);
   p.description = std::move(description);
@@ -31,7 +32,8 @@ ParameterSpec integer_option(std::string name, std::string description, double v
   return p;
 }
 
-ParameterSpec atmosphere_parameter(std::string name, std::string description, double value, double min, double max) {
+ParameterSpec atmosphere_parameter(std::string name, std::string description, double value,
+                                   double min, double max) {
   ParameterSpec p;
   p.name = std::move(name);
   p.description = std::move(description);
@@ -51,8 +53,8 @@ std::vector<float> padded(const Spectrum& s, int stride) {
 
 // Moves an observer above the atmosphere to where its ray enters it. False when the ray
 // misses the atmosphere. The sun's cosine is transported along the ray.
-bool enter_atmosphere(const bruneton::ShellGeometry& g, double& r, double& mu, double& mu_s, double nu,
-                      double* travelled_m = nullptr) {
+bool enter_atmosphere(const bruneton::ShellGeometry& g, double& r, double& mu, double& mu_s,
+                      double nu, double* travelled_m = nullptr) {
   if (travelled_m != nullptr) *travelled_m = 0.0;
   if (r <= g.top_m) return true;
   if (!ray_hits_sphere_from_outside(r, mu, g.top_m)) return false;
@@ -75,25 +77,37 @@ const ModelDescriptor& bruneton_descriptor() {
     m.name = "Bruneton 2008";
     m.version = kTablesVersion;
     m.citation =
-        "E. Bruneton and F. Neyret, Precomputed Atmospheric Scattering, Computer Graphics Forum 27(4) "
+        "E. Bruneton and F. Neyret, Precomputed Atmospheric Scattering, Computer Graphics Forum "
+        "27(4) "
         "(EGSR 2008), 1079-1086";
     m.summary =
-        "All orders of scattering precomputed by the method of Bruneton and Neyret 2008 into 4D tables over "
-        "altitude, view zenith, sun zenith and view-sun angle (32 x 128 x 32 x 8), with 2D transmittance (256 x 64) "
-        "and ground irradiance (64 x 16) tables; 4 scattering orders, single scattering stored as separate Rayleigh "
-        "and Mie tables without phase function, orders 2..4 summed, grass albedo in the multiple scattering and "
-        "the irradiance, as the 2016 study ran it on 40 wavelengths (the original used 3). O(1) queries from the "
+        "All orders of scattering precomputed by the method of Bruneton and Neyret 2008 into 4D "
+        "tables over "
+        "altitude, view zenith, sun zenith and view-sun angle (32 x 128 x 32 x 8), with 2D "
+        "transmittance (256 x 64) "
+        "and ground irradiance (64 x 16) tables; 4 scattering orders, single scattering stored as "
+        "separate Rayleigh "
+        "and Mie tables without phase function, orders 2..4 summed, grass albedo in the multiple "
+        "scattering and "
+        "the irradiance, as the 2016 study ran it on 40 wavelengths (the original used 3). O(1) "
+        "queries from the "
         "ground to space, aerial perspective, sun up to 101.39 degrees zenith.";
     m.parameters = {
-        integer_option("scattering_orders", "orders of scattering precomputed (1: single scattering)", 4, 1, 10),
+        integer_option("scattering_orders",
+                       "orders of scattering precomputed (1: single scattering)", 4, 1, 10),
         integer_option("table_r_size", "4D tables: number of altitudes (RES_R)", 32, 2, 128),
-        integer_option("table_mu_size", "4D tables: number of view zenith cosines (RES_MU, even)", 128, 4, 512),
-        integer_option("table_mu_s_size", "4D tables: number of sun zenith cosines (RES_MU_S)", 32, 2, 128),
-        integer_option("table_nu_size", "4D tables: number of view-sun angle cosines (RES_NU)", 8, 2, 64),
+        integer_option("table_mu_size", "4D tables: number of view zenith cosines (RES_MU, even)",
+                       128, 4, 512),
+        integer_option("table_mu_s_size", "4D tables: number of sun zenith cosines (RES_MU_S)", 32,
+                       2, 128),
+        integer_option("table_nu_size", "4D tables: number of view-sun angle cosines (RES_NU)", 8,
+                       2, 64),
         atmosphere_parameter("alpha", "Angstrom exponent of the aerosols", 0.8, 0.0, 4.0),
-        atmosphere_parameter("beta", "Angstrom turbidity (aerosol optical depth at 1 um)", 0.04, 0.0, 2.0),
+        atmosphere_parameter("beta", "Angstrom turbidity (aerosol optical depth at 1 um)", 0.04,
+                             0.0, 2.0),
         atmosphere_parameter("g", "Cornette-Shanks asymmetry of the aerosols", 0.7, -0.999, 0.999),
-        atmosphere_parameter("albedo", "Lambertian ground albedo (default: grass spectrum)", 0.0, 0.0, 1.0),
+        atmosphere_parameter("albedo", "Lambertian ground albedo (default: grass spectrum)", 0.0,
+                             0.0, 1.0),
     };
     m.capabilities.min_altitude_m = 0.0;
     m.capabilities.max_altitude_m = 1e8;
@@ -110,11 +124,13 @@ const ModelDescriptor& bruneton_descriptor() {
 
 ModelFactory bruneton_factory() {
   return {&bruneton_descriptor(), [](const ModelConfig& config, const PrecomputeContext& context) {
-            return std::shared_ptr<const SkyModel>(BrunetonModel::create(bruneton_descriptor(), config, context));
+            return std::shared_ptr<const SkyModel>(
+                BrunetonModel::create(bruneton_descriptor(), config, context));
           }};
 }
 
-bruneton::Resolution BrunetonModel::resolution(const ModelDescriptor& descriptor, const ModelConfig& config) {
+bruneton::Resolution BrunetonModel::resolution(const ModelDescriptor& descriptor,
+                                               const ModelConfig& config) {
   bruneton::Resolution res;
   res.orders = static_cast<int>(option_or_default(descriptor, config, "scattering_orders"));
   res.r = static_cast<int>(option_or_default(descriptor, config, "table_r_size"));
@@ -131,8 +147,9 @@ std::string BrunetonModel::table_description(const ModelConfig& config) {
   const bruneton::Resolution res = resolution(bruneton_descriptor(), config);
   std::ostringstream out;
   out << "bruneton-tables;version=" << kTablesVersion << ";format=" << bruneton::kTableFormatVersion
-      << ";atmosphere=" << config.atmosphere.canonical_string() << ";grid=" << config.wavelengths.canonical_string()
-      << ";orders=" << res.orders << ";r=" << res.r << ";mu=" << res.mu << ";mu_s=" << res.mu_s << ";nu=" << res.nu;
+      << ";atmosphere=" << config.atmosphere.canonical_string()
+      << ";grid=" << config.wavelengths.canonical_string() << ";orders=" << res.orders
+      << ";r=" << res.r << ";mu=" << res.mu << ";mu_s=" << res.mu_s << ";nu=" << res.nu;
   return out.str();
 }
 
@@ -140,13 +157,15 @@ std::string BrunetonModel::cache_key(const ModelConfig& config) {
   return "bruneton-" + hex64(fnv1a_64(table_description(config)));
 }
 
-std::shared_ptr<const BrunetonModel> BrunetonModel::create(const ModelDescriptor& descriptor, const ModelConfig& config,
+std::shared_ptr<const BrunetonModel> BrunetonModel::create(const ModelDescriptor& descriptor,
+                                                           const ModelConfig& config,
                                                            const PrecomputeContext& context) {
   validate_config(descriptor, config);
   return std::shared_ptr<const BrunetonModel>(new BrunetonModel(descriptor, config, context));
 }
 
-BrunetonModel::BrunetonModel(const ModelDescriptor& descriptor, ModelConfig config, const PrecomputeContext& context)
+BrunetonModel::BrunetonModel(const ModelDescriptor& descriptor, ModelConfig config,
+                             const PrecomputeContext& context)
     : SkyModel(std::move(config)), descriptor_(&descriptor) {
   const auto start = std::chrono::steady_clock::now();
   const bruneton::Resolution res = resolution(descriptor, this->config());
@@ -163,11 +182,13 @@ BrunetonModel::BrunetonModel(const ModelDescriptor& descriptor, ModelConfig conf
     loaded_from_cache_ = true;
   } else {
     tables_ = bruneton::precompute_tables(atmosphere(), res, context);
-    if (context.cache != nullptr) context.cache->store(key, bruneton::serialise_tables(tables_, description));
+    if (context.cache != nullptr)
+      context.cache->store(key, bruneton::serialise_tables(tables_, description));
   }
   solar_ = padded(atmosphere().solar_irradiance_w_m2_nm, tables_.stride);
   albedo_over_pi_ = padded(atmosphere().ground_albedo * (1.0 / kPi), tables_.stride);
-  precompute_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  precompute_seconds_ =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void BrunetonModel::radiance(double r, double mu, double mu_s, double nu, float* out) const {
@@ -205,7 +226,8 @@ void BrunetonModel::add_ground(double r, double mu, double mu_s, double nu, floa
 }
 
 void BrunetonModel::compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
-                                         std::span<const ViewDirection> views, SpectralBatch& out) const {
+                                         std::span<const ViewDirection> views,
+                                         SpectralBatch& out) const {
   const bruneton::ShellGeometry& g = tables_.geometry;
   const double r = g.bottom_m + viewpoint.altitude_m;
   const double mu_s = std::cos(sun.sun().zenith_rad);
@@ -217,27 +239,30 @@ void BrunetonModel::compute_sky_radiance(const SunState& sun, const Viewpoint& v
   const bool inside = r <= g.top_m;
   const double r_lookup = std::max(r, g.bottom_m);
   const bruneton::Axis r_axis = bruneton::r_axis_4d(r_lookup, tables_.resolution, g);
-  const bruneton::Axis mu_s_axis =
-      bruneton::texture_axis(bruneton::u_mu_s(mu_s, tables_.resolution.mu_s), tables_.resolution.mu_s);
+  const bruneton::Axis mu_s_axis = bruneton::texture_axis(
+      bruneton::u_mu_s(mu_s, tables_.resolution.mu_s), tables_.resolution.mu_s);
   const double mu_horizon = bruneton::horizon_mu(r_lookup, g);
   for (std::size_t i = 0; i < views.size(); ++i) {
     const double mu = std::cos(views[i].zenith_rad);
     const double sin_v = std::sin(views[i].zenith_rad);
-    const double nu = clamp_cosine(mu * mu_s + sin_v * sin_s * std::cos(views[i].azimuth_rad - sun.sun().azimuth_rad));
+    const double nu = clamp_cosine(
+        mu * mu_s + sin_v * sin_s * std::cos(views[i].azimuth_rad - sun.sun().azimuth_rad));
     if (inside) {
-      const bruneton::Coord4 c{r_axis, bruneton::mu_axis_4d(r_lookup, mu, tables_.resolution, g), mu_s_axis,
-                               bruneton::nu_axis_4d(nu, tables_.resolution)};
+      const bruneton::Coord4 c{r_axis, bruneton::mu_axis_4d(r_lookup, mu, tables_.resolution, g),
+                               mu_s_axis, bruneton::nu_axis_4d(nu, tables_.resolution)};
       tables_.scattering(c, nu, mie_g, value.data());
       if (mu < mu_horizon) add_ground(r_lookup, mu, mu_s, nu, value.data());
     } else {
       radiance(r, mu, mu_s, nu, value.data());
     }
     auto spectrum = out.spectrum(i);
-    for (std::size_t w = 0; w < n; ++w) spectrum[w] = static_cast<double>(value.data()[w]) * solar_[w];
+    for (std::size_t w = 0; w < n; ++w)
+      spectrum[w] = static_cast<double>(value.data()[w]) * solar_[w];
   }
 }
 
-Spectrum BrunetonModel::compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const {
+Spectrum BrunetonModel::compute_sun_irradiance(const SunState& sun,
+                                               const Viewpoint& viewpoint) const {
   const bruneton::ShellGeometry& g = tables_.geometry;
   const std::size_t n = wavelengths().size();
   double r = g.bottom_m + viewpoint.altitude_m;
@@ -265,22 +290,27 @@ Spectrum BrunetonModel::compute_sky_irradiance(const SunState& sun, const Viewpo
                                                const PlaneOrientation& plane) const {
   const bruneton::ShellGeometry& g = tables_.geometry;
   const double r = g.bottom_m + viewpoint.altitude_m;
-  if (plane.tilt_rad != 0.0 || r > g.top_m) return sky_irradiance_by_quadrature(sun, viewpoint, plane);
+  if (plane.tilt_rad != 0.0 || r > g.top_m)
+    return sky_irradiance_by_quadrature(sun, viewpoint, plane);
   ScratchRow e(tables_.stride);
   tables_.irradiance(r, std::cos(sun.sun().zenith_rad), e.data());
   Spectrum result(wavelengths().size(), 0.0);
-  for (std::size_t w = 0; w < result.size(); ++w) result[w] = static_cast<double>(e.data()[w]) * solar_[w];
+  for (std::size_t w = 0; w < result.size(); ++w)
+    result[w] = static_cast<double>(e.data()[w]) * solar_[w];
   return result;
 }
 
-AerialPerspectiveSample BrunetonModel::aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
-                                                          const ViewDirection& view, double distance_m) const {
+AerialPerspectiveSample BrunetonModel::aerial_perspective(const SunState& sun,
+                                                          const Viewpoint& viewpoint,
+                                                          const ViewDirection& view,
+                                                          double distance_m) const {
   const std::size_t n = wavelengths().size();
   AerialPerspectiveSample sample{Spectrum(n, 0.0), Spectrum(n, 1.0), check_sun(sun.sun())};
   const auto& caps = descriptor().capabilities;
   if (sample.status == SampleStatus::ok &&
-      (!std::isfinite(viewpoint.altitude_m) || !std::isfinite(view.zenith_rad) || !std::isfinite(view.azimuth_rad) ||
-       view.zenith_rad < 0.0 || view.zenith_rad > kPi || std::isnan(distance_m) || distance_m < 0.0)) {
+      (!std::isfinite(viewpoint.altitude_m) || !std::isfinite(view.zenith_rad) ||
+       !std::isfinite(view.azimuth_rad) || view.zenith_rad < 0.0 || view.zenith_rad > kPi ||
+       std::isnan(distance_m) || distance_m < 0.0)) {
     sample.status = SampleStatus::invalid_input;
   }
   if (sample.status == SampleStatus::ok &&
@@ -303,7 +333,8 @@ AerialPerspectiveSample BrunetonModel::aerial_perspective(const SunState& sun, c
   const double mie_g = atmosphere().parameters.mie_phase_g;
   const AtmosphereSegment segment = atmosphere_segment(r, mu, g.bottom_m, g.top_m);
   const double d = std::min(distance_m - travelled, segment.end);
-  ScratchRow radiance_value(stride), transmittance_value(stride), far(stride), near_b(stride), far_b(stride);
+  ScratchRow radiance_value(stride), transmittance_value(stride), far(stride), near_b(stride),
+      far_b(stride);
   float* l = radiance_value.data();
   float* t = transmittance_value.data();
   tables_.transmittance_between(r, mu, d, t);
@@ -327,7 +358,8 @@ AerialPerspectiveSample BrunetonModel::aerial_perspective(const SunState& sun, c
       const double a = (mu - mu_horizon + kHorizonEpsilon) / (2.0 * kHorizonEpsilon);
       difference(mu_horizon - kHorizonEpsilon, l, far.data());
       difference(mu_horizon + kHorizonEpsilon, near_b.data(), far_b.data());
-      for (int w = 0; w < stride; ++w) l[w] = static_cast<float>((1.0 - a) * l[w] + a * near_b.data()[w]);
+      for (int w = 0; w < stride; ++w)
+        l[w] = static_cast<float>((1.0 - a) * l[w] + a * near_b.data()[w]);
     } else {
       difference(mu, l, far.data());
     }

@@ -3,14 +3,14 @@
 // of scattering precomputed into 4D tables over (r, mu, mu_s, nu), then O(1) queries from the
 // ground to space, with aerial perspective and the sun below the horizon.
 //
-// | parameter           | unit | default | range      | meaning                                     |
+// | parameter           | unit | default | range      | meaning |
 // |---------------------|------|---------|------------|---------------------------------------------|
-// | scattering_orders   | -    | 4       | [1, 10]    | orders of scattering precomputed            |
-// | table_r_size        | -    | 32      | [2, 128]   | 4D tables: altitudes (RES_R)                 |
-// | table_mu_size       | -    | 128     | [4, 512]   | 4D tables: view zenith cosines (RES_MU, even)|
-// | table_mu_s_size     | -    | 32      | [2, 128]   | 4D tables: sun zenith cosines (RES_MU_S)     |
-// | table_nu_size       | -    | 8       | [2, 64]    | 4D tables: view-sun angle cosines (RES_NU)   |
-// plus the shared atmosphere (alpha, beta, g, albedo; AtmosphereParameters).
+// | scattering_orders   | -    | 4       | [1, 10]    | orders of scattering precomputed | |
+// table_r_size        | -    | 32      | [2, 128]   | 4D tables: altitudes (RES_R) | |
+// table_mu_size       | -    | 128     | [4, 512]   | 4D tables: view zenith cosines (RES_MU,
+// even)| | table_mu_s_size     | -    | 32      | [2, 128]   | 4D tables: sun zenith cosines
+// (RES_MU_S)     | | table_nu_size       | -    | 8       | [2, 64]    | 4D tables: view-sun angle
+// cosines (RES_NU)   | plus the shared atmosphere (alpha, beta, g, albedo; AtmosphereParameters).
 //
 // Limits: the tables hold mu_s >= -0.1975, so the sun is answered up to 101.39 degrees zenith
 // (11.39 degrees below the horizon); beyond, the lookup would silently repeat that value, so
@@ -41,7 +41,8 @@ class BrunetonModel : public SkyModel {
   // Validates config against descriptor, then loads the tables from context.cache when a valid
   // blob exists, else precomputes them (and stores them in the cache). Throws
   // std::invalid_argument for an invalid config, PrecomputeCancelled when cancelled.
-  static std::shared_ptr<const BrunetonModel> create(const ModelDescriptor& descriptor, const ModelConfig& config,
+  static std::shared_ptr<const BrunetonModel> create(const ModelDescriptor& descriptor,
+                                                     const ModelConfig& config,
                                                      const PrecomputeContext& context);
 
   const ModelDescriptor& descriptor() const override { return *descriptor_; }
@@ -52,7 +53,8 @@ class BrunetonModel : public SkyModel {
   double precompute_seconds() const { return precompute_seconds_; }
 
   // The table resolution a configuration selects (options of the descriptor).
-  static bruneton::Resolution resolution(const ModelDescriptor& descriptor, const ModelConfig& config);
+  static bruneton::Resolution resolution(const ModelDescriptor& descriptor,
+                                         const ModelConfig& config);
   // What the tables depend on: implementation, table version, configuration. Elek shares the
   // tables of Bruneton for the same configuration.
   static std::string table_description(const ModelConfig& config);
@@ -62,11 +64,12 @@ class BrunetonModel : public SkyModel {
   // Aerial perspective: for a point at distance_m along the view (infinity: to the end of the
   // atmosphere or the ground), the in-scattered radiance between observer and point (all
   // orders) and the transmittance to the point. The ground's own radiance is not included.
-  AerialPerspectiveSample aerial_perspective(const SunState& sun, const Viewpoint& viewpoint, const ViewDirection& view,
-                                             double distance_m) const;
+  AerialPerspectiveSample aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
+                                             const ViewDirection& view, double distance_m) const;
 
  protected:
-  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint, std::span<const ViewDirection> views,
+  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
+                            std::span<const ViewDirection> views,
                             SpectralBatch& out) const override;
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
   // Horizontal planes in the atmosphere: the irradiance table; other planes and observers
@@ -75,7 +78,8 @@ class BrunetonModel : public SkyModel {
                                   const PlaneOrientation& plane) const override;
 
  private:
-  BrunetonModel(const ModelDescriptor& descriptor, ModelConfig config, const PrecomputeContext& context);
+  BrunetonModel(const ModelDescriptor& descriptor, ModelConfig config,
+                const PrecomputeContext& context);
 
   // Radiance seen along (r, mu) for the sun at (mu_s, nu), per unit solar irradiance:
   // scattering of all orders plus, when the ray hits the ground, the attenuated light the

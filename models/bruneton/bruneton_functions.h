@@ -32,9 +32,10 @@ struct Resolution {
   int nu = 8;                  // RES_NU
   int transmittance_steps = 500;
   int inscatter_steps = 50;
-  int sphere_samples = 16;      // density J: sphere_samples zeniths x 2 sphere_samples azimuths
-  int irradiance_samples = 32;  // irradiance: irradiance_samples/2 zeniths x 2 irradiance_samples azimuths
-  int orders = 4;               // scattering orders (1 = single scattering only)
+  int sphere_samples = 16;  // density J: sphere_samples zeniths x 2 sphere_samples azimuths
+  int irradiance_samples =
+      32;          // irradiance: irradiance_samples/2 zeniths x 2 irradiance_samples azimuths
+  int orders = 4;  // scattering orders (1 = single scattering only)
 
   long long texels_4d() const { return 1LL * r * mu * mu_s * nu; }
 };
@@ -113,7 +114,9 @@ inline double transmittance_texel_r(int j, int height, const ShellGeometry& g) {
   const double y = (j + 0.5) / height;
   return g.bottom_m + y * y * (g.top_m - g.bottom_m);
 }
-inline double transmittance_u_mu(double mu) { return std::atan((mu + 0.15) / 1.15 * std::tan(1.5)) / 1.5; }
+inline double transmittance_u_mu(double mu) {
+  return std::atan((mu + 0.15) / 1.15 * std::tan(1.5)) / 1.5;
+}
 inline double transmittance_u_r(double r, const ShellGeometry& g) {
   return std::sqrt(std::max(r - g.bottom_m, 0.0) / (g.top_m - g.bottom_m));
 }
@@ -127,7 +130,9 @@ inline double irradiance_texel_r(int j, int height, const ShellGeometry& g) {
   return g.bottom_m + j / (height - 1.0) * (g.top_m - g.bottom_m);
 }
 inline double irradiance_u_mu_s(double mu_s) { return (mu_s + 0.2) / 1.2; }
-inline double irradiance_u_r(double r, const ShellGeometry& g) { return (r - g.bottom_m) / (g.top_m - g.bottom_m); }
+inline double irradiance_u_r(double r, const ShellGeometry& g) {
+  return (r - g.bottom_m) / (g.top_m - g.bottom_m);
+}
 
 // --- 4D scattering tables (paper section 4, 2008 code) -------------------------------------
 // Layer l holds r with rho = sqrt(r^2 - Rg^2) = H l / (RES_R - 1), nudged 10 m up at the ground
@@ -176,9 +181,10 @@ inline double texel_mu_s(int i, int res_mu_s) {
 inline double texel_nu(int k, int res_nu) { return -1.0 + 2.0 * k / (res_nu - 1.0); }
 
 inline double u_mu_s(double mu_s, int res_mu_s) {
-  return 0.5 / res_mu_s + (std::atan(std::max(mu_s, kMinLookupMuS) * std::tan(1.26 * kMuSAngle)) / kMuSAngle +
-                           (1.0 - 0.26)) *
-                              0.5 * (1.0 - 1.0 / res_mu_s);
+  return 0.5 / res_mu_s +
+         (std::atan(std::max(mu_s, kMinLookupMuS) * std::tan(1.26 * kMuSAngle)) / kMuSAngle +
+          (1.0 - 0.26)) *
+             0.5 * (1.0 - 1.0 / res_mu_s);
 }
 
 // Where (r, mu, mu_s, nu) falls in a 4D table (the 2008 code's texture4D).
@@ -228,8 +234,8 @@ inline Axis nu_axis_4d(double nu, const Resolution& res) {
 
 inline Coord4 coordinates_4d(double r, double mu, double mu_s, double nu, const Resolution& res,
                              const ShellGeometry& g) {
-  return {r_axis_4d(r, res, g), mu_axis_4d(r, mu, res, g), texture_axis(u_mu_s(mu_s, res.mu_s), res.mu_s),
-          nu_axis_4d(nu, res)};
+  return {r_axis_4d(r, res, g), mu_axis_4d(r, mu, res, g),
+          texture_axis(u_mu_s(mu_s, res.mu_s), res.mu_s), nu_axis_4d(nu, res)};
 }
 
 // The largest sun zenith angle the tables cover: mu_s is clamped to -0.1975 before lookup.

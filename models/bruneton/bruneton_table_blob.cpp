@@ -92,9 +92,18 @@ class Reader {
 };
 
 int* resolution_fields(Resolution& r, int index) {
-  int* fields[13] = {&r.transmittance_mu,    &r.transmittance_r, &r.irradiance_mu_s, &r.irradiance_r,
-                     &r.r,                   &r.mu,              &r.mu_s,            &r.nu,
-                     &r.transmittance_steps, &r.inscatter_steps, &r.sphere_samples,  &r.irradiance_samples,
+  int* fields[13] = {&r.transmittance_mu,
+                     &r.transmittance_r,
+                     &r.irradiance_mu_s,
+                     &r.irradiance_r,
+                     &r.r,
+                     &r.mu,
+                     &r.mu_s,
+                     &r.nu,
+                     &r.transmittance_steps,
+                     &r.inscatter_steps,
+                     &r.sphere_samples,
+                     &r.irradiance_samples,
                      &r.orders};
   return fields[index];
 }
@@ -138,7 +147,8 @@ std::optional<Tables> deserialise_tables(std::string_view bytes, std::string_vie
   std::string_view magic;
   std::uint32_t version = 0, description_size = 0;
   std::string_view stored_description;
-  if (!r.bytes(sizeof(kMagic), magic) || magic != std::string_view(kMagic, sizeof(kMagic))) return std::nullopt;
+  if (!r.bytes(sizeof(kMagic), magic) || magic != std::string_view(kMagic, sizeof(kMagic)))
+    return std::nullopt;
   if (!r.value(version) || version != kTableFormatVersion) return std::nullopt;
   if (!r.value(description_size) || !r.bytes(description_size, stored_description) ||
       stored_description != description) {
@@ -157,8 +167,10 @@ std::optional<Tables> deserialise_tables(std::string_view bytes, std::string_vie
   }
   const Resolution& res = t.resolution;
   if (res.texels_4d() > (1LL << 28)) return std::nullopt;
-  if (!r.value(t.geometry.bottom_m) || !r.value(t.geometry.top_m) || !r.value(t.geometry.limit_m)) return std::nullopt;
-  if (!(t.geometry.bottom_m > 0.0 && t.geometry.top_m > t.geometry.bottom_m && t.geometry.limit_m > t.geometry.top_m)) {
+  if (!r.value(t.geometry.bottom_m) || !r.value(t.geometry.top_m) || !r.value(t.geometry.limit_m))
+    return std::nullopt;
+  if (!(t.geometry.bottom_m > 0.0 && t.geometry.top_m > t.geometry.bottom_m &&
+        t.geometry.limit_m > t.geometry.top_m)) {
     return std::nullopt;
   }
   t.transmittance.width = res.transmittance_mu;
@@ -167,8 +179,10 @@ std::optional<Tables> deserialise_tables(std::string_view bytes, std::string_vie
   t.sky_irradiance.width = res.irradiance_mu_s;
   t.sky_irradiance.height = res.irradiance_r;
   t.sky_irradiance.stride = stride;
-  if (!r.array(t.transmittance.values, static_cast<std::size_t>(res.transmittance_mu) * res.transmittance_r * stride) ||
-      !r.array(t.sky_irradiance.values, static_cast<std::size_t>(res.irradiance_mu_s) * res.irradiance_r * stride)) {
+  if (!r.array(t.transmittance.values,
+               static_cast<std::size_t>(res.transmittance_mu) * res.transmittance_r * stride) ||
+      !r.array(t.sky_irradiance.values,
+               static_cast<std::size_t>(res.irradiance_mu_s) * res.irradiance_r * stride)) {
     return std::nullopt;
   }
   const std::size_t values_4d = static_cast<std::size_t>(res.texels_4d()) * stride;
@@ -180,7 +194,8 @@ std::optional<Tables> deserialise_tables(std::string_view bytes, std::string_vie
     table->res_mu_s = res.mu_s;
     table->stride = stride;
     const bool optional = table == &t.multiple && res.orders == 1;
-    if (!r.array(table->values, optional ? 0 : values_4d) || !r.array(table->row_scale, optional ? 0 : rows_4d)) {
+    if (!r.array(table->values, optional ? 0 : values_4d) ||
+        !r.array(table->row_scale, optional ? 0 : rows_4d)) {
       return std::nullopt;
     }
   }

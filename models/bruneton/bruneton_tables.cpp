@@ -89,8 +89,8 @@ void lookup_2d(const FloatTable2D& t, double u, double v, float* out) {
 }  // namespace
 
 std::size_t Tables::bytes() const {
-  return (transmittance.values.size() + sky_irradiance.values.size()) * sizeof(float) + single_rayleigh.bytes() +
-         single_mie.bytes() + multiple.bytes();
+  return (transmittance.values.size() + sky_irradiance.values.size()) * sizeof(float) +
+         single_rayleigh.bytes() + single_mie.bytes() + multiple.bytes();
 }
 
 void Tables::transmittance_to_top(double r, double mu, float* out) const {
@@ -119,7 +119,8 @@ void Tables::irradiance(double r, double mu_s, float* out) const {
   lookup_2d(sky_irradiance, irradiance_u_mu_s(mu_s), irradiance_u_r(r, geometry), out);
 }
 
-void Tables::scattering(double r, double mu, double mu_s, double nu, double mie_g, float* out) const {
+void Tables::scattering(double r, double mu, double mu_s, double nu, double mie_g,
+                        float* out) const {
   scattering(coordinates_4d(r, mu, mu_s, nu, resolution, geometry), nu, mie_g, out);
 }
 
@@ -218,7 +219,8 @@ struct Builder {
         const double tau_m = optical_length(k.mie_height_m, r, mu, res.transmittance_steps, g);
         float* out = t.transmittance.texel(i, static_cast<int>(j));
         for (int w = 0; w < t.wavelengths; ++w) {
-          out[w] = static_cast<float>(std::exp(-(k.rayleigh[w] * tau_r + k.mie_extinction[w] * tau_m)));
+          out[w] =
+              static_cast<float>(std::exp(-(k.rayleigh[w] * tau_r + k.mie_extinction[w] * tau_m)));
         }
       }
     });
@@ -258,7 +260,8 @@ struct Builder {
     for (int i = 0; i <= n; ++i) {
       s.t[i] = i * dx;
       s.weight[i] = (i == 0 || i == n) ? dx / 2.0 : dx;
-      t.transmittance_between(r, mu, s.t[i], s.transmittance.data() + static_cast<std::size_t>(i) * stride);
+      t.transmittance_between(r, mu, s.t[i],
+                              s.transmittance.data() + static_cast<std::size_t>(i) * stride);
     }
     return s;
   }
@@ -276,7 +279,8 @@ struct Builder {
       const double mu = texel_mu(j, res.mu, l, g);
       const RaySamples s = ray_samples(r, mu);
       const int n = res.inscatter_steps;
-      std::vector<double> radius(n + 1), clamped(n + 1), density_r(n + 1), density_m(n + 1), horizon(n + 1);
+      std::vector<double> radius(n + 1), clamped(n + 1), density_r(n + 1), density_m(n + 1),
+          horizon(n + 1);
       std::vector<Axis> r_axis(n + 1);
       for (int i = 0; i <= n; ++i) {
         radius[i] = std::sqrt(r * r + s.t[i] * s.t[i] + 2.0 * r * mu * s.t[i]);
@@ -330,8 +334,8 @@ struct Builder {
   // either single scattering (Rayleigh and Mie tables, phase functions applied here) or the
   // previous order's scattering table.
   struct Source {
-    const HalfTable4D* rayleigh = nullptr;  // first order: single Rayleigh
-    const HalfTable4D* mie = nullptr;       // first order: single Mie
+    const HalfTable4D* rayleigh = nullptr;   // first order: single Rayleigh
+    const HalfTable4D* mie = nullptr;        // first order: single Mie
     const HalfTable4D* scattered = nullptr;  // later orders
     bool first() const { return scattered == nullptr; }
   };
@@ -380,7 +384,8 @@ struct Builder {
       cos_p[p] = std::cos((p + 0.5) * dphi);
       sin_p[p] = std::sin((p + 0.5) * dphi);
     }
-    const std::size_t layer_floats = static_cast<std::size_t>(res.mu) * j_table.row_texels() * stride;
+    const std::size_t layer_floats =
+        static_cast<std::size_t>(res.mu) * j_table.row_texels() * stride;
     std::vector<float> layer_values(layer_floats);
     for (int layer = 0; layer < res.r; ++layer) {
       const Layer l = layer_geometry(layer, res.r, g);
@@ -398,9 +403,10 @@ struct Builder {
         for (int i = 0; i < n_theta; ++i) {
           if (!(cos_t[i] < cos_theta_min)) continue;
           ground[i] = 1;
-          d_ground[i] = -r * cos_t[i] - safe_sqrt(r * r * (cos_t[i] * cos_t[i] - 1.0) + g.bottom_m * g.bottom_m);
-          t.transmittance_between(g.bottom_m, -(r * cos_t[i] + d_ground[i]) / g.bottom_m, d_ground[i],
-                                  transmittance.data());
+          d_ground[i] = -r * cos_t[i] -
+                        safe_sqrt(r * r * (cos_t[i] * cos_t[i] - 1.0) + g.bottom_m * g.bottom_m);
+          t.transmittance_between(g.bottom_m, -(r * cos_t[i] + d_ground[i]) / g.bottom_m,
+                                  d_ground[i], transmittance.data());
           for (int c = 0; c < n_e; ++c) {
             const float* e = delta_e.texel(c, 0);
             float* out = ground_light.data() + (static_cast<std::size_t>(i) * n_e + c) * stride;
@@ -410,11 +416,12 @@ struct Builder {
       }
       for_each(static_cast<std::size_t>(res.mu_s), [&](std::size_t ms_index) {
         const int ms = static_cast<int>(ms_index);
-        density_column(source, layer, ms, r, cos_theta_min, density_r, density_m, cos_t, sin_t, cos_p, sin_p, ground,
-                       d_ground, ground_light, n_e, layer_values.data());
+        density_column(source, layer, ms, r, cos_theta_min, density_r, density_m, cos_t, sin_t,
+                       cos_p, sin_p, ground, d_ground, ground_light, n_e, layer_values.data());
       });
       for_each(static_cast<std::size_t>(res.mu), [&](std::size_t j) {
-        j_table.store_row(layer, static_cast<int>(j), layer_values.data() + j * j_table.row_texels() * stride);
+        j_table.store_row(layer, static_cast<int>(j),
+                          layer_values.data() + j * j_table.row_texels() * stride);
       });
       progress.advance(progress_units / res.r, "multiple scattering: density");
     }
@@ -431,8 +438,9 @@ struct Builder {
                           const std::vector<double>& cos_t, const std::vector<double>& phase_r,
                           const std::vector<double>& phase_m, const std::vector<char>& ground,
                           const std::vector<double>& d_ground, int n_e, std::vector<double>& a_r,
-                          std::vector<double>& a_m, std::vector<double>& b_r, std::vector<double>& b_m,
-                          std::vector<double>& g_r, std::vector<double>& g_m,
+                          std::vector<double>& a_m, std::vector<double>& b_r,
+                          std::vector<double>& b_m, std::vector<double>& g_r,
+                          std::vector<double>& g_m,
                           std::vector<std::pair<int, int>>& ground_range) const {
     const int n_nu = res.nu;
     for (int i = 0; i < n_theta; ++i) {
@@ -488,11 +496,12 @@ struct Builder {
     }
   }
 
-  void density_column(const Source& source, int layer, int ms, double r, double /*cos_theta_min*/, float density_r,
-                      float density_m, const std::vector<double>& cos_t, const std::vector<double>& sin_t,
-                      const std::vector<double>& cos_p, const std::vector<double>& sin_p,
-                      const std::vector<char>& ground, const std::vector<double>& d_ground,
-                      const std::vector<float>& ground_light, int n_e, float* layer_values) const {
+  void density_column(const Source& source, int layer, int ms, double r, double /*cos_theta_min*/,
+                      float density_r, float density_m, const std::vector<double>& cos_t,
+                      const std::vector<double>& sin_t, const std::vector<double>& cos_p,
+                      const std::vector<double>& sin_p, const std::vector<char>& ground,
+                      const std::vector<double>& d_ground, const std::vector<float>& ground_light,
+                      int n_e, float* layer_values) const {
     (void)layer;
     const int n_theta = static_cast<int>(cos_t.size());
     const int n_phi = static_cast<int>(cos_p.size());
@@ -543,11 +552,13 @@ struct Builder {
         if (source.first()) {
           std::fill(b_r.begin(), b_r.end(), 0.0);
           std::fill(b_m.begin(), b_m.end(), 0.0);
-          accumulate_weights<true>(n_theta, n_phi, sx, sy, mu_s, r, wx, wy, cos_t, phase_r, phase_m, ground, d_ground,
-                                   n_e, a_r, a_m, b_r, b_m, g_r, g_m, ground_range);
+          accumulate_weights<true>(n_theta, n_phi, sx, sy, mu_s, r, wx, wy, cos_t, phase_r, phase_m,
+                                   ground, d_ground, n_e, a_r, a_m, b_r, b_m, g_r, g_m,
+                                   ground_range);
         } else {
-          accumulate_weights<false>(n_theta, n_phi, sx, sy, mu_s, r, wx, wy, cos_t, phase_r, phase_m, ground, d_ground,
-                                    n_e, a_r, a_m, b_r, b_m, g_r, g_m, ground_range);
+          accumulate_weights<false>(n_theta, n_phi, sx, sy, mu_s, r, wx, wy, cos_t, phase_r,
+                                    phase_m, ground, d_ground, n_e, a_r, a_m, b_r, b_m, g_r, g_m,
+                                    ground_range);
         }
         rows_r.clear();
         rows_m.clear();
@@ -578,7 +589,8 @@ struct Builder {
                                      static_cast<std::size_t>(knu) * res.mu_s + ms) *
                                         stride;
         for (int w = 0; w < stride; ++w) {
-          out[w] = k.rayleigh[w] * density_r * sum_r[w] + k.mie_scattering[w] * density_m * sum_m[w];
+          out[w] =
+              k.rayleigh[w] * density_r * sum_r[w] + k.mie_scattering[w] * density_m * sum_m[w];
         }
       }
     }
@@ -600,41 +612,42 @@ struct Builder {
       sin_t[it] = std::sin((it + 0.5) * dtheta);
     }
     for (int ip = 0; ip < 2 * n; ++ip) cos_p[ip] = std::cos((ip + 0.5) * dphi);
-    for_each(static_cast<std::size_t>(res.irradiance_mu_s) * res.irradiance_r, [&](std::size_t texel) {
-      const int i = static_cast<int>(texel % res.irradiance_mu_s);
-      const int j = static_cast<int>(texel / res.irradiance_mu_s);
-      const double r = irradiance_texel_r(j, res.irradiance_r, g);
-      const double mu_s = irradiance_texel_mu_s(i, res.irradiance_mu_s);
-      const double sx = std::sqrt(1.0 - mu_s * mu_s);
-      std::vector<float> profile_a, profile_b;
-      build_profiles(source, r, mu_s, cos_t, profile_a, profile_b);
-      const std::size_t n_profile = cos_t.size() * static_cast<std::size_t>(res.nu);
-      std::vector<double> weight_a(n_profile, 0.0), weight_b(n_profile, 0.0);
-      for (std::size_t it = 0; it < cos_t.size(); ++it) {
-        const double dw = dtheta * dphi * sin_t[it];
-        for (int ip = 0; ip < 2 * n; ++ip) {
-          const double nu = sx * cos_p[ip] * sin_t[it] + mu_s * cos_t[it];
-          const Axis slice = nu_axis_4d(nu, res);
-          const double w = cos_t[it] * dw;
-          const double wa = source.first() ? rayleigh_phase(nu) * w : w;
-          const std::size_t s0 = it * res.nu + slice.i0;
-          const std::size_t s1 = it * res.nu + slice.i1;
-          weight_a[s0] += (1.0 - slice.f) * wa;
-          weight_a[s1] += slice.f * wa;
-          if (source.first()) {
-            const double wb = cornette_shanks_phase(nu, k.mie_g) * w;
-            weight_b[s0] += (1.0 - slice.f) * wb;
-            weight_b[s1] += slice.f * wb;
-          }
-        }
-      }
-      RowList<float> rows;
-      for (std::size_t p = 0; p < n_profile; ++p) {
-        rows.add(profile_a.data() + p * stride, weight_a[p]);
-        if (source.first()) rows.add(profile_b.data() + p * stride, weight_b[p]);
-      }
-      rows.sum(stride, e.texel(i, j));
-    });
+    for_each(static_cast<std::size_t>(res.irradiance_mu_s) * res.irradiance_r,
+             [&](std::size_t texel) {
+               const int i = static_cast<int>(texel % res.irradiance_mu_s);
+               const int j = static_cast<int>(texel / res.irradiance_mu_s);
+               const double r = irradiance_texel_r(j, res.irradiance_r, g);
+               const double mu_s = irradiance_texel_mu_s(i, res.irradiance_mu_s);
+               const double sx = std::sqrt(1.0 - mu_s * mu_s);
+               std::vector<float> profile_a, profile_b;
+               build_profiles(source, r, mu_s, cos_t, profile_a, profile_b);
+               const std::size_t n_profile = cos_t.size() * static_cast<std::size_t>(res.nu);
+               std::vector<double> weight_a(n_profile, 0.0), weight_b(n_profile, 0.0);
+               for (std::size_t it = 0; it < cos_t.size(); ++it) {
+                 const double dw = dtheta * dphi * sin_t[it];
+                 for (int ip = 0; ip < 2 * n; ++ip) {
+                   const double nu = sx * cos_p[ip] * sin_t[it] + mu_s * cos_t[it];
+                   const Axis slice = nu_axis_4d(nu, res);
+                   const double w = cos_t[it] * dw;
+                   const double wa = source.first() ? rayleigh_phase(nu) * w : w;
+                   const std::size_t s0 = it * res.nu + slice.i0;
+                   const std::size_t s1 = it * res.nu + slice.i1;
+                   weight_a[s0] += (1.0 - slice.f) * wa;
+                   weight_a[s1] += slice.f * wa;
+                   if (source.first()) {
+                     const double wb = cornette_shanks_phase(nu, k.mie_g) * w;
+                     weight_b[s0] += (1.0 - slice.f) * wb;
+                     weight_b[s1] += slice.f * wb;
+                   }
+                 }
+               }
+               RowList<float> rows;
+               for (std::size_t p = 0; p < n_profile; ++p) {
+                 rows.add(profile_a.data() + p * stride, weight_a[p]);
+                 if (source.first()) rows.add(profile_b.data() + p * stride, weight_b[p]);
+               }
+               rows.sum(stride, e.texel(i, j));
+             });
     return e;
   }
 
@@ -653,7 +666,8 @@ struct Builder {
       std::vector<double> radius(n + 1);
       std::vector<Axis> r_axis(n + 1), mu_axis(n + 1);
       for (int i = 0; i <= n; ++i) {
-        radius[i] = std::max(std::sqrt(r * r + s.t[i] * s.t[i] + 2.0 * r * mu * s.t[i]), g.bottom_m + 10.0);
+        radius[i] =
+            std::max(std::sqrt(r * r + s.t[i] * s.t[i] + 2.0 * r * mu * s.t[i]), g.bottom_m + 10.0);
         const double mu_i = (r * mu + s.t[i]) / radius[i];
         r_axis[i] = r_axis_4d(radius[i], res, g);
         mu_axis[i] = mu_axis_4d(radius[i], mu_i, res, g);
@@ -669,7 +683,8 @@ struct Builder {
           float* acc = values.data() + (static_cast<std::size_t>(knu) * res.mu_s + ms) * stride;
           for (int i = 0; i <= n; ++i) {
             const double mu_s_i = (nu * s.t[i] + mu_s * r) / radius[i];
-            const Coord4 c{r_axis[i], mu_axis[i], texture_axis(u_mu_s(mu_s_i, res.mu_s), res.mu_s), nu_axis};
+            const Coord4 c{r_axis[i], mu_axis[i], texture_axis(u_mu_s(mu_s_i, res.mu_s), res.mu_s),
+                           nu_axis};
             list.clear();
             gather_4d(j_table, c, 1.0, list);
             list.sum(stride, sample.data());
@@ -680,7 +695,8 @@ struct Builder {
         }
       }
       out_table.store_row(layer, jm, values.data());
-      if (jm == res.mu - 1) progress.advance(progress_units / res.r, "multiple scattering: transport");
+      if (jm == res.mu - 1)
+        progress.advance(progress_units / res.r, "multiple scattering: transport");
     });
   }
 
@@ -705,7 +721,8 @@ void validate(const Resolution& res) {
   };
   require(res.r >= 2 && res.mu >= 4 && res.mu % 2 == 0 && res.mu_s >= 2 && res.nu >= 2,
           "resolution: 4D table sizes too small (r >= 2, mu >= 4 and even, mu_s >= 2, nu >= 2)");
-  require(res.transmittance_mu >= 2 && res.transmittance_r >= 2 && res.irradiance_mu_s >= 2 && res.irradiance_r >= 2,
+  require(res.transmittance_mu >= 2 && res.transmittance_r >= 2 && res.irradiance_mu_s >= 2 &&
+              res.irradiance_r >= 2,
           "resolution: 2D table sizes too small");
   require(res.transmittance_steps >= 1 && res.inscatter_steps >= 1 && res.sphere_samples >= 1 &&
               res.irradiance_samples >= 2 && res.orders >= 1,

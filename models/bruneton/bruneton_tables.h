@@ -34,8 +34,12 @@ struct FloatTable2D {
   std::vector<float> values;
 
   void allocate(int w, int h, int s);
-  const float* texel(int x, int y) const { return values.data() + (static_cast<std::size_t>(y) * width + x) * stride; }
-  float* texel(int x, int y) { return values.data() + (static_cast<std::size_t>(y) * width + x) * stride; }
+  const float* texel(int x, int y) const {
+    return values.data() + (static_cast<std::size_t>(y) * width + x) * stride;
+  }
+  float* texel(int x, int y) {
+    return values.data() + (static_cast<std::size_t>(y) * width + x) * stride;
+  }
 };
 
 // A 4D table of spectra in binary16, indexed (r, mu, nu, mu_s) with mu_s fastest (the 2008
@@ -57,7 +61,9 @@ struct HalfTable4D {
   // stride), choosing the row's scale from its largest magnitude.
   void store_row(int r, int mu, const float* row);
   void load_row(int r, int mu, float* row) const;
-  std::size_t bytes() const { return values.size() * sizeof(std::uint16_t) + row_scale.size() * sizeof(float); }
+  std::size_t bytes() const {
+    return values.size() * sizeof(std::uint16_t) + row_scale.size() * sizeof(float);
+  }
 };
 
 // The rows and weights of one lookup, summed by sum_rows().
@@ -110,7 +116,8 @@ void gather_4d(const HalfTable4D& table, const Coord4& c, double weight, List& l
     for (int b = 0; b < 2; ++b) {
       const double w_rmu = r_weight[a] * mu_weight[b];
       if (w_rmu == 0.0) continue;
-      const double w_row = weight * w_rmu * table.row_scale[table.row_index(r_index[a], mu_index[b])];
+      const double w_row =
+          weight * w_rmu * table.row_scale[table.row_index(r_index[a], mu_index[b])];
       for (int d = 0; d < 2; ++d) {
         if (nu_weight[d] == 0.0) continue;
         for (int e = 0; e < 2; ++e) {
@@ -131,7 +138,7 @@ struct Tables {
   FloatTable2D sky_irradiance;  // irradiance_mu_s x irradiance_r, per unit solar irradiance
   HalfTable4D single_rayleigh;  // per unit solar irradiance, without phase function
   HalfTable4D single_mie;       // per unit solar irradiance, without phase function
-  HalfTable4D multiple;         // orders 2..orders, 1/sr per unit solar irradiance; empty for 1 order
+  HalfTable4D multiple;  // orders 2..orders, 1/sr per unit solar irradiance; empty for 1 order
 
   std::size_t bytes() const;
 

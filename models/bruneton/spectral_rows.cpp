@@ -18,7 +18,7 @@ std::uint16_t float_to_half(float value) {
   const std::uint32_t x = std::bit_cast<std::uint32_t>(value);
   const std::uint32_t sign = (x >> 16) & 0x8000u;
   const std::uint32_t magnitude = x & 0x7fffffffu;
-  if (magnitude > 0x7f800000u) return static_cast<std::uint16_t>(sign | 0x7e00u);  // NaN
+  if (magnitude > 0x7f800000u) return static_cast<std::uint16_t>(sign | 0x7e00u);   // NaN
   if (magnitude >= 0x477ff000u) return static_cast<std::uint16_t>(sign | 0x7bffu);  // saturate
   if (magnitude < 0x38800000u) {
     // Below the smallest normal half (2^-14): a subnormal m * 2^-24, or zero.
@@ -76,8 +76,8 @@ void sum_rows_f32_portable(const float* const* rows, const float* weights, int c
 
 #ifdef CLEARSKY_BRUNETON_X86
 __attribute__((target("avx2,fma,f16c"))) void sum_rows_f32_avx2(const float* const* rows,
-                                                                 const float* weights, int count,
-                                                                 int stride, float* out) {
+                                                                const float* weights, int count,
+                                                                int stride, float* out) {
   int c = 0;
   for (; c + 32 <= stride; c += 32) {
     __m256 a0 = _mm256_setzero_ps(), a1 = _mm256_setzero_ps(), a2 = _mm256_setzero_ps(),
@@ -97,7 +97,8 @@ __attribute__((target("avx2,fma,f16c"))) void sum_rows_f32_avx2(const float* con
   }
   for (; c < stride; c += 8) {
     __m256 a = _mm256_setzero_ps();
-    for (int k = 0; k < count; ++k) a = _mm256_fmadd_ps(_mm256_set1_ps(weights[k]), _mm256_loadu_ps(rows[k] + c), a);
+    for (int k = 0; k < count; ++k)
+      a = _mm256_fmadd_ps(_mm256_set1_ps(weights[k]), _mm256_loadu_ps(rows[k] + c), a);
     _mm256_storeu_ps(out + c, a);
   }
 }
@@ -107,8 +108,8 @@ __attribute__((target("avx2,fma,f16c"))) inline __m256 load_halves(const std::ui
 }
 
 __attribute__((target("avx2,fma,f16c"))) void sum_rows_f16_avx2(const std::uint16_t* const* rows,
-                                                                 const float* weights, int count,
-                                                                 int stride, float* out) {
+                                                                const float* weights, int count,
+                                                                int stride, float* out) {
   int c = 0;
   for (; c + 32 <= stride; c += 32) {
     __m256 a0 = _mm256_setzero_ps(), a1 = _mm256_setzero_ps(), a2 = _mm256_setzero_ps(),
@@ -128,18 +129,20 @@ __attribute__((target("avx2,fma,f16c"))) void sum_rows_f16_avx2(const std::uint1
   }
   for (; c < stride; c += 8) {
     __m256 a = _mm256_setzero_ps();
-    for (int k = 0; k < count; ++k) a = _mm256_fmadd_ps(_mm256_set1_ps(weights[k]), load_halves(rows[k] + c), a);
+    for (int k = 0; k < count; ++k)
+      a = _mm256_fmadd_ps(_mm256_set1_ps(weights[k]), load_halves(rows[k] + c), a);
     _mm256_storeu_ps(out + c, a);
   }
 }
 
 __attribute__((target("avx2,fma,f16c"))) void floats_to_halves_avx2(const float* in, float scale,
-                                                                     std::uint16_t* out,
-                                                                     std::size_t n) {
+                                                                    std::uint16_t* out,
+                                                                    std::size_t n) {
   const __m256 s = _mm256_set1_ps(scale);
   std::size_t i = 0;
   for (; i + 8 <= n; i += 8) {
-    const __m128i h = _mm256_cvtps_ph(_mm256_mul_ps(_mm256_loadu_ps(in + i), s), _MM_FROUND_TO_NEAREST_INT);
+    const __m128i h =
+        _mm256_cvtps_ph(_mm256_mul_ps(_mm256_loadu_ps(in + i), s), _MM_FROUND_TO_NEAREST_INT);
     _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), h);
   }
   for (; i < n; ++i) out[i] = float_to_half(in[i] * scale);
@@ -147,7 +150,8 @@ __attribute__((target("avx2,fma,f16c"))) void floats_to_halves_avx2(const float*
 
 bool cpu_has_avx2_f16c() {
   __builtin_cpu_init();
-  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("f16c");
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
+         __builtin_cpu_supports("f16c");
 }
 #else
 bool cpu_has_avx2_f16c() { return false; }
@@ -163,7 +167,8 @@ struct Kernels {
 const Kernels& kernels() {
   static const Kernels k = [] {
 #ifdef CLEARSKY_BRUNETON_X86
-    if (cpu_has_avx2_f16c()) return Kernels{sum_rows_f32_avx2, sum_rows_f16_avx2, floats_to_halves_avx2, true};
+    if (cpu_has_avx2_f16c())
+      return Kernels{sum_rows_f32_avx2, sum_rows_f16_avx2, floats_to_halves_avx2, true};
 #endif
     half_table();
     return Kernels{sum_rows_f32_portable, portable::sum_rows, portable::floats_to_halves, false};

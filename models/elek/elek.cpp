@@ -20,11 +20,14 @@ const ModelDescriptor& elek_descriptor() {
     m.name = std::string("Elek 2010");
     m.version = std::string("1");
     m.citation =
-        "O. Elek and P. Kmoch, Real-time spectral scattering in large-scale natural participating media, "
+        "O. Elek and P. Kmoch, Real-time spectral scattering in large-scale natural participating "
+        "media, "
         "Spring Conference on Computer Graphics (SCCG) 2010, 83-90";
     m.summary =
-        "The precomputed 4D scattering tables of Bruneton 2008 (same implementation, resolutions and 4 "
-        "scattering orders) computed on 15 wavelengths (360..720 nm, 24 nm apart) and converted to RGB at the end; "
+        "The precomputed 4D scattering tables of Bruneton 2008 (same implementation, resolutions "
+        "and 4 "
+        "scattering orders) computed on 15 wavelengths (360..720 nm, 24 nm apart) and converted to "
+        "RGB at the end; "
         "on the 2016 study's 40-wavelength grid it is identical to Bruneton.";
     m.native_wavelengths_nm = elek_native_grid().nanometres();
     return m;
@@ -34,7 +37,8 @@ const ModelDescriptor& elek_descriptor() {
 
 ModelFactory elek_factory() {
   return {&elek_descriptor(), [](const ModelConfig& config, const PrecomputeContext& context) {
-            return std::shared_ptr<const SkyModel>(BrunetonModel::create(elek_descriptor(), config, context));
+            return std::shared_ptr<const SkyModel>(
+                BrunetonModel::create(elek_descriptor(), config, context));
           }};
 }
 

@@ -24,7 +24,9 @@ namespace {
 
 class FileTableCache : public TableCache {
  public:
-  explicit FileTableCache(std::filesystem::path dir) : dir_(std::move(dir)) { std::filesystem::create_directories(dir_); }
+  explicit FileTableCache(std::filesystem::path dir) : dir_(std::move(dir)) {
+    std::filesystem::create_directories(dir_);
+  }
   std::optional<std::string> load(const std::string& key) const override {
     std::ifstream in(dir_ / key, std::ios::binary);
     if (!in) return std::nullopt;
@@ -68,7 +70,8 @@ std::vector<ViewDirection> evaluation_directions() {
   const double zeniths[] = {18.0813, 36.6335, 56.2510, 77.8849};
   const int counts[] = {8, 16, 24, 32};
   for (int ring = 0; ring < 4; ++ring) {
-    for (int i = 0; i < counts[ring]; ++i) views.push_back({degrees_to_radians(zeniths[ring]), 2.0 * kPi * i / counts[ring]});
+    for (int i = 0; i < counts[ring]; ++i)
+      views.push_back({degrees_to_radians(zeniths[ring]), 2.0 * kPi * i / counts[ring]});
   }
   return views;
 }
@@ -95,7 +98,8 @@ void BM_BrunetonSettings(benchmark::State& state) {
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
     const auto model = BrunetonModel::create(bruneton_descriptor(), config, {});
-    state.counters["precompute_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    state.counters["precompute_s"] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     state.counters["table_MB"] = static_cast<double>(model->table_bytes()) / 1e6;
     state.PauseTiming();
     try {
@@ -141,7 +145,10 @@ void BM_BrunetonLoadFromDiskCache(benchmark::State& state) {
     benchmark::DoNotOptimize(model.get());
   }
 }
-BENCHMARK(BM_BrunetonLoadFromDiskCache)->Unit(benchmark::kMillisecond)->Iterations(3)->UseRealTime();
+BENCHMARK(BM_BrunetonLoadFromDiskCache)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3)
+    ->UseRealTime();
 
 void BM_BrunetonRadiance(benchmark::State& state) {
   const BrunetonModel& model = paper_model();
@@ -152,7 +159,8 @@ void BM_BrunetonRadiance(benchmark::State& state) {
     model.sky_radiance(*sun, {0.0}, view, out);
     benchmark::DoNotOptimize(out.values.data());
   }
-  state.SetLabel(bruneton::using_avx2_kernels() ? "40 wavelengths, AVX2" : "40 wavelengths, portable");
+  state.SetLabel(bruneton::using_avx2_kernels() ? "40 wavelengths, AVX2"
+                                                : "40 wavelengths, portable");
 }
 BENCHMARK(BM_BrunetonRadiance)->Unit(benchmark::kNanosecond);
 
@@ -200,7 +208,8 @@ void BM_BrunetonAerialPerspective(benchmark::State& state) {
   const BrunetonModel& model = paper_model();
   const auto sun = model.prepare_sun({degrees_to_radians(35.0), 0.0});
   const ViewDirection view{degrees_to_radians(85.0), 1.0};
-  for (auto _ : state) benchmark::DoNotOptimize(model.aerial_perspective(*sun, {100.0}, view, 15e3));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(model.aerial_perspective(*sun, {100.0}, view, 15e3));
 }
 BENCHMARK(BM_BrunetonAerialPerspective)->Unit(benchmark::kNanosecond);
 

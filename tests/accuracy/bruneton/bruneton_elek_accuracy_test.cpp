@@ -46,7 +46,8 @@ TEST(BrunetonElekAccuracy, PaperRmseOnThe15PublicCaptures) {
   options.context.cache = &cache;
   const auto& captures = testing::public_captures();
 
-  const EvaluationResult bruneton = evaluate_model(*find_model("bruneton"), ModelConfig{}, captures, options);
+  const EvaluationResult bruneton =
+      evaluate_model(*find_model("bruneton"), ModelConfig{}, captures, options);
   RecordProperty("bruneton_rmse", std::to_string(bruneton.rmse));
   RecordProperty("bruneton_precompute_seconds", std::to_string(bruneton.precompute_seconds));
   RecordProperty("bruneton_evaluate_seconds", std::to_string(bruneton.evaluate_seconds));
@@ -56,12 +57,14 @@ TEST(BrunetonElekAccuracy, PaperRmseOnThe15PublicCaptures) {
   RecordProperty("bruneton_rmse_10h15", std::to_string(bruneton.captures[3].rmse));
   RecordProperty("bruneton_rmse_11h15", std::to_string(bruneton.captures[7].rmse));
 
-  const EvaluationResult elek = evaluate_model(*find_model("elek"), ModelConfig{}, captures, options);
+  const EvaluationResult elek =
+      evaluate_model(*find_model("elek"), ModelConfig{}, captures, options);
   RecordProperty("elek_rmse", std::to_string(elek.rmse));
   RecordProperty("elek_precompute_seconds", std::to_string(elek.precompute_seconds));
   EXPECT_NEAR(elek.rmse, kStudyRmse, 0.03 * kStudyRmse);
   // Identical on the paper's grid, capture by capture.
-  for (std::size_t i = 0; i < captures.size(); ++i) EXPECT_EQ(elek.captures[i].rmse, bruneton.captures[i].rmse) << i;
+  for (std::size_t i = 0; i < captures.size(); ++i)
+    EXPECT_EQ(elek.captures[i].rmse, bruneton.captures[i].rmse) << i;
 }
 
 }  // namespace

@@ -22,10 +22,11 @@ TEST(BrunetonFunctions, LimitDistanceIsGroundOrLimitSphere) {
   // the ray reaches the limit sphere.
   EXPECT_EQ(limit_distance(kShell.bottom_m, 0.0, kShell), 0.0);
   const double mu = 1e-3;
-  EXPECT_NEAR(limit_distance(kShell.bottom_m, mu, kShell),
-              -kShell.bottom_m * mu + std::sqrt(kShell.bottom_m * kShell.bottom_m * (mu * mu - 1.0) +
-                                                kShell.limit_m * kShell.limit_m),
-              1e-6);
+  EXPECT_NEAR(
+      limit_distance(kShell.bottom_m, mu, kShell),
+      -kShell.bottom_m * mu + std::sqrt(kShell.bottom_m * kShell.bottom_m * (mu * mu - 1.0) +
+                                        kShell.limit_m * kShell.limit_m),
+      1e-6);
 }
 
 TEST(BrunetonFunctions, HorizonCosine) {
@@ -73,7 +74,8 @@ TEST(BrunetonFunctions, ViewCosinesLandOnTheirTexels) {
     for (int j = 2; j < kRes.mu - 2; ++j) {
       if (j == kRes.mu / 2 - 1 || j == kRes.mu / 2) continue;
       const double mu = texel_mu(j, kRes.mu, l, kShell);
-      if (std::abs(mu - (horizon_mu(l.r, kShell) - 0.001)) < 1e-12 || std::abs(mu) > 1.0 - 1e-9) continue;
+      if (std::abs(mu - (horizon_mu(l.r, kShell) - 0.001)) < 1e-12 || std::abs(mu) > 1.0 - 1e-9)
+        continue;
       ASSERT_GE(mu, -1.0);
       ASSERT_LE(mu, 1.0);
       const Axis a = mu_axis_4d(l.r, mu, kRes, kShell);

@@ -1,8 +1,6 @@
 // Bruneton 2008: the tables against their definitions and a direct numerical integration,
 // the queries' physics (transmittance, irradiance, views from space, aerial perspective),
 // continuity across the horizon and over sun zeniths, the cache, cancellation.
-#include "models/bruneton/bruneton.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +10,7 @@
 #include <vector>
 
 #include "models/atmosphere/phase_functions.h"
+#include "models/bruneton/bruneton.h"
 #include "models/registry.h"
 #include "tests/models/bruneton/bruneton_test_support.h"
 
@@ -21,7 +20,8 @@ namespace {
 using testing::MemoryTableCache;
 using testing::small_bruneton_config;
 
-std::shared_ptr<const BrunetonModel> make(const ModelConfig& config, const PrecomputeContext& context = {}) {
+std::shared_ptr<const BrunetonModel> make(const ModelConfig& config,
+                                          const PrecomputeContext& context = {}) {
   return BrunetonModel::create(bruneton_descriptor(), config, context);
 }
 
@@ -97,8 +97,9 @@ double optical_length(double scale_height, double r, double mu, double d, int st
 // Single scattering without phase function (Bruneton and Neyret 2008 Eq. 6 with the phase
 // function factored out), per unit solar irradiance, at one wavelength, integrated directly:
 // every transmittance from its own optical length, no table.
-void reference_single_scattering(const AtmosphereSpectra& a, std::size_t w, const bruneton::ShellGeometry& g,
-                                 double r, double mu, double mu_s, double nu, double& rayleigh, double& mie) {
+void reference_single_scattering(const AtmosphereSpectra& a, std::size_t w,
+                                 const bruneton::ShellGeometry& g, double r, double mu, double mu_s,
+                                 double nu, double& rayleigh, double& mie) {
   const double hr = a.parameters.rayleigh_scale_height_m;
   const double hm = a.parameters.mie_scale_height_m;
   const double br = a.rayleigh_scattering_per_m[w];
@@ -160,7 +161,8 @@ TEST(BrunetonTables, SingleScatteringLookupMatchesDirectIntegration) {
     const double mu = 2.0 * uniform(rng) - 1.0;
     const double mu_s = -0.1 + 1.1 * uniform(rng);
     const double phi = kPi * uniform(rng);
-    const double nu = mu * mu_s + std::sqrt(1.0 - mu * mu) * std::sqrt(1.0 - mu_s * mu_s) * std::cos(phi);
+    const double nu =
+        mu * mu_s + std::sqrt(1.0 - mu * mu) * std::sqrt(1.0 - mu_s * mu_s) * std::cos(phi);
     if (mu < bruneton::horizon_mu(r, g) + 0.02 || mu_s < 0.05) continue;
     bruneton::FixedRowList<std::uint16_t, 32> list;
     const bruneton::Coord4 c = bruneton::coordinates_4d(r, mu, mu_s, nu, t.resolution, g);
@@ -171,7 +173,8 @@ TEST(BrunetonTables, SingleScatteringLookupMatchesDirectIntegration) {
     for (std::size_t w = 0; w < 2; ++w) {
       double ref_r = 0, ref_m = 0;
       reference_single_scattering(model->atmosphere(), w, g, r, mu, mu_s, nu, ref_r, ref_m);
-      const double reference = ref_r * rayleigh_phase(nu) + ref_m * cornette_shanks_phase(nu, mie_g);
+      const double reference =
+          ref_r * rayleigh_phase(nu) + ref_m * cornette_shanks_phase(nu, mie_g);
       ASSERT_GT(reference, 0.0);
       errors.push_back(std::abs(table[w] - reference) / reference);
     }
@@ -198,8 +201,9 @@ TEST(BrunetonQueries, SunIrradianceIsTheTransmittanceOfTheSlantPath) {
   const double hr = a.parameters.rayleigh_scale_height_m;
   const double hm = a.parameters.mie_scale_height_m;
   for (double zenith_deg : {0.0, 60.0}) {
-    const double mu = zenith_deg == 0.0 ? bruneton::transmittance_texel_mu(m.tables().resolution.transmittance_mu - 1,
-                                                                            m.tables().resolution.transmittance_mu)
+    const double mu = zenith_deg == 0.0 ? bruneton::transmittance_texel_mu(
+                                              m.tables().resolution.transmittance_mu - 1,
+                                              m.tables().resolution.transmittance_mu)
                                         : std::cos(degrees_to_radians(zenith_deg));
     const double length = bruneton::limit_distance(g.bottom_m, mu, g);
     const double od_r = optical_length(hr, g.bottom_m, mu, length, 20000, g.bottom_m);
@@ -208,7 +212,8 @@ TEST(BrunetonQueries, SunIrradianceIsTheTransmittanceOfTheSlantPath) {
     const SpectralSample ground = m.sun_irradiance(*sun, {0.0});
     ASSERT_EQ(ground.status, SampleStatus::ok);
     for (std::size_t w = 0; w < a.grid.size(); ++w) {
-      const double expected = std::exp(-(a.rayleigh_scattering_per_m[w] * od_r + a.mie_extinction_per_m[w] * od_m));
+      const double expected =
+          std::exp(-(a.rayleigh_scattering_per_m[w] * od_r + a.mie_extinction_per_m[w] * od_m));
       const double ratio = ground.value[w] / a.solar_irradiance_w_m2_nm[w] / expected;
       EXPECT_NEAR(ratio, 1.0, 0.002) << zenith_deg << " " << w;
     }
@@ -216,7 +221,8 @@ TEST(BrunetonQueries, SunIrradianceIsTheTransmittanceOfTheSlantPath) {
   const auto sun = m.prepare_sun({0.0, 0.0});
   const SpectralSample space = m.sun_irradiance(*sun, {500e3});
   for (std::size_t w = 0; w < a.grid.size(); ++w) {
-    EXPECT_DOUBLE_EQ(space.value[w], static_cast<double>(static_cast<float>(a.solar_irradiance_w_m2_nm[w])));
+    EXPECT_DOUBLE_EQ(space.value[w],
+                     static_cast<double>(static_cast<float>(a.solar_irradiance_w_m2_nm[w])));
   }
   // The sun below the geometric horizon: no direct light.
   const auto night = m.prepare_sun({degrees_to_radians(95.0), 0.0});
@@ -236,7 +242,8 @@ TEST(BrunetonQueries, HorizontalSkyIrradianceMatchesTheRadianceQuadrature) {
   }
 }
 
-SpectralBatch radiance(const SkyModel& m, double sun_zenith_deg, double altitude_m, std::vector<ViewDirection> views) {
+SpectralBatch radiance(const SkyModel& m, double sun_zenith_deg, double altitude_m,
+                       std::vector<ViewDirection> views) {
   const auto sun = m.prepare_sun({degrees_to_radians(sun_zenith_deg), 0.0});
   SpectralBatch out;
   m.sky_radiance(*sun, {altitude_m}, views, out);
@@ -264,7 +271,8 @@ TEST(BrunetonQueries, AerialPerspectiveLimits) {
   const auto sun = m.prepare_sun({degrees_to_radians(45.0), 0.0});
   const ViewDirection view{degrees_to_radians(80.0), degrees_to_radians(30.0)};
   const AerialPerspectiveSample none = m.aerial_perspective(*sun, {100.0}, view, 0.0);
-  const AerialPerspectiveSample all = m.aerial_perspective(*sun, {100.0}, view, std::numeric_limits<double>::infinity());
+  const AerialPerspectiveSample all =
+      m.aerial_perspective(*sun, {100.0}, view, std::numeric_limits<double>::infinity());
   ASSERT_EQ(all.status, SampleStatus::ok);
   SpectralBatch sky;
   const std::vector<ViewDirection> views = {view};
@@ -292,17 +300,21 @@ TEST(BrunetonQueries, AerialPerspectiveLimits) {
   const AtmosphereSpectra& a = m.atmosphere();
   const double r = m.tables().geometry.bottom_m + 100.0;
   const double mu = std::cos(view.zenith_rad);
-  const double od_r = optical_length(a.parameters.rayleigh_scale_height_m, r, mu, 20e3, 4000, m.tables().geometry.bottom_m);
-  const double od_m = optical_length(a.parameters.mie_scale_height_m, r, mu, 20e3, 4000, m.tables().geometry.bottom_m);
+  const double od_r = optical_length(a.parameters.rayleigh_scale_height_m, r, mu, 20e3, 4000,
+                                     m.tables().geometry.bottom_m);
+  const double od_m = optical_length(a.parameters.mie_scale_height_m, r, mu, 20e3, 4000,
+                                     m.tables().geometry.bottom_m);
   for (std::size_t w = 0; w < 3; ++w) {
-    const double expected = std::exp(-(a.rayleigh_scattering_per_m[w] * od_r + a.mie_extinction_per_m[w] * od_m));
+    const double expected =
+        std::exp(-(a.rayleigh_scattering_per_m[w] * od_r + a.mie_extinction_per_m[w] * od_m));
     EXPECT_NEAR(slant.transmittance[w], expected, 0.01 * expected) << w;
   }
   EXPECT_EQ(m.aerial_perspective(*sun, {0.0}, view, -1.0).status, SampleStatus::invalid_input);
 }
 
 // Relative change between neighbouring samples of a sweep.
-double largest_step(const std::vector<double>& values, std::size_t skip = static_cast<std::size_t>(-1)) {
+double largest_step(const std::vector<double>& values,
+                    std::size_t skip = static_cast<std::size_t>(-1)) {
   double largest = 0.0;
   for (std::size_t i = 1; i < values.size(); ++i) {
     if (i == skip) continue;
@@ -321,10 +333,11 @@ double largest_step(const std::vector<double>& values, std::size_t skip = static
 TEST(BrunetonContinuity, AcrossTheHorizon) {
   const BrunetonModel& m = small_model();
   for (double altitude : {0.0, 1000.0, 10e3}) {
-    const double horizon_deg =
-        radians_to_degrees(std::acos(bruneton::horizon_mu(m.tables().geometry.bottom_m + altitude, m.tables().geometry)));
+    const double horizon_deg = radians_to_degrees(std::acos(
+        bruneton::horizon_mu(m.tables().geometry.bottom_m + altitude, m.tables().geometry)));
     std::vector<ViewDirection> views;
-    for (int i = -40; i <= 40; ++i) views.push_back({degrees_to_radians(horizon_deg + 0.05 * i + 0.025), 1.0});
+    for (int i = -40; i <= 40; ++i)
+      views.push_back({degrees_to_radians(horizon_deg + 0.05 * i + 0.025), 1.0});
     const SpectralBatch out = radiance(m, 60.0, altitude, views);
     for (std::size_t w = 0; w < 3; ++w) {
       std::vector<double> l;
@@ -345,7 +358,8 @@ TEST(BrunetonContinuity, AcrossTheHorizon) {
   const SpectralSample sky = m.sky_irradiance(*sun, {0.0});
   const SpectralBatch grass = radiance(m, 60.0, 0.0, {{degrees_to_radians(91.0), 2.0}});
   for (std::size_t w = 0; w < 3; ++w) {
-    const double expected = m.atmosphere().ground_albedo[w] / kPi * (direct.value[w] * 0.5 + sky.value[w]);
+    const double expected =
+        m.atmosphere().ground_albedo[w] / kPi * (direct.value[w] * 0.5 + sky.value[w]);
     EXPECT_NEAR(grass.spectrum(0)[w], expected, 0.01 * expected) << w;
     EXPECT_GE(grass.spectrum(0)[w], expected * (1.0 - 1e-6)) << w;
   }
@@ -355,7 +369,8 @@ TEST(BrunetonContinuity, SunFromZenithToBelowTheHorizon) {
   const BrunetonModel& m = small_model();
   const double max_zenith = m.descriptor().capabilities.max_sun_zenith_deg;
   EXPECT_NEAR(max_zenith, 101.39, 0.01);
-  const std::vector<ViewDirection> views = {{0.0, 0.0}, {degrees_to_radians(70.0), 0.3}, {degrees_to_radians(85.0), 3.0}};
+  const std::vector<ViewDirection> views = {
+      {0.0, 0.0}, {degrees_to_radians(70.0), 0.3}, {degrees_to_radians(85.0), 3.0}};
   std::vector<std::vector<double>> series(views.size() * 3);
   for (double sun_zenith = 0.0; sun_zenith <= max_zenith; sun_zenith += 0.25) {
     const SpectralBatch out = radiance(m, sun_zenith, 0.0, views);
@@ -370,7 +385,8 @@ TEST(BrunetonContinuity, SunFromZenithToBelowTheHorizon) {
     const std::vector<double> day(s.begin(), s.begin() + 4 * 85);
     EXPECT_LT(largest_step(day), 0.08);
     const double largest = *std::max_element(s.begin(), s.end());
-    for (std::size_t i = 1; i < s.size(); ++i) EXPECT_LT(std::abs(s[i] - s[i - 1]), 0.05 * largest) << i;
+    for (std::size_t i = 1; i < s.size(); ++i)
+      EXPECT_LT(std::abs(s[i] - s[i - 1]), 0.05 * largest) << i;
     EXPECT_LT(s.back(), 1e-2 * largest);
   }
   // Beyond the tables' range the request is refused, not answered with a clamped value.
@@ -422,13 +438,15 @@ TEST(BrunetonCache, RoundTripAndRejection) {
   ModelConfig other = config;
   other.atmosphere.angstrom_beta = 0.1;
   const auto other_model = make(other, {});
-  cache.blobs[key] = bruneton::serialise_tables(other_model->tables(), BrunetonModel::table_description(other));
+  cache.blobs[key] =
+      bruneton::serialise_tables(other_model->tables(), BrunetonModel::table_description(other));
   const auto fresh = make(config, context);
   EXPECT_FALSE(fresh->loaded_from_cache());
   EXPECT_EQ(fresh->tables().single_mie.values, built->tables().single_mie.values);
   // And the description decides: the blob of `other` does not load as `config`.
   EXPECT_FALSE(bruneton::deserialise_tables(
-                   bruneton::serialise_tables(other_model->tables(), BrunetonModel::table_description(other)),
+                   bruneton::serialise_tables(other_model->tables(),
+                                              BrunetonModel::table_description(other)),
                    BrunetonModel::table_description(config))
                    .has_value());
   EXPECT_NE(BrunetonModel::cache_key(other), key);

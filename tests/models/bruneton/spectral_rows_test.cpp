@@ -12,7 +12,8 @@ namespace {
 
 TEST(HalfFloat, ExactValuesRoundTrip) {
   // Values representable in binary16 convert exactly both ways.
-  for (float v : {0.0f, 1.0f, -2.0f, 0.5f, 65504.0f, 0x1p-14f, 0x1p-24f, 3.0f * 0x1p-20f, 1.0009765625f}) {
+  for (float v :
+       {0.0f, 1.0f, -2.0f, 0.5f, 65504.0f, 0x1p-14f, 0x1p-24f, 3.0f * 0x1p-20f, 1.0009765625f}) {
     EXPECT_EQ(half_to_float(float_to_half(v)), v) << v;
   }
   EXPECT_EQ(float_to_half(1.0f), 0x3c00);

@@ -31,8 +31,10 @@ TEST(Elek, IdenticalToBrunetonOnThePaperGrid) {
   const auto b = bruneton->create(config, {});
   EXPECT_EQ(e->descriptor().id, "elek");
   EXPECT_EQ(b->descriptor().id, "bruneton");
-  const std::vector<ViewDirection> views = {
-      {0.0, 0.0}, {degrees_to_radians(45.0), 1.0}, {degrees_to_radians(89.0), 4.0}, {degrees_to_radians(120.0), 2.0}};
+  const std::vector<ViewDirection> views = {{0.0, 0.0},
+                                            {degrees_to_radians(45.0), 1.0},
+                                            {degrees_to_radians(89.0), 4.0},
+                                            {degrees_to_radians(120.0), 2.0}};
   for (double sun_zenith : {10.0, 60.0, 95.0}) {
     const auto sun_e = e->prepare_sun({degrees_to_radians(sun_zenith), 0.3});
     const auto sun_b = b->prepare_sun({degrees_to_radians(sun_zenith), 0.3});
@@ -58,7 +60,8 @@ TEST(Elek, DescriptorHasFifteenNativeWavelengths) {
   ASSERT_EQ(d.native_wavelengths_nm.size(), 15u);
   EXPECT_DOUBLE_EQ(d.native_wavelengths_nm.front(), 360.0);
   EXPECT_DOUBLE_EQ(d.native_wavelengths_nm.back(), 696.0);
-  EXPECT_EQ(d.capabilities.max_sun_zenith_deg, bruneton_descriptor().capabilities.max_sun_zenith_deg);
+  EXPECT_EQ(d.capabilities.max_sun_zenith_deg,
+            bruneton_descriptor().capabilities.max_sun_zenith_deg);
   EXPECT_TRUE(d.capabilities.view_from_space);
   EXPECT_TRUE(d.capabilities.aerial_perspective);
   EXPECT_NE(d.citation, bruneton_descriptor().citation);
@@ -72,7 +75,8 @@ TEST(Elek, OriginalRgbFromFifteenWavelengthsMatchesFortyWavelengthColour) {
   const ModelFactory* elek = find_model("elek");
   const auto native = elek->create(reduced(elek_native_grid()), {});
   const auto spectral = elek->create(reduced(WavelengthGrid::paper_bins()), {});
-  const std::vector<ViewDirection> views = {{0.0, 0.0}, {degrees_to_radians(60.0), 2.5}, {degrees_to_radians(80.0), 0.5}};
+  const std::vector<ViewDirection> views = {
+      {0.0, 0.0}, {degrees_to_radians(60.0), 2.5}, {degrees_to_radians(80.0), 0.5}};
   const auto sun_native = native->prepare_sun({degrees_to_radians(40.0), 0.0});
   const auto sun_spectral = spectral->prepare_sun({degrees_to_radians(40.0), 0.0});
   SpectralBatch l15, l40;
@@ -81,9 +85,10 @@ TEST(Elek, OriginalRgbFromFifteenWavelengthsMatchesFortyWavelengthColour) {
   for (std::size_t i = 0; i < views.size(); ++i) {
     const auto s15 = l15.spectrum(i);
     const auto s40 = l40.spectrum(i);
-    const LinearSrgb original = elek_original_rgb(Spectrum(std::vector<double>(s15.begin(), s15.end())));
-    const LinearSrgb reference =
-        spectrum_to_linear_srgb(Spectrum(std::vector<double>(s40.begin(), s40.end())), WavelengthGrid::paper_bins());
+    const LinearSrgb original =
+        elek_original_rgb(Spectrum(std::vector<double>(s15.begin(), s15.end())));
+    const LinearSrgb reference = spectrum_to_linear_srgb(
+        Spectrum(std::vector<double>(s40.begin(), s40.end())), WavelengthGrid::paper_bins());
     EXPECT_NEAR(original.r / reference.r, 1.0, 0.03) << i;
     EXPECT_NEAR(original.g / reference.g, 1.0, 0.03) << i;
     EXPECT_NEAR(original.b / reference.b, 1.0, 0.03) << i;
