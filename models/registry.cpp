@@ -3,6 +3,8 @@
 
 #include <vector>
 
+#include "models/bruneton/bruneton.h"
+#include "models/elek/elek.h"
 #include "models/hosek/hosek.h"
 #include "models/nishita93/nishita93.h"
 #include "models/oneal/oneal.h"
@@ -16,6 +18,8 @@ std::span<const ModelFactory> registered_models() {
       nishita93_factory(),
       preetham_factory(),
       oneal_factory(),
+      bruneton_factory(),
+      elek_factory(),
       hosek_factory(),
   };
   return factories;

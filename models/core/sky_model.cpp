@@ -104,6 +104,18 @@ void zero_out_of_range(const SkyModel& model, std::span<double> values) {
   }
 }
 
+// The wavelengths outside the model's range, found once per batch (not once per sample). The
+// grid is increasing: when both ends are answered, all are.
+std::vector<std::size_t> unanswered_wavelengths(const SkyModel& model) {
+  std::vector<std::size_t> out;
+  const std::size_t n = model.wavelengths().size();
+  if (n == 0 || (model.answers_wavelength(0) && model.answers_wavelength(n - 1))) return out;
+  for (std::size_t w = 0; w < n; ++w) {
+    if (!model.answers_wavelength(w)) out.push_back(w);
+  }
+  return out;
+}
+
 }  // namespace
 
 void SkyModel::sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
@@ -112,24 +124,27 @@ void SkyModel::sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
   out.resize(views.size(), n_wavelengths);
   const SampleStatus sun_status = check_sun(sun.sun());
   const SampleStatus viewpoint_status = check_viewpoint(viewpoint);
-  // Gather the answerable views so that the model computes only those, in one batch.
-  std::vector<ViewDirection> answerable;
-  std::vector<std::size_t> index;
-  answerable.reserve(views.size());
-  index.reserve(views.size());
+  std::size_t answerable_count = 0;
   for (std::size_t i = 0; i < views.size(); ++i) {
     SampleStatus s = sun_status != SampleStatus::ok ? sun_status : viewpoint_status;
     if (s == SampleStatus::ok) s = check_view(views[i]);
     out.status[i] = s;
-    if (s == SampleStatus::ok) {
+    if (s == SampleStatus::ok) ++answerable_count;
+  }
+  if (answerable_count == 0) return;
+  if (answerable_count == views.size()) {
+    compute_sky_radiance(sun, viewpoint, views, out);
+  } else {
+    // Gather the answerable views so that the model computes only those, in one batch.
+    std::vector<ViewDirection> answerable;
+    std::vector<std::size_t> index;
+    answerable.reserve(answerable_count);
+    index.reserve(answerable_count);
+    for (std::size_t i = 0; i < views.size(); ++i) {
+      if (out.status[i] != SampleStatus::ok) continue;
       answerable.push_back(views[i]);
       index.push_back(i);
     }
-  }
-  if (answerable.empty()) return;
-  if (answerable.size() == views.size()) {
-    compute_sky_radiance(sun, viewpoint, views, out);
-  } else {
     SpectralBatch partial;
     partial.resize(answerable.size(), n_wavelengths);
     compute_sky_radiance(sun, viewpoint, answerable, partial);
@@ -138,11 +153,7 @@ void SkyModel::sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
       out.status[index[k]] = partial.status[k];
     }
   }
-  // Which wavelengths the model answers, decided once per batch rather than once per view.
-  std::vector<std::size_t> unanswered;
-  for (std::size_t w = 0; w < n_wavelengths; ++w) {
-    if (!answers_wavelength(w)) unanswered.push_back(w);
-  }
+  const std::vector<std::size_t> unanswered = unanswered_wavelengths(*this);
   for (std::size_t i = 0; i < views.size(); ++i) {
     auto spectrum = out.spectrum(i);
     if (out.status[i] == SampleStatus::ok) {
