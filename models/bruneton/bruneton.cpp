@@ -300,27 +300,12 @@ Spectrum BrunetonModel::compute_sky_irradiance(const SunState& sun, const Viewpo
   return result;
 }
 
-AerialPerspectiveSample BrunetonModel::aerial_perspective(const SunState& sun,
-                                                          const Viewpoint& viewpoint,
-                                                          const ViewDirection& view,
-                                                          double distance_m) const {
+ScatteringAlongRay BrunetonModel::compute_aerial_perspective(const SunState& sun,
+                                                             const Viewpoint& viewpoint,
+                                                             const ViewDirection& view,
+                                                             double distance_m) const {
   const std::size_t n = wavelengths().size();
-  AerialPerspectiveSample sample{Spectrum(n, 0.0), Spectrum(n, 1.0), check_sun(sun.sun())};
-  const auto& caps = descriptor().capabilities;
-  if (sample.status == SampleStatus::ok &&
-      (!std::isfinite(viewpoint.altitude_m) || !std::isfinite(view.zenith_rad) ||
-       !std::isfinite(view.azimuth_rad) || view.zenith_rad < 0.0 || view.zenith_rad > kPi ||
-       std::isnan(distance_m) || distance_m < 0.0)) {
-    sample.status = SampleStatus::invalid_input;
-  }
-  if (sample.status == SampleStatus::ok &&
-      (viewpoint.altitude_m < caps.min_altitude_m || viewpoint.altitude_m > caps.max_altitude_m)) {
-    sample.status = SampleStatus::viewpoint_unsupported;
-  }
-  if (sample.status != SampleStatus::ok) {
-    sample.transmittance = Spectrum(n, 0.0);
-    return sample;
-  }
+  ScatteringAlongRay sample{Spectrum(n, 0.0), Spectrum(n, 1.0), 0.0, false};
   const bruneton::ShellGeometry& g = tables_.geometry;
   const int stride = tables_.stride;
   double r = g.bottom_m + viewpoint.altitude_m;
@@ -333,6 +318,8 @@ AerialPerspectiveSample BrunetonModel::aerial_perspective(const SunState& sun,
   const double mie_g = atmosphere().parameters.mie_phase_g;
   const AtmosphereSegment segment = atmosphere_segment(r, mu, g.bottom_m, g.top_m);
   const double d = std::min(distance_m - travelled, segment.end);
+  sample.length_m = d;
+  sample.hits_ground = segment.hits_ground && d >= segment.end;
   ScratchRow radiance_value(stride), transmittance_value(stride), far(stride), near_b(stride),
       far_b(stride);
   float* l = radiance_value.data();

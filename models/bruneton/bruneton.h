@@ -28,14 +28,6 @@
 
 namespace clearsky {
 
-// Radiance scattered towards the observer between it and a point along the view, and the
-// transmittance to that point (aerial perspective, paper section 4 / 2008 code "inscatter").
-struct AerialPerspectiveSample {
-  Spectrum radiance;       // W/(m2.sr.nm)
-  Spectrum transmittance;  // dimensionless
-  SampleStatus status = SampleStatus::ok;
-};
-
 class BrunetonModel : public SkyModel {
  public:
   // Validates config against descriptor, then loads the tables from context.cache when a valid
@@ -61,13 +53,13 @@ class BrunetonModel : public SkyModel {
   // The TableCache key: "bruneton-" and the FNV-1a hash of the description.
   static std::string cache_key(const ModelConfig& config);
 
-  // Aerial perspective: for a point at distance_m along the view (infinity: to the end of the
-  // atmosphere or the ground), the in-scattered radiance between observer and point (all
-  // orders) and the transmittance to the point. The ground's own radiance is not included.
-  AerialPerspectiveSample aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
-                                             const ViewDirection& view, double distance_m) const;
-
  protected:
+  // Aerial perspective (SkyModel::aerial_perspective checks the inputs): for a point at
+  // distance_m along the view (infinity: to the end of the atmosphere or the ground), the
+  // in-scattered radiance between observer and point (all orders) and the transmittance to the
+  // point. The ground's own radiance is not included.
+  ScatteringAlongRay compute_aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
+                                                const ViewDirection& view, double distance_m) const override;
   void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
                             std::span<const ViewDirection> views,
                             SpectralBatch& out) const override;

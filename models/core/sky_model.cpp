@@ -202,7 +202,7 @@ AerialPerspectiveSample SkyModel::aerial_perspective(const SunState& sun, const 
   if (sample.status == SampleStatus::ok) sample.status = check_sun(sun.sun());
   if (sample.status == SampleStatus::ok) sample.status = check_view(view);
   if (sample.status == SampleStatus::ok &&
-      (!descriptor().capabilities.aerial_perspective || !is_finite_non_negative(distance_m))) {
+      (!descriptor().capabilities.aerial_perspective || !(distance_m >= 0.0))) {
     sample.status = SampleStatus::invalid_input;
   }
   if (sample.status != SampleStatus::ok) return sample;

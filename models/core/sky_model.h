@@ -120,9 +120,9 @@ class SkyModel {
   SpectralSample sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
                                 const PlaneOrientation& plane = {}) const;
   // Radiance scattered towards the observer and transmittance between it and the point at
-  // distance_m (m, finite, >= 0) along the view; the segment stops earlier at the ground or
-  // where the view leaves the atmosphere. invalid_input when the model does not declare
-  // capabilities.aerial_perspective or distance_m is not finite and >= 0.
+  // distance_m (m, >= 0; +infinity: the whole view) along the view; the segment stops earlier
+  // at the ground or where the view leaves the atmosphere. invalid_input when the model does
+  // not declare capabilities.aerial_perspective or distance_m is NaN or negative.
   AerialPerspectiveSample aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
                                              const ViewDirection& view, double distance_m) const;
 

@@ -62,9 +62,12 @@ TEST(AerialPerspectiveQuery, RefusedWithoutTheCapabilityOrWithABadDistance) {
   EXPECT_EQ(HazeModel(haze_descriptor(false)).aerial_perspective(sun, {0.0}, {1.0, 0.0}, 10.0).status,
             SampleStatus::invalid_input);
   const HazeModel model(haze_descriptor(true));
-  for (double d : {-1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+  for (double d : {-1.0, std::numeric_limits<double>::quiet_NaN(), -std::numeric_limits<double>::infinity()}) {
     EXPECT_EQ(model.aerial_perspective(sun, {0.0}, {1.0, 0.0}, d).status, SampleStatus::invalid_input) << d;
   }
+  // +infinity asks for the whole view (to the ground or the top of the atmosphere).
+  EXPECT_EQ(model.aerial_perspective(sun, {0.0}, {1.0, 0.0}, std::numeric_limits<double>::infinity()).status,
+            SampleStatus::ok);
   EXPECT_EQ(model.aerial_perspective(sun, {2000.0}, {1.0, 0.0}, 10.0).status, SampleStatus::viewpoint_unsupported);
   EXPECT_EQ(model.aerial_perspective(sun, {0.0}, {2.0, 0.0}, 10.0).status,
             SampleStatus::view_below_horizon_unsupported);
