@@ -3,10 +3,25 @@
 
 #include <vector>
 
+#include "models/bruneton/bruneton.h"
+#include "models/elek/elek.h"
+#include "models/hosek/hosek.h"
+#include "models/nishita93/nishita93.h"
+#include "models/oneal/oneal.h"
+#include "models/preetham/preetham.h"
+
 namespace clearsky {
 
 std::span<const ModelFactory> registered_models() {
-  static const std::vector<ModelFactory> factories = {};
+  static const std::vector<ModelFactory> factories = {
+      // The paper's order: Nishita93, Nishita96, Preetham, O'Neal, Haber, Bruneton, Elek, Hosek.
+      nishita93_factory(),
+      preetham_factory(),
+      oneal_factory(),
+      bruneton_factory(),
+      elek_factory(),
+      hosek_factory(),
+  };
   return factories;
 }
 

@@ -11,6 +11,10 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   clearsky::cli::add_models_command(app);
   clearsky::cli::add_serve_command(app);
+  clearsky::cli::add_sun_command(app);
+  clearsky::cli::add_import_command(app);
+  clearsky::cli::add_datasets_command(app);
+  clearsky::cli::add_evaluate_command(app, CLEARSKY_VERSION);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,37 +1,45 @@
-// GET /v1/sun: the sun's topocentric zenith and azimuth (degrees, azimuth clockwise from North)
-// for lat, lon and time (NREL SPA, models/solar), and sunrise, transit and sunset of the local
-// day of the given time, written with the time's UTC offset (null in polar day or night).
-#include "api/handlers/handlers.h"
-#include "api/request/place_time.h"
+// The sun query from parameters to JSON (sun_handler.h).
+#include "api/handlers/sun_handler.h"
+
+#include "api/encode/iso8601_time.h"
 
 namespace clearsky::api {
 
-ApiResponse get_sun(const ApiContext&, const ApiRequest& request) {
-  Parameters p = request_parameters(request);
-  const PlaceAndTime place = parse_place_and_time(p);
-  p.reject_unused();
-  const SolarPosition position = solar_position_checked(place.spa_input);
-  const SunTimes times = sun_times(place.spa_input, place.timezone_offset_h);
-  const auto instant = [&](const std::optional<double>& t) {
-    return t ? nlohmann::json(format_iso_time(*t, place.timezone_offset_h))
-             : nlohmann::json(nullptr);
+SunAnswer compute_sun(const SunRequest& request) {
+  return SunAnswer{solar_position(request.position),
+                   sun_times(request.position, request.utc_offset_min / 60.0)};
+}
+
+const char* day_kind_name(DayKind kind) {
+  switch (kind) {
+    case DayKind::polar_day:
+      return "polar_day";
+    case DayKind::polar_night:
+      return "polar_night";
+    case DayKind::normal:
+      break;
+  }
+  return "normal";
+}
+
+nlohmann::ordered_json sun_answer_to_json(const SunRequest& request, const SunAnswer& answer) {
+  const auto time_or_null = [&](const std::optional<double>& unix_s) -> nlohmann::ordered_json {
+    if (!unix_s) return nullptr;
+    return format_iso8601_time(*unix_s, request.utc_offset_min, request.utc_designator);
   };
-  const char* day = times.day_kind == DayKind::polar_day     ? "polar_day"
-                    : times.day_kind == DayKind::polar_night ? "polar_night"
-                                                             : "normal";
-  return json_response(
-      {{"lat", place.spa_input.latitude_deg},
-       {"lon", place.spa_input.longitude_deg},
-       {"time", format_iso_time(place.spa_input.unix_time_utc_s, place.timezone_offset_h)},
-       {"zenith_deg", finite(position.zenith_deg)},
-       {"azimuth_deg", finite(position.azimuth_deg)},
-       {"elevation_deg", finite(90.0 - position.zenith_deg)},
-       {"refraction", place.spa_input.refraction},
-       {"sunrise", instant(times.sunrise_utc_s)},
-       {"transit", instant(times.transit_utc_s)},
-       {"sunset", instant(times.sunset_utc_s)},
-       {"day", day},
-       {"algorithm", "NREL SPA (Reda and Andreas 2004)"}});
+  return nlohmann::ordered_json{
+      {"zenith", answer.position.zenith_deg},
+      {"azimuth", answer.position.azimuth_deg},
+      {"sunrise", time_or_null(answer.times.sunrise_utc_s)},
+      {"transit", time_or_null(answer.times.transit_utc_s)},
+      {"sunset", time_or_null(answer.times.sunset_utc_s)},
+      {"day", day_kind_name(answer.times.day_kind)},
+  };
+}
+
+nlohmann::ordered_json handle_sun(const QueryParameters& parameters, double now_unix_s) {
+  const SunRequest request = parse_sun_request(parameters, now_unix_s);
+  return sun_answer_to_json(request, compute_sun(request));
 }
 
 }  // namespace clearsky::api

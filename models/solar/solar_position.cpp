@@ -3,7 +3,6 @@
 #include "models/solar/solar_position.h"
 
 #include <GeographicLib/Math.hpp>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -38,25 +37,32 @@ void require(bool ok, const char* name, double value, const char* range) {
 
 bool within(double value, double lo, double hi) { return value >= lo && value <= hi; }
 
-void validate(const SolarPositionInput& in) {
-  require(within(in.unix_time_utc_s, kEarliestUnixS, kLatestUnixS), "unix_time_utc_s", in.unix_time_utc_s,
-          "an instant of the years -2000 to 6000");
-  require(within(in.latitude_deg, -90.0, 90.0), "latitude_deg", in.latitude_deg, "in [-90, 90] degrees");
-  require(within(in.longitude_deg, -180.0, 180.0), "longitude_deg", in.longitude_deg, "in [-180, 180] degrees");
-  require(std::isfinite(in.elevation_m) && in.elevation_m >= -6500000.0, "elevation_m", in.elevation_m,
-          "finite and >= -6500000 m");
-  require(within(in.pressure_mbar, 0.0, 5000.0), "pressure_mbar", in.pressure_mbar, "in [0, 5000] mbar");
-  require(in.temperature_c > -273.0 && in.temperature_c <= 6000.0, "temperature_c", in.temperature_c,
-          "in (-273, 6000] Celsius");
+void validate_input(const SolarPositionInput& in) {
+  require(within(in.unix_time_utc_s, kEarliestUnixS, kLatestUnixS), "unix_time_utc_s",
+          in.unix_time_utc_s, "an instant of the years -2000 to 6000");
+  require(within(in.latitude_deg, -90.0, 90.0), "latitude_deg", in.latitude_deg,
+          "in [-90, 90] degrees");
+  require(within(in.longitude_deg, -180.0, 180.0), "longitude_deg", in.longitude_deg,
+          "in [-180, 180] degrees");
+  require(std::isfinite(in.elevation_m) && in.elevation_m >= -6500000.0, "elevation_m",
+          in.elevation_m, "finite and >= -6500000 m");
+  require(within(in.pressure_mbar, 0.0, 5000.0), "pressure_mbar", in.pressure_mbar,
+          "in [0, 5000] mbar");
+  require(in.temperature_c > -273.0 && in.temperature_c <= 6000.0, "temperature_c",
+          in.temperature_c, "in (-273, 6000] Celsius");
   require(within(in.delta_t_s, -8000.0, 8000.0), "delta_t_s", in.delta_t_s, "in [-8000, 8000] s");
-  require(in.delta_ut1_s > -1.0 && in.delta_ut1_s < 1.0, "delta_ut1_s", in.delta_ut1_s, "in (-1, 1) s");
-  require(within(in.atmospheric_refraction_at_horizon_deg, -5.0, 5.0), "atmospheric_refraction_at_horizon_deg",
-          in.atmospheric_refraction_at_horizon_deg, "in [-5, 5] degrees");
+  require(in.delta_ut1_s > -1.0 && in.delta_ut1_s < 1.0, "delta_ut1_s", in.delta_ut1_s,
+          "in (-1, 1) s");
+  require(within(in.atmospheric_refraction_at_horizon_deg, -5.0, 5.0),
+          "atmospheric_refraction_at_horizon_deg", in.atmospheric_refraction_at_horizon_deg,
+          "in [-5, 5] degrees");
 }
 
 // Days since J2000.0 (UT) of a unix instant; computed from the difference rather than through
 // the Julian day so that no precision is lost to the large offset.
-double days_since_j2000(double unix_s) { return (unix_s - spa::kJ2000UnixSeconds) / kSecondsPerDay; }
+double days_since_j2000(double unix_s) {
+  return (unix_s - spa::kJ2000UnixSeconds) / kSecondsPerDay;
+}
 
 // Fractional part in [0, 1).
 double fraction_of_day(double x) {
@@ -81,34 +87,45 @@ double interpolate_three_days(const std::array<double, 3>& v, double n, bool is_
 
 }  // namespace
 
+void validate_solar_position_input(const SolarPositionInput& input) { validate_input(input); }
+
 SolarPosition solar_position(const SolarPositionInput& input) {
-  validate(input);
-  const spa::TimeScales t = spa::time_scales(days_since_j2000(input.unix_time_utc_s + input.delta_ut1_s), input.delta_t_s);
+  validate_input(input);
+  const spa::TimeScales t = spa::time_scales(
+      days_since_j2000(input.unix_time_utc_s + input.delta_ut1_s), input.delta_t_s);
   const spa::GeocentricSun sun = spa::geocentric_sun(t);
-  const double sidereal_deg = spa::apparent_sidereal_time_deg(t.julian_day, t.julian_century, sun.nutation_longitude_deg,
-                                                              sun.true_obliquity_deg);
+  const double sidereal_deg = spa::apparent_sidereal_time_deg(
+      t.julian_day, t.julian_century, sun.nutation_longitude_deg, sun.true_obliquity_deg);
   // Observer local hour angle H (eq. 32).
-  const double hour_angle_deg = spa::wrap_degrees_360(sidereal_deg + input.longitude_deg - sun.right_ascension_deg);
-  const spa::TopocentricSun topo = spa::topocentric_sun(sun, hour_angle_deg, input.latitude_deg, input.elevation_m);
-  const double e0_deg = spa::topocentric_elevation_deg(input.latitude_deg, topo.declination_deg, topo.hour_angle_deg);
+  const double hour_angle_deg =
+      spa::wrap_degrees_360(sidereal_deg + input.longitude_deg - sun.right_ascension_deg);
+  const spa::TopocentricSun topo =
+      spa::topocentric_sun(sun, hour_angle_deg, input.latitude_deg, input.elevation_m);
+  const double e0_deg =
+      spa::topocentric_elevation_deg(input.latitude_deg, topo.declination_deg, topo.hour_angle_deg);
 
   SolarPosition out;
-  if (input.refraction && e0_deg >= -(kSunRadiusDeg + input.atmospheric_refraction_at_horizon_deg)) {
-    out.refraction_correction_deg = spa::refraction_correction_deg(e0_deg, input.pressure_mbar, input.temperature_c);
+  if (input.refraction &&
+      e0_deg >= -(kSunRadiusDeg + input.atmospheric_refraction_at_horizon_deg)) {
+    out.refraction_correction_deg =
+        spa::refraction_correction_deg(e0_deg, input.pressure_mbar, input.temperature_c);
   }
   // Topocentric zenith (eq. 43, 44).
   out.zenith_deg = std::clamp(90.0 - (e0_deg + out.refraction_correction_deg), 0.0, 180.0);
-  out.azimuth_deg = spa::topocentric_azimuth_deg(input.latitude_deg, topo.declination_deg, topo.hour_angle_deg);
+  out.azimuth_deg =
+      spa::topocentric_azimuth_deg(input.latitude_deg, topo.declination_deg, topo.hour_angle_deg);
   out.declination_deg = topo.declination_deg;
   out.hour_angle_deg = topo.hour_angle_deg;
-  out.equation_of_time_min = spa::equation_of_time_min(t.julian_ephemeris_millennium, sun.right_ascension_deg,
-                                                       sun.nutation_longitude_deg, sun.true_obliquity_deg);
+  out.equation_of_time_min =
+      spa::equation_of_time_min(t.julian_ephemeris_millennium, sun.right_ascension_deg,
+                                sun.nutation_longitude_deg, sun.true_obliquity_deg);
   return out;
 }
 
 SunTimes sun_times(const SolarPositionInput& input, double timezone_offset_h) {
-  validate(input);
-  require(within(timezone_offset_h, -18.0, 18.0), "timezone_offset_h", timezone_offset_h, "in [-18, 18] hours");
+  validate_input(input);
+  require(within(timezone_offset_h, -18.0, 18.0), "timezone_offset_h", timezone_offset_h,
+          "in [-18, 18] hours");
   const double latitude = input.latitude_deg;
   const double longitude = input.longitude_deg;
   const double h0_prime_deg = -(kSunRadiusDeg + input.atmospheric_refraction_at_horizon_deg);
@@ -127,15 +144,16 @@ SunTimes sun_times(const SolarPositionInput& input, double timezone_offset_h) {
   // Apparent sidereal time at Greenwich at 0h UT (A.2.1), with the input delta-T.
   const spa::TimeScales t0 = spa::time_scales(reference_days, input.delta_t_s);
   const spa::GeocentricSun sun0 = spa::geocentric_sun(t0);
-  const double nu_deg = spa::apparent_sidereal_time_deg(t0.julian_day, t0.julian_century, sun0.nutation_longitude_deg,
-                                                        sun0.true_obliquity_deg);
+  const double nu_deg = spa::apparent_sidereal_time_deg(
+      t0.julian_day, t0.julian_century, sun0.nutation_longitude_deg, sun0.true_obliquity_deg);
 
   // Geocentric right ascension and declination at 0h TT of the day before, the day and the
   // day after (A.2.2, delta-T = 0).
   std::array<double, 3> alpha{};
   std::array<double, 3> delta{};
   for (int i = 0; i < 3; ++i) {
-    const spa::GeocentricSun sun = spa::geocentric_sun(spa::time_scales(reference_days + (i - 1), 0.0));
+    const spa::GeocentricSun sun =
+        spa::geocentric_sun(spa::time_scales(reference_days + (i - 1), 0.0));
     alpha[i] = sun.right_ascension_deg;
     delta[i] = sun.declination_deg;
   }
@@ -155,8 +173,11 @@ SunTimes sun_times(const SolarPositionInput& input, double timezone_offset_h) {
   // day, each is placed in the local day instead, so that all three belong to the local date
   // (SPA's reduction reports, west of Greenwich, the sunset of the previous evening: its
   // published 17:20:19 -07:00 for 2003-10-17 is the sunset of October 16).
-  const auto in_local_day = [&](double m) { return window_start + fraction_of_day(m - window_start); };
-  const std::array<double, 3> m = {in_local_day(m0), in_local_day(m0 - h0_fraction), in_local_day(m0 + h0_fraction)};
+  const auto in_local_day = [&](double m) {
+    return window_start + fraction_of_day(m - window_start);
+  };
+  const std::array<double, 3> m = {in_local_day(m0), in_local_day(m0 - h0_fraction),
+                                   in_local_day(m0 + h0_fraction)};
   // Each refined by interpolating the sun's position at its time (eq. A7 to A12) and correcting
   // the time (eq. A13 to A15).
   std::array<double, 3> event_fraction{};
@@ -170,9 +191,11 @@ SunTimes sun_times(const SolarPositionInput& input, double timezone_offset_h) {
       event_fraction[i] = m[i] - hour_angle_i / 360.0;
       continue;
     }
-    const double altitude_i = radians_to_degrees(std::asin(clamp_cosine(
-        Math::sind(latitude) * Math::sind(delta_i) + Math::cosd(latitude) * Math::cosd(delta_i) * Math::cosd(hour_angle_i))));
-    const double rate = 360.0 * Math::cosd(delta_i) * Math::cosd(latitude) * Math::sind(hour_angle_i);
+    const double altitude_i = radians_to_degrees(std::asin(
+        clamp_cosine(Math::sind(latitude) * Math::sind(delta_i) +
+                     Math::cosd(latitude) * Math::cosd(delta_i) * Math::cosd(hour_angle_i))));
+    const double rate =
+        360.0 * Math::cosd(delta_i) * Math::cosd(latitude) * Math::sind(hour_angle_i);
     // The correction is a Newton step on the altitude; the rate vanishes only where the sun
     // grazes the horizon at the meridian, where the first estimate is kept.
     event_fraction[i] = m[i] + (std::abs(rate) > 1e-12 ? (altitude_i - h0_prime_deg) / rate : 0.0);

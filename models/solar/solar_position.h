@@ -3,6 +3,7 @@
 // 34302), uncertainty +-0.0003 degrees for years -2000..6000, with atmospheric refraction from
 // pressure and temperature, and delta-T (TT - UT) as an input.
 //
+// clang-format off
 // | input              | unit     | range            | meaning                                      |
 // |--------------------|----------|------------------|----------------------------------------------|
 // | unix_time_utc_s    | s        | years -2000..6000| UTC instant, seconds since 1970-01-01T00:00Z  |
@@ -15,6 +16,7 @@
 // | delta_ut1_s        | s        | (-1, 1)          | UT1 - UTC                                     |
 // | refraction         | -        | bool             | apply refraction to the topocentric zenith   |
 // | atmospheric_refraction_at_horizon_deg | degree | [-5, 5] | refraction at sunrise/sunset       |
+// clang-format on
 //
 // Refraction (SPA eq. 42) is applied only when the unrefracted sun is above
 // -(0.26667 + atmospheric_refraction_at_horizon_deg), i.e. when some of its disk can be seen.
@@ -43,11 +45,11 @@ struct SolarPositionInput {
 };
 
 struct SolarPosition {
-  double zenith_deg = 0;               // topocentric, refraction applied when asked, [0, 180]
-  double azimuth_deg = 0;              // clockwise from North, [0, 360)
-  double declination_deg = 0;          // topocentric (delta', SPA eq. 39)
-  double hour_angle_deg = 0;           // topocentric local hour angle (H', SPA eq. 40), [-180, 180)
-  double equation_of_time_min = 0;     // apparent minus mean solar time (SPA eq. A2)
+  double zenith_deg = 0;            // topocentric, refraction applied when asked, [0, 180]
+  double azimuth_deg = 0;           // clockwise from North, [0, 360)
+  double declination_deg = 0;       // topocentric (delta', SPA eq. 39)
+  double hour_angle_deg = 0;        // topocentric local hour angle (H', SPA eq. 40), [-180, 180)
+  double equation_of_time_min = 0;  // apparent minus mean solar time (SPA eq. A2)
   double refraction_correction_deg = 0;  // delta e (SPA eq. 42), 0 when not applied
 };
 
@@ -66,12 +68,15 @@ struct SunTimes {
 // Throws std::invalid_argument whose message starts with the name of the first invalid input
 // (the field name above); NaN fails every check.
 SolarPosition solar_position(const SolarPositionInput& input);
+// The checks solar_position and sun_times make, for callers that validate before computing.
+void validate_solar_position_input(const SolarPositionInput& input);
 
 // Sunrise, sun transit and sunset (SPA appendix A.2) of the local calendar day that contains
 // the input instant, the local day being UTC shifted by timezone_offset_h (in [-18, 18] hours).
 // SPA's interpolation over three days is kept; only its reduction of each event to the UT day
 // is replaced by a placement in the local day, so that the three events are those of the local
 // date (SPA's published sunset for its example is the one of the evening before; see the .cpp).
+// A sunset after local midnight thus belongs to the next date, as it happens on it.
 // Throws std::invalid_argument like solar_position, or naming timezone_offset_h.
 SunTimes sun_times(const SolarPositionInput& input, double timezone_offset_h);
 

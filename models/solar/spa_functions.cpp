@@ -3,7 +3,6 @@
 #include "models/solar/spa_functions.h"
 
 #include <GeographicLib/Math.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <span>
@@ -34,7 +33,9 @@ double earth_value(const std::array<std::span<const EarthPeriodicTerm>, N>& seri
   return value / 1e8;
 }
 
-double cubic(double c0, double c1, double c2, double c3, double x) { return ((c3 * x + c2) * x + c1) * x + c0; }
+double cubic(double c0, double c1, double c2, double c3, double x) {
+  return ((c3 * x + c2) * x + c1) * x + c0;
+}
 
 }  // namespace
 
@@ -45,10 +46,7 @@ double wrap_degrees_360(double degrees) {
   return wrapped >= 360.0 ? 0.0 : wrapped;
 }
 
-double wrap_degrees_180(double degrees) {
-  double wrapped = wrap_degrees_360(degrees + 180.0) - 180.0;
-  return wrapped;
-}
+double wrap_degrees_180(double degrees) { return wrap_degrees_360(degrees + 180.0) - 180.0; }
 
 TimeScales time_scales(double days_since_j2000_ut1, double delta_t_s) {
   TimeScales t{};
@@ -64,7 +62,8 @@ TimeScales time_scales(double days_since_j2000_ut1, double delta_t_s) {
 HeliocentricEarth heliocentric_earth(double julian_ephemeris_millennium) {
   const double jme = julian_ephemeris_millennium;
   HeliocentricEarth earth{};
-  earth.longitude_deg = wrap_degrees_360(radians_to_degrees(earth_value(earth_longitude_series(), jme)));
+  earth.longitude_deg =
+      wrap_degrees_360(radians_to_degrees(earth_value(earth_longitude_series(), jme)));
   earth.latitude_deg = radians_to_degrees(earth_value(earth_latitude_series(), jme));
   earth.radius_au = earth_value(earth_radius_series(), jme);
   return earth;
@@ -105,11 +104,12 @@ double true_obliquity_deg(double julian_ephemeris_millennium, double nutation_ob
 
 double aberration_correction_deg(double radius_au) { return -20.4898 / (3600.0 * radius_au); }
 
-double apparent_sidereal_time_deg(double julian_day, double julian_century, double nutation_longitude_deg,
-                                  double true_obliquity) {
+double apparent_sidereal_time_deg(double julian_day, double julian_century,
+                                  double nutation_longitude_deg, double true_obliquity) {
   const double days = julian_day - kJ2000JulianDay;
-  const double mean_deg = wrap_degrees_360(280.46061837 + 360.98564736629 * days) +
-                          julian_century * julian_century * (0.000387933 - julian_century / 38710000.0);
+  const double mean_deg =
+      wrap_degrees_360(280.46061837 + 360.98564736629 * days) +
+      julian_century * julian_century * (0.000387933 - julian_century / 38710000.0);
   return wrap_degrees_360(mean_deg + nutation_longitude_deg * Math::cosd(true_obliquity));
 }
 
@@ -132,10 +132,10 @@ GeocentricSun geocentric_sun(const TimeScales& t) {
   const double sin_beta = Math::sind(sun.latitude_deg);
   const double cos_beta = Math::cosd(sun.latitude_deg);
   // eq. 30 with tan(beta) written as sin/cos so that no division can blow up.
-  sun.right_ascension_deg = wrap_degrees_360(
-      Math::atan2d(sin_lambda * cos_epsilon * cos_beta - sin_beta * sin_epsilon, cos_lambda * cos_beta));
-  sun.declination_deg =
-      radians_to_degrees(std::asin(clamp_cosine(sin_beta * cos_epsilon + cos_beta * sin_epsilon * sin_lambda)));
+  sun.right_ascension_deg = wrap_degrees_360(Math::atan2d(
+      sin_lambda * cos_epsilon * cos_beta - sin_beta * sin_epsilon, cos_lambda * cos_beta));
+  sun.declination_deg = radians_to_degrees(
+      std::asin(clamp_cosine(sin_beta * cos_epsilon + cos_beta * sin_epsilon * sin_lambda)));
   return sun;
 }
 
@@ -147,17 +147,22 @@ TopocentricSun topocentric_sun(const GeocentricSun& sun, double hour_angle_deg, 
   constexpr double kAxisRatio = 0.99664719;
   constexpr double kEquatorialRadiusM = 6378140.0;
   const double xi_deg = 8.794 / (3600.0 * sun.radius_au);
-  const double u_deg = Math::atan2d(kAxisRatio * Math::sind(latitude_deg), Math::cosd(latitude_deg));
+  const double u_deg =
+      Math::atan2d(kAxisRatio * Math::sind(latitude_deg), Math::cosd(latitude_deg));
   const double x = Math::cosd(u_deg) + elevation_m / kEquatorialRadiusM * Math::cosd(latitude_deg);
-  const double y = kAxisRatio * Math::sind(u_deg) + elevation_m / kEquatorialRadiusM * Math::sind(latitude_deg);
+  const double y =
+      kAxisRatio * Math::sind(u_deg) + elevation_m / kEquatorialRadiusM * Math::sind(latitude_deg);
   const double sin_xi = Math::sind(xi_deg);
   const double cos_delta = Math::cosd(sun.declination_deg);
   const double denominator = cos_delta - x * sin_xi * Math::cosd(hour_angle_deg);
   TopocentricSun topo{};
-  topo.right_ascension_parallax_deg = Math::atan2d(-x * sin_xi * Math::sind(hour_angle_deg), denominator);
-  topo.right_ascension_deg = wrap_degrees_360(sun.right_ascension_deg + topo.right_ascension_parallax_deg);
-  topo.declination_deg = Math::atan2d(
-      (Math::sind(sun.declination_deg) - y * sin_xi) * Math::cosd(topo.right_ascension_parallax_deg), denominator);
+  topo.right_ascension_parallax_deg =
+      Math::atan2d(-x * sin_xi * Math::sind(hour_angle_deg), denominator);
+  topo.right_ascension_deg =
+      wrap_degrees_360(sun.right_ascension_deg + topo.right_ascension_parallax_deg);
+  topo.declination_deg = Math::atan2d((Math::sind(sun.declination_deg) - y * sin_xi) *
+                                          Math::cosd(topo.right_ascension_parallax_deg),
+                                      denominator);
   topo.hour_angle_deg = wrap_degrees_180(hour_angle_deg - topo.right_ascension_parallax_deg);
   return topo;
 }
@@ -179,10 +184,10 @@ double topocentric_azimuth_deg(double latitude_deg, double topocentric_declinati
                                double topocentric_hour_angle_deg) {
   // eq. 45 multiplied through by cos(delta') > 0, so that no tangent is taken.
   const double cos_delta = Math::cosd(topocentric_declination_deg);
-  const double gamma_deg = Math::atan2d(
-      Math::sind(topocentric_hour_angle_deg) * cos_delta,
-      Math::cosd(topocentric_hour_angle_deg) * Math::sind(latitude_deg) * cos_delta -
-          Math::sind(topocentric_declination_deg) * Math::cosd(latitude_deg));
+  const double gamma_deg =
+      Math::atan2d(Math::sind(topocentric_hour_angle_deg) * cos_delta,
+                   Math::cosd(topocentric_hour_angle_deg) * Math::sind(latitude_deg) * cos_delta -
+                       Math::sind(topocentric_declination_deg) * Math::cosd(latitude_deg));
   return wrap_degrees_360(gamma_deg + 180.0);
 }
 
@@ -191,7 +196,8 @@ double equation_of_time_min(double julian_ephemeris_millennium, double right_asc
   const double jme = julian_ephemeris_millennium;
   const double mean_longitude_deg =
       280.4664567 +
-      jme * (360007.6982779 + jme * (0.03032028 + jme * (1.0 / 49931.0 + jme * (-1.0 / 15300.0 - jme / 2000000.0))));
+      jme * (360007.6982779 +
+             jme * (0.03032028 + jme * (1.0 / 49931.0 + jme * (-1.0 / 15300.0 - jme / 2000000.0))));
   const double e_deg = wrap_degrees_180(mean_longitude_deg - 0.0057183 - right_ascension_deg +
                                         nutation_longitude_deg * Math::cosd(true_obliquity));
   // 4 minutes of time per degree of hour angle (eq. A2).

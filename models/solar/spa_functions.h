@@ -20,11 +20,11 @@ double wrap_degrees_180(double degrees);
 
 // Section 3.1: the time scales of a UT1 instant (days since J2000.0 in UT) and delta-T = TT - UT.
 struct TimeScales {
-  double julian_day;                    // JD (eq. 4), UT
-  double julian_century;                // JC (eq. 5)
-  double julian_ephemeris_day;          // JDE (eq. 6), TT
-  double julian_ephemeris_century;      // JCE (eq. 7)
-  double julian_ephemeris_millennium;   // JME (eq. 8)
+  double julian_day;                   // JD (eq. 4), UT
+  double julian_century;               // JC (eq. 5)
+  double julian_ephemeris_day;         // JDE (eq. 6), TT
+  double julian_ephemeris_century;     // JCE (eq. 7)
+  double julian_ephemeris_millennium;  // JME (eq. 8)
 };
 TimeScales time_scales(double days_since_j2000_ut1, double delta_t_s);
 
@@ -53,8 +53,8 @@ double aberration_correction_deg(double radius_au);
 
 // Section 3.8: apparent sidereal time at Greenwich nu = nu0 + delta psi cos(epsilon), with the
 // mean sidereal time nu0 of the UT Julian day and century (eq. 28, 29); [0, 360).
-double apparent_sidereal_time_deg(double julian_day, double julian_century, double nutation_longitude_deg,
-                                  double true_obliquity_deg);
+double apparent_sidereal_time_deg(double julian_day, double julian_century,
+                                  double nutation_longitude_deg, double true_obliquity_deg);
 
 // Sections 3.3, 3.7, 3.9 and 3.10: the geocentric apparent position of the sun.
 struct GeocentricSun {

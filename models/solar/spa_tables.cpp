@@ -5,6 +5,8 @@
 namespace clearsky::spa {
 namespace {
 
+// One term per line, as the report prints them.
+// clang-format off
 constexpr EarthPeriodicTerm kL0[] = {
     {175347046.0, 0, 0},
     {3341656.0, 4.6692568, 6283.07585},
@@ -304,6 +306,7 @@ constexpr NutationTerm kNutation[] = {
     {{0, 0, 3, 2, 2}, -3, 0, 0, 0},
     {{2, -1, 0, 2, 2}, -3, 0, 0, 0},
 };
+// clang-format on
 
 static_assert(std::size(kL0) == 64 && std::size(kL1) == 34 && std::size(kL2) == 20 &&
               std::size(kL3) == 7 && std::size(kL4) == 3 && std::size(kL5) == 1);
@@ -316,12 +319,14 @@ static_assert(std::size(kNutation) == 63);
 
 const std::array<std::span<const EarthPeriodicTerm>, 6>& earth_longitude_series() {
   static const std::array<std::span<const EarthPeriodicTerm>, 6> series{
-      std::span(kL0), std::span(kL1), std::span(kL2), std::span(kL3), std::span(kL4), std::span(kL5)};
+      std::span(kL0), std::span(kL1), std::span(kL2),
+      std::span(kL3), std::span(kL4), std::span(kL5)};
   return series;
 }
 
 const std::array<std::span<const EarthPeriodicTerm>, 2>& earth_latitude_series() {
-  static const std::array<std::span<const EarthPeriodicTerm>, 2> series{std::span(kB0), std::span(kB1)};
+  static const std::array<std::span<const EarthPeriodicTerm>, 2> series{std::span(kB0),
+                                                                        std::span(kB1)};
   return series;
 }
 

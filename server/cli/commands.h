@@ -4,9 +4,15 @@
 
 #include <CLI/CLI.hpp>
 
+#include <string>
+
 namespace clearsky::cli {
 
 void add_models_command(CLI::App& app);
 void add_serve_command(CLI::App& app);
+void add_sun_command(CLI::App& app);
+void add_import_command(CLI::App& app);
+void add_datasets_command(CLI::App& app);
+void add_evaluate_command(CLI::App& app, const std::string& software_version);
 
 }  // namespace clearsky::cli

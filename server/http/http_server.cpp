@@ -10,6 +10,7 @@
 
 #include "api/handlers/handlers.h"
 #include "api/openapi/openapi_document.h"
+#include "api/parse/invalid_parameter.h"
 #include "api/skydome/skydome_render.h"
 #include "server/http/bounded_task_queue.h"
 
@@ -140,6 +141,8 @@ void HttpServer::install_routes() {
       std::rethrow_exception(error);
     } catch (const api::ApiError& e) {
       send(res, api::error_response(e));
+    } catch (const api::InvalidParameter& e) {
+      send(res, api::error_response(api::invalid_parameter(e.parameter(), e.message())));
     } catch (const std::exception& e) {
       spdlog::error("{} {}: {}", req.method, req.path, e.what());
       send(res, api::error_response(api::ApiError(500, "internal_error", "", "internal error")));

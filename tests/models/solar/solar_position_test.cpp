@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -56,8 +56,9 @@ constexpr double hms(int h, int m, int s) { return h * 3600.0 + m * 60.0 + s; }
 // Angle between two directions given by zenith and azimuth (degrees).
 double angular_separation_deg(double zenith1, double azimuth1, double zenith2, double azimuth2) {
   const double d = std::numbers::pi / 180.0;
-  const double cosine = std::cos(zenith1 * d) * std::cos(zenith2 * d) +
-                        std::sin(zenith1 * d) * std::sin(zenith2 * d) * std::cos((azimuth1 - azimuth2) * d);
+  const double cosine =
+      std::cos(zenith1 * d) * std::cos(zenith2 * d) +
+      std::sin(zenith1 * d) * std::sin(zenith2 * d) * std::cos((azimuth1 - azimuth2) * d);
   return std::acos(std::min(1.0, cosine)) / d;
 }
 
@@ -110,7 +111,8 @@ TEST(SolarPosition, KiderSite0930And1145EdtAgreeWithTheStudysPsaValues) {
     EXPECT_DOUBLE_EQ(p.refraction_correction_deg, 0.0);
     EXPECT_NEAR(p.zenith_deg, c.zenith_deg, 0.005);
     EXPECT_NEAR(p.azimuth_deg, c.azimuth_deg, 0.015);
-    EXPECT_LT(angular_separation_deg(p.zenith_deg, p.azimuth_deg, c.zenith_deg, c.azimuth_deg), 0.0083);
+    EXPECT_LT(angular_separation_deg(p.zenith_deg, p.azimuth_deg, c.zenith_deg, c.azimuth_deg),
+              0.0083);
   }
 }
 
@@ -159,7 +161,8 @@ TEST(SolarPosition, TransitFollowsTheEquationOfTime) {
   const SolarPositionInput in = spa_example();
   const SolarPosition p = solar_position(in);
   const SunTimes times = sun_times(in, -7.0);
-  const double expected_local_s = hms(12, 0, 0) - in.longitude_deg * 240.0 - 7.0 * 3600.0 - p.equation_of_time_min * 60.0;
+  const double expected_local_s =
+      hms(12, 0, 0) - in.longitude_deg * 240.0 - 7.0 * 3600.0 - p.equation_of_time_min * 60.0;
   EXPECT_NEAR(local_seconds_of_day(*times.transit_utc_s, -7.0), expected_local_s, 5.0);
 }
 
@@ -197,7 +200,8 @@ TEST(SolarPosition, PolarDayAndNightHaveNoSunriseOrSunset) {
 
 TEST(SolarPosition, OutputsStayInRangeOverADayAndTheYears) {
   SolarPositionInput in = kider_site(0.0);
-  for (double unix_s : {-125000000000.0, -2208988800.0, 0.0, 1369661400.0, 4102444800.0, 127000000000.0}) {
+  for (double unix_s :
+       {-125000000000.0, -2208988800.0, 0.0, 1369661400.0, 4102444800.0, 127000000000.0}) {
     for (int hour = 0; hour < 24; hour += 3) {
       in.unix_time_utc_s = unix_s + hour * 3600.0;
       const SolarPosition p = solar_position(in);

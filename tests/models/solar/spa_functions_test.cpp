@@ -14,7 +14,9 @@ namespace {
 constexpr double kExampleUnixS = 1066419030.0;
 constexpr double kExampleDeltaTS = 67.0;
 
-TimeScales example_time() { return time_scales((kExampleUnixS - kJ2000UnixSeconds) / 86400.0, kExampleDeltaTS); }
+TimeScales example_time() {
+  return time_scales((kExampleUnixS - kJ2000UnixSeconds) / 86400.0, kExampleDeltaTS);
+}
 
 TEST(SpaFunctions, JulianDayOfTheExample) {
   const TimeScales t = example_time();
@@ -41,7 +43,8 @@ TEST(SpaFunctions, NutationAndObliquityOfTheExample) {
   const Nutation nut = nutation(t.julian_ephemeris_century);
   EXPECT_NEAR(nut.longitude_deg, -0.00399840, 5e-9);
   EXPECT_NEAR(nut.obliquity_deg, 0.00166657, 5e-9);
-  EXPECT_NEAR(true_obliquity_deg(t.julian_ephemeris_millennium, nut.obliquity_deg), 23.440465, 5e-7);
+  EXPECT_NEAR(true_obliquity_deg(t.julian_ephemeris_millennium, nut.obliquity_deg), 23.440465,
+              5e-7);
 }
 
 TEST(SpaFunctions, GeocentricSunOfTheExample) {
@@ -56,8 +59,8 @@ TEST(SpaFunctions, GeocentricSunOfTheExample) {
 TEST(SpaFunctions, ObserverHourAngleAndTopocentricSunOfTheExample) {
   const TimeScales t = example_time();
   const GeocentricSun sun = geocentric_sun(t);
-  const double nu =
-      apparent_sidereal_time_deg(t.julian_day, t.julian_century, sun.nutation_longitude_deg, sun.true_obliquity_deg);
+  const double nu = apparent_sidereal_time_deg(t.julian_day, t.julian_century,
+                                               sun.nutation_longitude_deg, sun.true_obliquity_deg);
   EXPECT_NEAR(nu, 318.5119, 5e-5);
   const double hour_angle = wrap_degrees_360(nu - 105.1786 - sun.right_ascension_deg);
   EXPECT_NEAR(hour_angle, 11.105902, 5e-6);
@@ -68,7 +71,8 @@ TEST(SpaFunctions, ObserverHourAngleAndTopocentricSunOfTheExample) {
   const double e0 = topocentric_elevation_deg(39.742476, topo.declination_deg, topo.hour_angle_deg);
   EXPECT_NEAR(e0, 39.872046, 5e-7);
   EXPECT_NEAR(refraction_correction_deg(e0, 820.0, 11.0), 0.016332, 5e-7);
-  EXPECT_NEAR(topocentric_azimuth_deg(39.742476, topo.declination_deg, topo.hour_angle_deg), 194.34024, 5e-6);
+  EXPECT_NEAR(topocentric_azimuth_deg(39.742476, topo.declination_deg, topo.hour_angle_deg),
+              194.34024, 5e-6);
 }
 
 TEST(SpaFunctions, TablesHaveThePublishedTermCounts) {
@@ -97,8 +101,8 @@ TEST(SpaFunctions, EquationOfTimeExtremes) {
   const auto eot_at = [](double unix_s) {
     const TimeScales t = time_scales((unix_s - kJ2000UnixSeconds) / 86400.0, 69.0);
     const GeocentricSun sun = geocentric_sun(t);
-    return equation_of_time_min(t.julian_ephemeris_millennium, sun.right_ascension_deg, sun.nutation_longitude_deg,
-                                sun.true_obliquity_deg);
+    return equation_of_time_min(t.julian_ephemeris_millennium, sun.right_ascension_deg,
+                                sun.nutation_longitude_deg, sun.true_obliquity_deg);
   };
   EXPECT_NEAR(eot_at(1699012800.0), 16.4, 0.1);   // 2023-11-03T12:00Z
   EXPECT_NEAR(eot_at(1676116800.0), -14.2, 0.1);  // 2023-02-11T12:00Z

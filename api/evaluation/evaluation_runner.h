@@ -1,0 +1,54 @@
+// An evaluation run as users start it (CLI `clearsky evaluate`, /v1/evaluations, scheduled
+// jobs): models against a stored dataset, every run recorded in the database. The captures
+// are loaded as stored and prepared as the paper did (capture_preparation.h: repair of the
+// defective sample, SPA sun zenith, sun azimuth from the sky's symmetry); the preparation
+// steps are stored with each run and the estimated azimuths with the captures.
+// Thread-safety: uses the given Database from the calling thread only.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "models/core/sky_model.h"
+#include "models/evaluation/evaluate_model.h"
+#include "storage/sqlite/database.h"
+
+namespace clearsky::api {
+
+struct EvaluationRequest {
+  std::string dataset;
+  std::vector<std::string> models;  // ids; {"all"} or empty: every registered model
+  ModelConfig config;               // default: the paper's atmosphere and 40-bin grid
+  std::string software_version;
+  std::optional<std::int64_t> job_id;
+  EvaluationOptions options;
+};
+
+struct ModelRun {
+  std::int64_t run_id = 0;
+  EvaluationResult result;
+};
+
+struct EvaluationReport {
+  std::string dataset;
+  double min_wavelength_nm = 360;
+  double max_wavelength_nm = 720;
+  std::vector<ModelRun> models;  // in the order requested
+};
+
+// The factories named by a --models value: "all" (every one of `available`) or ids; throws
+// std::invalid_argument naming unknown ids (before anything is computed).
+std::vector<const ModelFactory*> resolve_models(const std::vector<std::string>& requested,
+                                                std::span<const ModelFactory> available);
+
+// Runs and stores the evaluation of models among `available` (default: the registered
+// models). Throws std::invalid_argument for an unknown dataset or model or an empty dataset;
+// a model failing is recorded as a failed run, then rethrown.
+EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& request);
+EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& request,
+                                std::span<const ModelFactory> available);
+
+}  // namespace clearsky::api

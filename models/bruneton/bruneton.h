@@ -1,0 +1,95 @@
+// Bruneton and Neyret 2008, "Precomputed Atmospheric Scattering" (Computer Graphics Forum
+// 27(4), EGSR 2008), run spectrally as in Bruneton 2016 (section "Bruneton Model"): all orders
+// of scattering precomputed into 4D tables over (r, mu, mu_s, nu), then O(1) queries from the
+// ground to space, with aerial perspective and the sun below the horizon.
+//
+// | parameter           | unit | default | range      | meaning |
+// |---------------------|------|---------|------------|---------------------------------------------|
+// | scattering_orders   | -    | 4       | [1, 10]    | orders of scattering precomputed | |
+// table_r_size        | -    | 32      | [2, 128]   | 4D tables: altitudes (RES_R) | |
+// table_mu_size       | -    | 128     | [4, 512]   | 4D tables: view zenith cosines (RES_MU,
+// even)| | table_mu_s_size     | -    | 32      | [2, 128]   | 4D tables: sun zenith cosines
+// (RES_MU_S)     | | table_nu_size       | -    | 8       | [2, 64]    | 4D tables: view-sun angle
+// cosines (RES_NU)   | plus the shared atmosphere (alpha, beta, g, albedo; AtmosphereParameters).
+//
+// Limits: the tables hold mu_s >= -0.1975, so the sun is answered up to 101.39 degrees zenith
+// (11.39 degrees below the horizon); beyond, the lookup would silently repeat that value, so
+// the descriptor refuses it. Observer altitudes 0 .. 1e8 m; above the top of the atmosphere
+// the view ray is moved to where it enters the atmosphere.
+//
+// Thread-safety: immutable after construction; all queries are const and thread-safe.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "models/bruneton/bruneton_tables.h"
+#include "models/core/sky_model.h"
+
+namespace clearsky {
+
+class BrunetonModel : public SkyModel {
+ public:
+  // Validates config against descriptor, then loads the tables from context.cache when a valid
+  // blob exists, else precomputes them (and stores them in the cache). Throws
+  // std::invalid_argument for an invalid config, PrecomputeCancelled when cancelled.
+  static std::shared_ptr<const BrunetonModel> create(const ModelDescriptor& descriptor,
+                                                     const ModelConfig& config,
+                                                     const PrecomputeContext& context);
+
+  const ModelDescriptor& descriptor() const override { return *descriptor_; }
+  std::size_t table_bytes() const override { return tables_.bytes(); }
+  const bruneton::Tables& tables() const { return tables_; }
+  // Whether the tables came from the cache, and the wall time to obtain them (s).
+  bool loaded_from_cache() const { return loaded_from_cache_; }
+  double precompute_seconds() const { return precompute_seconds_; }
+
+  // The table resolution a configuration selects (options of the descriptor).
+  static bruneton::Resolution resolution(const ModelDescriptor& descriptor,
+                                         const ModelConfig& config);
+  // What the tables depend on: implementation, table version, configuration. Elek shares the
+  // tables of Bruneton for the same configuration.
+  static std::string table_description(const ModelConfig& config);
+  // The TableCache key: "bruneton-" and the FNV-1a hash of the description.
+  static std::string cache_key(const ModelConfig& config);
+
+ protected:
+  // Aerial perspective (SkyModel::aerial_perspective checks the inputs): for a point at
+  // distance_m along the view (infinity: to the end of the atmosphere or the ground), the
+  // in-scattered radiance between observer and point (all orders) and the transmittance to the
+  // point. The ground's own radiance is not included.
+  ScatteringAlongRay compute_aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
+                                                const ViewDirection& view, double distance_m) const override;
+  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
+                            std::span<const ViewDirection> views,
+                            SpectralBatch& out) const override;
+  Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
+  // Horizontal planes in the atmosphere: the irradiance table; other planes and observers
+  // above the atmosphere: the quadrature of the sky radiance.
+  Spectrum compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
+                                  const PlaneOrientation& plane) const override;
+
+ private:
+  BrunetonModel(const ModelDescriptor& descriptor, ModelConfig config,
+                const PrecomputeContext& context);
+
+  // Radiance seen along (r, mu) for the sun at (mu_s, nu), per unit solar irradiance:
+  // scattering of all orders plus, when the ray hits the ground, the attenuated light the
+  // ground reflects. out holds tables().stride floats.
+  void radiance(double r, double mu, double mu_s, double nu, float* out) const;
+  // The ground's reflected light seen along (r, mu) (r within the atmosphere, the ray hitting
+  // the ground), attenuated, added to out.
+  void add_ground(double r, double mu, double mu_s, double nu, float* out) const;
+
+  const ModelDescriptor* descriptor_;
+  bruneton::Tables tables_;
+  std::vector<float> solar_;  // padded
+  std::vector<float> albedo_over_pi_;
+  bool loaded_from_cache_ = false;
+  double precompute_seconds_ = 0;
+};
+
+const ModelDescriptor& bruneton_descriptor();
+ModelFactory bruneton_factory();
+
+}  // namespace clearsky

@@ -1,0 +1,790 @@
+// Precomputation of the Bruneton 2008 tables (paper Algorithm 4.1) and their lookups.
+//
+// Speed without changing the algorithm: every texel computes all wavelengths at once
+// (spectral rows, spectral_rows.h), and the two costly steps are re-ordered sums of exactly
+// the same discrete terms as the 2008 code:
+//  - density J (Eq. 7, 16 x 32 directions per texel): at a table layer r and a column mu_s,
+//    the incident radiance in direction w is a lookup at (r, w.z, mu_s, s.w); for the 16
+//    fixed zeniths w.z the lookup is linear in the nu slices, so the sum over the 512
+//    directions becomes scalar weights on 16 x 8 precomputed spectra (plus the ground term on
+//    the irradiance table's columns). Same terms, same weights; only the summation order
+//    differs.
+//  - single scattering and orders >= 2 (Eq. 6 and 8, 50 trapezoid steps): the 32 x 8 texels
+//    of a (r, mu) row share the view ray, its sample points and its transmittances.
+#include "models/bruneton/bruneton_tables.h"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <utility>
+
+#include "models/atmosphere/phase_functions.h"
+#include "models/core/parallel.h"
+
+namespace clearsky::bruneton {
+
+void FloatTable2D::allocate(int w, int h, int s) {
+  width = w;
+  height = h;
+  stride = s;
+  values.assign(static_cast<std::size_t>(w) * h * s, 0.0f);
+}
+
+void HalfTable4D::allocate(const Resolution& res, int s) {
+  res_r = res.r;
+  res_mu = res.mu;
+  res_nu = res.nu;
+  res_mu_s = res.mu_s;
+  stride = s;
+  values.assign(static_cast<std::size_t>(res.texels_4d()) * s, 0);
+  row_scale.assign(static_cast<std::size_t>(res_r) * res_mu, 0.0f);
+}
+
+void HalfTable4D::store_row(int r, int mu, const float* row) {
+  const std::size_t n = row_texels() * stride;
+  float largest = 0.0f;
+  for (std::size_t i = 0; i < n; ++i) largest = std::max(largest, std::abs(row[i]));
+  std::uint16_t* out = values.data() + row_index(r, mu) * n;
+  // Below 1e-30 (per unit solar irradiance) a row is zero for every purpose.
+  if (!(largest > 1e-30f)) {
+    std::fill(out, out + n, 0);
+    row_scale[row_index(r, mu)] = 0.0f;
+    return;
+  }
+  // Largest magnitude scaled below 2^14: no overflow, and values down to 2^-28 of it keep the
+  // full 11-bit precision.
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  const float to_half = std::ldexp(1.0f, 14 - exponent);
+  floats_to_halves(row, to_half, out, n);
+  row_scale[row_index(r, mu)] = std::ldexp(1.0f, exponent - 14);
+}
+
+void HalfTable4D::load_row(int r, int mu, float* row) const {
+  const std::size_t texels = row_texels();
+  const std::uint16_t* in = values.data() + row_index(r, mu) * texels * stride;
+  const float scale = row_scale[row_index(r, mu)];
+  for (std::size_t t = 0; t < texels; ++t) {
+    const std::uint16_t* p = in + t * stride;
+    sum_rows(&p, &scale, 1, stride, row + t * stride);
+  }
+}
+
+namespace {
+
+void lookup_2d(const FloatTable2D& t, double u, double v, float* out) {
+  const Axis ax = texture_axis(u, t.width);
+  const Axis ay = texture_axis(v, t.height);
+  FixedRowList<float, 4> list;
+  list.add(t.texel(ax.i0, ay.i0), (1.0 - ax.f) * (1.0 - ay.f));
+  list.add(t.texel(ax.i1, ay.i0), ax.f * (1.0 - ay.f));
+  list.add(t.texel(ax.i0, ay.i1), (1.0 - ax.f) * ay.f);
+  list.add(t.texel(ax.i1, ay.i1), ax.f * ay.f);
+  list.sum(t.stride, out);
+}
+
+}  // namespace
+
+std::size_t Tables::bytes() const {
+  return (transmittance.values.size() + sky_irradiance.values.size()) * sizeof(float) +
+         single_rayleigh.bytes() + single_mie.bytes() + multiple.bytes();
+}
+
+void Tables::transmittance_to_top(double r, double mu, float* out) const {
+  lookup_2d(transmittance, transmittance_u_mu(mu), transmittance_u_r(r, geometry), out);
+}
+
+void Tables::transmittance_between(double r, double mu, double d, float* out) const {
+  const double r1 = std::sqrt(std::max(r * r + d * d + 2.0 * r * mu * d, 0.0));
+  const double mu1 = r1 > 0.0 ? (r * mu + d) / r1 : 1.0;
+  ScratchRow other(stride);
+  if (mu > 0.0) {
+    transmittance_to_top(r, mu, out);
+    transmittance_to_top(r1, mu1, other.data());
+  } else {
+    transmittance_to_top(r1, -mu1, out);
+    transmittance_to_top(r, -mu, other.data());
+  }
+  // T(x, x_d) = T(x) / T(x_d); a vanishing denominator means no light gets through.
+  for (int i = 0; i < stride; ++i) {
+    const float denominator = other.data()[i];
+    out[i] = denominator > 1e-30f ? std::min(out[i] / denominator, 1.0f) : 0.0f;
+  }
+}
+
+void Tables::irradiance(double r, double mu_s, float* out) const {
+  lookup_2d(sky_irradiance, irradiance_u_mu_s(mu_s), irradiance_u_r(r, geometry), out);
+}
+
+void Tables::scattering(double r, double mu, double mu_s, double nu, double mie_g,
+                        float* out) const {
+  scattering(coordinates_4d(r, mu, mu_s, nu, resolution, geometry), nu, mie_g, out);
+}
+
+void Tables::scattering(const Coord4& c, double nu, double mie_g, float* out) const {
+  FixedRowList<std::uint16_t, 48> list;
+  gather_4d(single_rayleigh, c, rayleigh_phase(nu), list);
+  gather_4d(single_mie, c, cornette_shanks_phase(nu, mie_g), list);
+  if (!multiple.empty()) gather_4d(multiple, c, 1.0, list);
+  list.sum(stride, out);
+}
+
+namespace {
+
+// Spectral coefficients as padded float rows.
+struct Coefficients {
+  std::vector<float> rayleigh, mie_scattering, mie_extinction, albedo_over_pi;
+  double rayleigh_height_m = 0, mie_height_m = 0, mie_g = 0;
+};
+
+Coefficients coefficients(const AtmosphereSpectra& s, int stride) {
+  Coefficients c;
+  c.rayleigh.assign(stride, 0.0f);
+  c.mie_scattering.assign(stride, 0.0f);
+  c.mie_extinction.assign(stride, 0.0f);
+  c.albedo_over_pi.assign(stride, 0.0f);
+  for (std::size_t i = 0; i < s.grid.size(); ++i) {
+    c.rayleigh[i] = static_cast<float>(s.rayleigh_scattering_per_m[i]);
+    c.mie_scattering[i] = static_cast<float>(s.mie_scattering_per_m[i]);
+    c.mie_extinction[i] = static_cast<float>(s.mie_extinction_per_m[i]);
+    c.albedo_over_pi[i] = static_cast<float>(s.ground_albedo[i] / kPi);
+  }
+  c.rayleigh_height_m = s.parameters.rayleigh_scale_height_m;
+  c.mie_height_m = s.parameters.mie_scale_height_m;
+  c.mie_g = s.parameters.mie_phase_g;
+  return c;
+}
+
+// Optical length (integral of exp(-h/H)) from (r, mu) to the limit sphere, trapezoid rule with
+// `steps` steps; 1e9 m (opaque) for rays that hit the ground (2008 code: opticalDepth).
+double optical_length(double scale_height, double r, double mu, int steps, const ShellGeometry& g) {
+  const double dx = limit_distance(r, mu, g) / steps;
+  double previous = std::exp(-(r - g.bottom_m) / scale_height);
+  double sum = 0.0;
+  for (int i = 1; i <= steps; ++i) {
+    const double x = i * dx;
+    const double ri = std::sqrt(r * r + x * x + 2.0 * x * r * mu);
+    const double y = std::exp(-(ri - g.bottom_m) / scale_height);
+    sum += (previous + y) / 2.0 * dx;
+    previous = y;
+  }
+  return mu < horizon_mu(r, g) ? 1e9 : sum;
+}
+
+class Progress {
+ public:
+  Progress(const PrecomputeContext& context, double total) : context_(context), total_(total) {}
+  void advance(double units, std::string_view stage) {
+    std::lock_guard lock(mutex_);
+    done_ += units;
+    context_.report(std::min(done_ / total_, 1.0), stage);
+  }
+
+ private:
+  const PrecomputeContext& context_;
+  double total_;
+  double done_ = 0;
+  std::mutex mutex_;
+};
+
+struct Builder {
+  const Resolution& res;
+  const ShellGeometry& g;
+  const Coefficients& k;
+  const PrecomputeContext& context;
+  Tables& t;
+  Progress& progress;
+  int stride;
+
+  void for_each(std::size_t count, const std::function<void(std::size_t)>& body) const {
+    parallel_for(
+        count,
+        [&](std::size_t i) {
+          context.check_cancelled();
+          body(i);
+        },
+        context.threads);
+  }
+
+  void build_transmittance() {
+    t.transmittance.allocate(res.transmittance_mu, res.transmittance_r, stride);
+    for_each(static_cast<std::size_t>(res.transmittance_r), [&](std::size_t j) {
+      const double r = transmittance_texel_r(static_cast<int>(j), res.transmittance_r, g);
+      for (int i = 0; i < res.transmittance_mu; ++i) {
+        const double mu = transmittance_texel_mu(i, res.transmittance_mu);
+        const double tau_r = optical_length(k.rayleigh_height_m, r, mu, res.transmittance_steps, g);
+        const double tau_m = optical_length(k.mie_height_m, r, mu, res.transmittance_steps, g);
+        float* out = t.transmittance.texel(i, static_cast<int>(j));
+        for (int w = 0; w < t.wavelengths; ++w) {
+          out[w] =
+              static_cast<float>(std::exp(-(k.rayleigh[w] * tau_r + k.mie_extinction[w] * tau_m)));
+        }
+      }
+    });
+  }
+
+  // Delta E of order 1: the direct sun on a horizontal plane, T(r, mu_s) max(mu_s, 0).
+  FloatTable2D direct_irradiance() {
+    FloatTable2D e;
+    e.allocate(res.irradiance_mu_s, res.irradiance_r, stride);
+    for (int j = 0; j < res.irradiance_r; ++j) {
+      const double r = irradiance_texel_r(j, res.irradiance_r, g);
+      for (int i = 0; i < res.irradiance_mu_s; ++i) {
+        const double mu_s = irradiance_texel_mu_s(i, res.irradiance_mu_s);
+        float* out = e.texel(i, j);
+        t.transmittance_to_top(r, mu_s, out);
+        const float cosine = static_cast<float>(std::max(mu_s, 0.0));
+        for (int w = 0; w < stride; ++w) out[w] *= cosine;
+      }
+    }
+    return e;
+  }
+
+  // Samples of the view ray of a (r, mu) row: distance, trapezoid weight, transmittance from
+  // the origin.
+  struct RaySamples {
+    std::vector<double> t, weight;
+    std::vector<float> transmittance;  // (steps + 1) x stride
+  };
+
+  RaySamples ray_samples(double r, double mu) const {
+    RaySamples s;
+    const int n = res.inscatter_steps;
+    const double dx = limit_distance(r, mu, g) / n;
+    s.t.resize(n + 1);
+    s.weight.resize(n + 1);
+    s.transmittance.resize(static_cast<std::size_t>(n + 1) * stride);
+    for (int i = 0; i <= n; ++i) {
+      s.t[i] = i * dx;
+      s.weight[i] = (i == 0 || i == n) ? dx / 2.0 : dx;
+      t.transmittance_between(r, mu, s.t[i],
+                              s.transmittance.data() + static_cast<std::size_t>(i) * stride);
+    }
+    return s;
+  }
+
+  // Single scattering, Eq. 6 without phase functions (2008 code: inscatter1).
+  void build_single_scattering() {
+    t.single_rayleigh.allocate(res, stride);
+    t.single_mie.allocate(res, stride);
+    const std::size_t rows = static_cast<std::size_t>(res.r) * res.mu;
+    for_each(rows, [&](std::size_t row) {
+      const int layer = static_cast<int>(row / res.mu);
+      const int j = static_cast<int>(row % res.mu);
+      const Layer l = layer_geometry(layer, res.r, g);
+      const double r = l.r;
+      const double mu = texel_mu(j, res.mu, l, g);
+      const RaySamples s = ray_samples(r, mu);
+      const int n = res.inscatter_steps;
+      std::vector<double> radius(n + 1), clamped(n + 1), density_r(n + 1), density_m(n + 1),
+          horizon(n + 1);
+      std::vector<Axis> r_axis(n + 1);
+      for (int i = 0; i <= n; ++i) {
+        radius[i] = std::sqrt(r * r + s.t[i] * s.t[i] + 2.0 * r * mu * s.t[i]);
+        clamped[i] = std::max(g.bottom_m, radius[i]);
+        density_r[i] = std::exp(-(clamped[i] - g.bottom_m) / k.rayleigh_height_m);
+        density_m[i] = std::exp(-(clamped[i] - g.bottom_m) / k.mie_height_m);
+        horizon[i] = -safe_sqrt(1.0 - g.bottom_m * g.bottom_m / (clamped[i] * clamped[i]));
+        r_axis[i] = texture_axis(transmittance_u_r(clamped[i], g), res.transmittance_r);
+      }
+      const std::size_t texels = t.single_rayleigh.row_texels();
+      std::vector<float> out_r(texels * stride, 0.0f), out_m(texels * stride, 0.0f), sun(stride);
+      for (int knu = 0; knu < res.nu; ++knu) {
+        const double nu = texel_nu(knu, res.nu);
+        for (int ms = 0; ms < res.mu_s; ++ms) {
+          const double mu_s = texel_mu_s(ms, res.mu_s);
+          float* acc_r = out_r.data() + (static_cast<std::size_t>(knu) * res.mu_s + ms) * stride;
+          float* acc_m = out_m.data() + (static_cast<std::size_t>(knu) * res.mu_s + ms) * stride;
+          for (int i = 0; i <= n; ++i) {
+            const double mu_s_i = (nu * s.t[i] + mu_s * r) / radius[i];
+            if (!(mu_s_i >= horizon[i])) continue;  // the sample is in the Earth's shadow
+            const Axis ax = texture_axis(transmittance_u_mu(mu_s_i), res.transmittance_mu);
+            const Axis& ay = r_axis[i];
+            FixedRowList<float, 4> list;
+            list.add(t.transmittance.texel(ax.i0, ay.i0), (1.0 - ax.f) * (1.0 - ay.f));
+            list.add(t.transmittance.texel(ax.i1, ay.i0), ax.f * (1.0 - ay.f));
+            list.add(t.transmittance.texel(ax.i0, ay.i1), (1.0 - ax.f) * ay.f);
+            list.add(t.transmittance.texel(ax.i1, ay.i1), ax.f * ay.f);
+            list.sum(stride, sun.data());
+            const float* view = s.transmittance.data() + static_cast<std::size_t>(i) * stride;
+            const float wr = static_cast<float>(s.weight[i] * density_r[i]);
+            const float wm = static_cast<float>(s.weight[i] * density_m[i]);
+            for (int w = 0; w < stride; ++w) {
+              const float ti = view[w] * sun[w];
+              acc_r[w] += wr * ti;
+              acc_m[w] += wm * ti;
+            }
+          }
+          for (int w = 0; w < stride; ++w) {
+            acc_r[w] *= k.rayleigh[w];
+            acc_m[w] *= k.mie_scattering[w];
+          }
+        }
+      }
+      t.single_rayleigh.store_row(layer, j, out_r.data());
+      t.single_mie.store_row(layer, j, out_m.data());
+      if (j == res.mu - 1) progress.advance(1.0 / res.r, "single scattering");
+    });
+  }
+
+  // The light scattered towards each direction of a texel, before the order's integral:
+  // either single scattering (Rayleigh and Mie tables, phase functions applied here) or the
+  // previous order's scattering table.
+  struct Source {
+    const HalfTable4D* rayleigh = nullptr;   // first order: single Rayleigh
+    const HalfTable4D* mie = nullptr;        // first order: single Mie
+    const HalfTable4D* scattered = nullptr;  // later orders
+    bool first() const { return scattered == nullptr; }
+  };
+
+  // Incident light from each zenith cos_t[i], in each nu slice k: the table at
+  // (r, cos_t[i], mu_s) without interpolation in nu, (i * res.nu + k) * stride. For the first
+  // order, a holds single Rayleigh and b single Mie; later, a holds the previous order.
+  void build_profiles(const Source& source, double r, double mu_s, const std::vector<double>& cos_t,
+                      std::vector<float>& profile_a, std::vector<float>& profile_b) const {
+    const int n_theta = static_cast<int>(cos_t.size());
+    const std::size_t profile_size = static_cast<std::size_t>(n_theta) * res.nu * stride;
+    profile_a.assign(profile_size, 0.0f);
+    profile_b.assign(source.first() ? profile_size : 0, 0.0f);
+    RowList<std::uint16_t> list;
+    for (int i = 0; i < n_theta; ++i) {
+      Coord4 c = coordinates_4d(r, cos_t[i], mu_s, 0.0, res, g);
+      for (int kk = 0; kk < res.nu; ++kk) {
+        c.nu = Axis{kk, kk, 0.0};
+        list.clear();
+        gather_4d(source.first() ? *source.rayleigh : *source.scattered, c, 1.0, list);
+        list.sum(stride, profile_a.data() + (static_cast<std::size_t>(i) * res.nu + kk) * stride);
+        if (source.first()) {
+          list.clear();
+          gather_4d(*source.mie, c, 1.0, list);
+          list.sum(stride, profile_b.data() + (static_cast<std::size_t>(i) * res.nu + kk) * stride);
+        }
+      }
+    }
+  }
+
+  // Density J (Eq. 7) of the order after `source`, whose ground irradiance is delta_e.
+  void build_density(const Source& source, const FloatTable2D& delta_e, HalfTable4D& j_table,
+                     double progress_units) {
+    j_table.allocate(res, stride);
+    const int n_theta = res.sphere_samples;
+    const int n_phi = 2 * res.sphere_samples;
+    const double dtheta = kPi / n_theta;
+    const double dphi = kPi / n_theta;
+    const int n_e = delta_e.width;
+    std::vector<double> cos_t(n_theta), sin_t(n_theta), cos_p(n_phi), sin_p(n_phi);
+    for (int i = 0; i < n_theta; ++i) {
+      cos_t[i] = std::cos((i + 0.5) * dtheta);
+      sin_t[i] = std::sin((i + 0.5) * dtheta);
+    }
+    for (int p = 0; p < n_phi; ++p) {
+      cos_p[p] = std::cos((p + 0.5) * dphi);
+      sin_p[p] = std::sin((p + 0.5) * dphi);
+    }
+    const std::size_t layer_floats =
+        static_cast<std::size_t>(res.mu) * j_table.row_texels() * stride;
+    std::vector<float> layer_values(layer_floats);
+    for (int layer = 0; layer < res.r; ++layer) {
+      const Layer l = layer_geometry(layer, res.r, g);
+      const double r = std::clamp(l.r, g.bottom_m, g.top_m);
+      const double cos_theta_min = horizon_mu(r, g);
+      const float density_r = static_cast<float>(std::exp(-(r - g.bottom_m) / k.rayleigh_height_m));
+      const float density_m = static_cast<float>(std::exp(-(r - g.bottom_m) / k.mie_height_m));
+      // Ground seen in direction theta: its distance, and (transmittance to it) x (albedo / pi) x
+      // (delta E at each column of the irradiance table's ground row), per column.
+      std::vector<char> ground(n_theta, 0);
+      std::vector<double> d_ground(n_theta, 0.0);
+      std::vector<float> ground_light(static_cast<std::size_t>(n_theta) * n_e * stride, 0.0f);
+      {
+        std::vector<float> transmittance(stride);
+        for (int i = 0; i < n_theta; ++i) {
+          if (!(cos_t[i] < cos_theta_min)) continue;
+          ground[i] = 1;
+          d_ground[i] = -r * cos_t[i] -
+                        safe_sqrt(r * r * (cos_t[i] * cos_t[i] - 1.0) + g.bottom_m * g.bottom_m);
+          t.transmittance_between(g.bottom_m, -(r * cos_t[i] + d_ground[i]) / g.bottom_m,
+                                  d_ground[i], transmittance.data());
+          for (int c = 0; c < n_e; ++c) {
+            const float* e = delta_e.texel(c, 0);
+            float* out = ground_light.data() + (static_cast<std::size_t>(i) * n_e + c) * stride;
+            for (int w = 0; w < stride; ++w) out[w] = transmittance[w] * k.albedo_over_pi[w] * e[w];
+          }
+        }
+      }
+      for_each(static_cast<std::size_t>(res.mu_s), [&](std::size_t ms_index) {
+        const int ms = static_cast<int>(ms_index);
+        density_column(source, layer, ms, r, cos_theta_min, density_r, density_m, cos_t, sin_t,
+                       cos_p, sin_p, ground, d_ground, ground_light, n_e, layer_values.data());
+      });
+      for_each(static_cast<std::size_t>(res.mu), [&](std::size_t j) {
+        j_table.store_row(layer, static_cast<int>(j),
+                          layer_values.data() + j * j_table.row_texels() * stride);
+      });
+      progress.advance(progress_units / res.r, "multiple scattering: density");
+    }
+  }
+
+  // The scalar weights of one texel of J: for each direction (theta_i, phi_p), its lookup's
+  // two nu slices get (1 - f) and f times the phase towards the view (times, for the first
+  // order, the phase of the single scattering), and the ground columns seen in that direction
+  // get their share. Same terms as the 2008 code's loop; ground_range[i] receives the columns
+  // touched at zenith i.
+  template <bool First>
+  void accumulate_weights(int n_theta, int n_phi, double sx, double sy, double mu_s, double r,
+                          const std::vector<double>& wx, const std::vector<double>& wy,
+                          const std::vector<double>& cos_t, const std::vector<double>& phase_r,
+                          const std::vector<double>& phase_m, const std::vector<char>& ground,
+                          const std::vector<double>& d_ground, int n_e, std::vector<double>& a_r,
+                          std::vector<double>& a_m, std::vector<double>& b_r,
+                          std::vector<double>& b_m, std::vector<double>& g_r,
+                          std::vector<double>& g_m,
+                          std::vector<std::pair<int, int>>& ground_range) const {
+    const int n_nu = res.nu;
+    for (int i = 0; i < n_theta; ++i) {
+      const bool sees_ground = ground[i] != 0;
+      const double z = mu_s * cos_t[i];
+      double* ar = a_r.data() + static_cast<std::size_t>(i) * n_nu;
+      double* am = a_m.data() + static_cast<std::size_t>(i) * n_nu;
+      double* br = First ? b_r.data() + static_cast<std::size_t>(i) * n_nu : nullptr;
+      double* bm = First ? b_m.data() + static_cast<std::size_t>(i) * n_nu : nullptr;
+      int lowest = n_e, highest = -1;
+      for (int p = 0; p < n_phi; ++p) {
+        const std::size_t d = static_cast<std::size_t>(i) * n_phi + p;
+        const double nu1 = sx * wx[d] + sy * wy[d] + z;
+        const Axis slice = nu_axis_4d(nu1, res);
+        double pr = phase_r[d];
+        double pm = phase_m[d];
+        const double f1 = 1.0 - slice.f;
+        const double f2 = slice.f;
+        if constexpr (First) {
+          // Single scattering gets its phase functions here (2008 code, first iteration).
+          const double p1r = rayleigh_phase(nu1);
+          const double p1m = cornette_shanks_phase(nu1, k.mie_g);
+          ar[slice.i0] += f1 * p1r * pr;
+          ar[slice.i1] += f2 * p1r * pr;
+          am[slice.i0] += f1 * p1r * pm;
+          am[slice.i1] += f2 * p1r * pm;
+          br[slice.i0] += f1 * p1m * pr;
+          br[slice.i1] += f2 * p1m * pr;
+          bm[slice.i0] += f1 * p1m * pm;
+          bm[slice.i1] += f2 * p1m * pm;
+        } else {
+          ar[slice.i0] += f1 * pr;
+          ar[slice.i1] += f2 * pr;
+          am[slice.i0] += f1 * pm;
+          am[slice.i1] += f2 * pm;
+        }
+        if (sees_ground) {
+          // Light reflected by the ground point seen in direction w (Lambertian, delta E of
+          // the previous order at the ground, for the sun at gnormal . s).
+          const double mu_ground = (r * mu_s + d_ground[i] * nu1) / g.bottom_m;
+          const Axis e = texture_axis(irradiance_u_mu_s(mu_ground), n_e);
+          const std::size_t c0 = static_cast<std::size_t>(i) * n_e + e.i0;
+          const std::size_t c1 = static_cast<std::size_t>(i) * n_e + e.i1;
+          g_r[c0] += (1.0 - e.f) * pr;
+          g_r[c1] += e.f * pr;
+          g_m[c0] += (1.0 - e.f) * pm;
+          g_m[c1] += e.f * pm;
+          lowest = std::min(lowest, e.i0);
+          highest = std::max(highest, e.i1);
+        }
+      }
+      ground_range[i] = {lowest, highest};
+    }
+  }
+
+  void density_column(const Source& source, int layer, int ms, double r, double /*cos_theta_min*/,
+                      float density_r, float density_m, const std::vector<double>& cos_t,
+                      const std::vector<double>& sin_t, const std::vector<double>& cos_p,
+                      const std::vector<double>& sin_p, const std::vector<char>& ground,
+                      const std::vector<double>& d_ground, const std::vector<float>& ground_light,
+                      int n_e, float* layer_values) const {
+    (void)layer;
+    const int n_theta = static_cast<int>(cos_t.size());
+    const int n_phi = static_cast<int>(cos_p.size());
+    const int n_nu = res.nu;
+    const double dtheta = kPi / n_theta;
+    const double dphi = kPi / n_theta;
+    const double mu_s = std::clamp(texel_mu_s(ms, res.mu_s), -1.0, 1.0);
+    std::vector<float> profile_a, profile_b;
+    build_profiles(source, r, mu_s, cos_t, profile_a, profile_b);
+    const std::size_t n_dir = static_cast<std::size_t>(n_theta) * n_phi;
+    std::vector<double> wx(n_dir), wy(n_dir), wz(n_dir), dw(n_dir);
+    for (int i = 0; i < n_theta; ++i) {
+      for (int p = 0; p < n_phi; ++p) {
+        const std::size_t d = static_cast<std::size_t>(i) * n_phi + p;
+        wx[d] = cos_p[p] * sin_t[i];
+        wy[d] = sin_p[p] * sin_t[i];
+        wz[d] = cos_t[i];
+        dw[d] = dtheta * dphi * sin_t[i];
+      }
+    }
+    // Weights of the profiles (R: with the Rayleigh phase of the scattering towards v; M:
+    // with the Mie phase) and of the ground columns.
+    const std::size_t n_profile = static_cast<std::size_t>(n_theta) * n_nu;
+    const std::size_t n_ground = static_cast<std::size_t>(n_theta) * n_e;
+    std::vector<double> a_r(n_profile), a_m(n_profile), b_r(n_profile), b_m(n_profile);
+    std::vector<double> g_r(n_ground, 0.0), g_m(n_ground, 0.0);  // kept zero outside ground_range
+    std::vector<std::pair<int, int>> ground_range(n_theta);
+    std::vector<double> phase_r(n_dir), phase_m(n_dir);
+    std::vector<float> sum_r(stride), sum_m(stride);
+    RowList<float> rows_r, rows_m;
+    const std::size_t texels_per_row = static_cast<std::size_t>(n_nu) * res.mu_s;
+    for (int jm = 0; jm < res.mu; ++jm) {
+      const Layer l = layer_geometry(layer, res.r, g);
+      const double mu = std::clamp(texel_mu(jm, res.mu, l, g), -1.0, 1.0);
+      const double vx = std::sqrt(1.0 - mu * mu);
+      for (std::size_t d = 0; d < n_dir; ++d) {
+        const double nu2 = vx * wx[d] + mu * wz[d];
+        phase_r[d] = rayleigh_phase(nu2) * dw[d];
+        phase_m[d] = cornette_shanks_phase(nu2, k.mie_g) * dw[d];
+      }
+      for (int knu = 0; knu < n_nu; ++knu) {
+        const double var = std::sqrt(1.0 - mu * mu) * std::sqrt(1.0 - mu_s * mu_s);
+        const double nu = std::clamp(texel_nu(knu, n_nu), mu_s * mu - var, mu_s * mu + var);
+        const double sx = vx == 0.0 ? 0.0 : (nu - mu_s * mu) / vx;
+        const double sy = std::sqrt(std::max(0.0, 1.0 - sx * sx - mu_s * mu_s));
+        std::fill(a_r.begin(), a_r.end(), 0.0);
+        std::fill(a_m.begin(), a_m.end(), 0.0);
+        if (source.first()) {
+          std::fill(b_r.begin(), b_r.end(), 0.0);
+          std::fill(b_m.begin(), b_m.end(), 0.0);
+          accumulate_weights<true>(n_theta, n_phi, sx, sy, mu_s, r, wx, wy, cos_t, phase_r, phase_m,
+                                   ground, d_ground, n_e, a_r, a_m, b_r, b_m, g_r, g_m,
+                                   ground_range);
+        } else {
+          accumulate_weights<false>(n_theta, n_phi, sx, sy, mu_s, r, wx, wy, cos_t, phase_r,
+                                    phase_m, ground, d_ground, n_e, a_r, a_m, b_r, b_m, g_r, g_m,
+                                    ground_range);
+        }
+        rows_r.clear();
+        rows_m.clear();
+        for (std::size_t s = 0; s < n_profile; ++s) {
+          const float* pa = profile_a.data() + s * stride;
+          rows_r.add(pa, a_r[s]);
+          rows_m.add(pa, a_m[s]);
+          if (source.first()) {
+            const float* pb = profile_b.data() + s * stride;
+            rows_r.add(pb, b_r[s]);
+            rows_m.add(pb, b_m[s]);
+          }
+        }
+        for (int i = 0; i < n_theta; ++i) {
+          if (ground_range[i].first > ground_range[i].second) continue;
+          for (int col = ground_range[i].first; col <= ground_range[i].second; ++col) {
+            const std::size_t c = static_cast<std::size_t>(i) * n_e + col;
+            const float* light = ground_light.data() + c * stride;
+            rows_r.add(light, g_r[c]);
+            rows_m.add(light, g_m[c]);
+            g_r[c] = 0.0;
+            g_m[c] = 0.0;
+          }
+        }
+        rows_r.sum(stride, sum_r.data());
+        rows_m.sum(stride, sum_m.data());
+        float* out = layer_values + (static_cast<std::size_t>(jm) * texels_per_row +
+                                     static_cast<std::size_t>(knu) * res.mu_s + ms) *
+                                        stride;
+        for (int w = 0; w < stride; ++w) {
+          out[w] =
+              k.rayleigh[w] * density_r * sum_r[w] + k.mie_scattering[w] * density_m * sum_m[w];
+        }
+      }
+    }
+  }
+
+  // Delta E of the order after `source` (Eq. 15): the sky irradiance it produces on a
+  // horizontal plane, over irradiance_samples / 2 zeniths x 2 irradiance_samples azimuths. As
+  // for J, the lookups at each fixed zenith are linear in the nu slices: the sum becomes
+  // scalar weights on precomputed profiles, the same terms in another order.
+  FloatTable2D build_irradiance(const Source& source) {
+    FloatTable2D e;
+    e.allocate(res.irradiance_mu_s, res.irradiance_r, stride);
+    const int n = res.irradiance_samples;
+    const double dphi = kPi / n;
+    const double dtheta = kPi / n;
+    std::vector<double> cos_t(n / 2), sin_t(n / 2), cos_p(2 * n);
+    for (int it = 0; it < n / 2; ++it) {
+      cos_t[it] = std::cos((it + 0.5) * dtheta);
+      sin_t[it] = std::sin((it + 0.5) * dtheta);
+    }
+    for (int ip = 0; ip < 2 * n; ++ip) cos_p[ip] = std::cos((ip + 0.5) * dphi);
+    for_each(static_cast<std::size_t>(res.irradiance_mu_s) * res.irradiance_r,
+             [&](std::size_t texel) {
+               const int i = static_cast<int>(texel % res.irradiance_mu_s);
+               const int j = static_cast<int>(texel / res.irradiance_mu_s);
+               const double r = irradiance_texel_r(j, res.irradiance_r, g);
+               const double mu_s = irradiance_texel_mu_s(i, res.irradiance_mu_s);
+               const double sx = std::sqrt(1.0 - mu_s * mu_s);
+               std::vector<float> profile_a, profile_b;
+               build_profiles(source, r, mu_s, cos_t, profile_a, profile_b);
+               const std::size_t n_profile = cos_t.size() * static_cast<std::size_t>(res.nu);
+               std::vector<double> weight_a(n_profile, 0.0), weight_b(n_profile, 0.0);
+               for (std::size_t it = 0; it < cos_t.size(); ++it) {
+                 const double dw = dtheta * dphi * sin_t[it];
+                 for (int ip = 0; ip < 2 * n; ++ip) {
+                   const double nu = sx * cos_p[ip] * sin_t[it] + mu_s * cos_t[it];
+                   const Axis slice = nu_axis_4d(nu, res);
+                   const double w = cos_t[it] * dw;
+                   const double wa = source.first() ? rayleigh_phase(nu) * w : w;
+                   const std::size_t s0 = it * res.nu + slice.i0;
+                   const std::size_t s1 = it * res.nu + slice.i1;
+                   weight_a[s0] += (1.0 - slice.f) * wa;
+                   weight_a[s1] += slice.f * wa;
+                   if (source.first()) {
+                     const double wb = cornette_shanks_phase(nu, k.mie_g) * w;
+                     weight_b[s0] += (1.0 - slice.f) * wb;
+                     weight_b[s1] += slice.f * wb;
+                   }
+                 }
+               }
+               RowList<float> rows;
+               for (std::size_t p = 0; p < n_profile; ++p) {
+                 rows.add(profile_a.data() + p * stride, weight_a[p]);
+                 if (source.first()) rows.add(profile_b.data() + p * stride, weight_b[p]);
+               }
+               rows.sum(stride, e.texel(i, j));
+             });
+    return e;
+  }
+
+  // Scattering of the order whose density is j_table (Eq. 8, 2008 code: inscatterN).
+  void build_scattering(const HalfTable4D& j_table, HalfTable4D& out_table, double progress_units) {
+    out_table.allocate(res, stride);
+    const std::size_t rows = static_cast<std::size_t>(res.r) * res.mu;
+    for_each(rows, [&](std::size_t row) {
+      const int layer = static_cast<int>(row / res.mu);
+      const int jm = static_cast<int>(row % res.mu);
+      const Layer l = layer_geometry(layer, res.r, g);
+      const double r = l.r;
+      const double mu = texel_mu(jm, res.mu, l, g);
+      const RaySamples s = ray_samples(r, mu);
+      const int n = res.inscatter_steps;
+      std::vector<double> radius(n + 1);
+      std::vector<Axis> r_axis(n + 1), mu_axis(n + 1);
+      for (int i = 0; i <= n; ++i) {
+        radius[i] =
+            std::max(std::sqrt(r * r + s.t[i] * s.t[i] + 2.0 * r * mu * s.t[i]), g.bottom_m + 10.0);
+        const double mu_i = (r * mu + s.t[i]) / radius[i];
+        r_axis[i] = r_axis_4d(radius[i], res, g);
+        mu_axis[i] = mu_axis_4d(radius[i], mu_i, res, g);
+      }
+      const std::size_t texels = out_table.row_texels();
+      std::vector<float> values(texels * stride, 0.0f), sample(stride);
+      RowList<std::uint16_t> list;
+      for (int knu = 0; knu < res.nu; ++knu) {
+        const double nu = texel_nu(knu, res.nu);
+        const Axis nu_axis = nu_axis_4d(nu, res);
+        for (int ms = 0; ms < res.mu_s; ++ms) {
+          const double mu_s = texel_mu_s(ms, res.mu_s);
+          float* acc = values.data() + (static_cast<std::size_t>(knu) * res.mu_s + ms) * stride;
+          for (int i = 0; i <= n; ++i) {
+            const double mu_s_i = (nu * s.t[i] + mu_s * r) / radius[i];
+            const Coord4 c{r_axis[i], mu_axis[i], texture_axis(u_mu_s(mu_s_i, res.mu_s), res.mu_s),
+                           nu_axis};
+            list.clear();
+            gather_4d(j_table, c, 1.0, list);
+            list.sum(stride, sample.data());
+            const float* view = s.transmittance.data() + static_cast<std::size_t>(i) * stride;
+            const float weight = static_cast<float>(s.weight[i]);
+            for (int w = 0; w < stride; ++w) acc[w] += weight * view[w] * sample[w];
+          }
+        }
+      }
+      out_table.store_row(layer, jm, values.data());
+      if (jm == res.mu - 1)
+        progress.advance(progress_units / res.r, "multiple scattering: transport");
+    });
+  }
+
+  void add_into(HalfTable4D& sum, const HalfTable4D& term) {
+    const std::size_t rows = static_cast<std::size_t>(res.r) * res.mu;
+    for_each(rows, [&](std::size_t row) {
+      const int layer = static_cast<int>(row / res.mu);
+      const int jm = static_cast<int>(row % res.mu);
+      const std::size_t n = sum.row_texels() * stride;
+      std::vector<float> a(n), b(n);
+      sum.load_row(layer, jm, a.data());
+      term.load_row(layer, jm, b.data());
+      for (std::size_t i = 0; i < n; ++i) a[i] += b[i];
+      sum.store_row(layer, jm, a.data());
+    });
+  }
+};
+
+void validate(const Resolution& res) {
+  auto require = [](bool ok, const char* what) {
+    if (!ok) throw std::invalid_argument(what);
+  };
+  require(res.r >= 2 && res.mu >= 4 && res.mu % 2 == 0 && res.mu_s >= 2 && res.nu >= 2,
+          "resolution: 4D table sizes too small (r >= 2, mu >= 4 and even, mu_s >= 2, nu >= 2)");
+  require(res.transmittance_mu >= 2 && res.transmittance_r >= 2 && res.irradiance_mu_s >= 2 &&
+              res.irradiance_r >= 2,
+          "resolution: 2D table sizes too small");
+  require(res.transmittance_steps >= 1 && res.inscatter_steps >= 1 && res.sphere_samples >= 1 &&
+              res.irradiance_samples >= 2 && res.orders >= 1,
+          "resolution: sample counts too small");
+}
+
+}  // namespace
+
+Tables precompute_tables(const AtmosphereSpectra& spectra, const Resolution& resolution,
+                         const PrecomputeContext& context) {
+  validate(resolution);
+  Tables t;
+  t.resolution = resolution;
+  t.geometry.bottom_m = spectra.parameters.earth_radius_m;
+  t.geometry.top_m = spectra.parameters.top_radius_m;
+  t.geometry.limit_m = spectra.parameters.top_radius_m + 1000.0;
+  t.wavelengths = static_cast<int>(spectra.grid.size());
+  t.stride = padded_stride(t.wavelengths);
+  const Coefficients k = coefficients(spectra, t.stride);
+  // Progress units: single scattering 1, per order density 3, transport 1.5.
+  const int later_orders = std::max(resolution.orders - 1, 0);
+  Progress progress(context, 1.0 + 4.5 * later_orders + 0.05);
+  Builder b{resolution, t.geometry, k, context, t, progress, t.stride};
+
+  context.report(0.0, "transmittance");
+  b.build_transmittance();
+  context.check_cancelled();
+  FloatTable2D delta_e = b.direct_irradiance();
+  b.build_single_scattering();
+
+  Builder::Source source{&t.single_rayleigh, &t.single_mie, nullptr};
+  // Sky irradiance: the orders 1 .. max(orders - 1, 1) of light reaching the ground (2008
+  // code: the delta E of iterations 2 .. orders).
+  FloatTable2D irradiance_sum = b.build_irradiance(source);
+  // Peak memory: the two single-scattering tables, the density, the running sum and one
+  // order's scattering, all in half precision (the previous order is released before the next
+  // one is transported).
+  HalfTable4D density, previous;
+  for (int order = 2; order <= resolution.orders; ++order) {
+    b.build_density(source, delta_e, density, 3.0);
+    if (order > 2) {
+      FloatTable2D e = b.build_irradiance(source);
+      for (std::size_t i = 0; i < e.values.size(); ++i) irradiance_sum.values[i] += e.values[i];
+      delta_e = std::move(e);
+    } else {
+      delta_e = irradiance_sum;
+    }
+    previous = HalfTable4D{};
+    HalfTable4D current;
+    b.build_scattering(density, current, 1.5);
+    if (order == 2) {
+      t.multiple = std::move(current);
+      source = Builder::Source{nullptr, nullptr, &t.multiple};
+    } else {
+      b.add_into(t.multiple, current);
+      previous = std::move(current);
+      source = Builder::Source{nullptr, nullptr, &previous};
+    }
+  }
+  t.sky_irradiance = std::move(irradiance_sum);
+  context.report(1.0, "done");
+  return t;
+}
+
+}  // namespace clearsky::bruneton

@@ -1,0 +1,186 @@
+// Preetham: descriptor, per-sun state (Perez coefficients and zenith values) and queries.
+#include "models/preetham/preetham.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "models/colour/colour_spaces.h"
+#include "models/colour/daylight_spectrum.h"
+
+namespace clearsky {
+namespace {
+
+ModelDescriptor make_descriptor() {
+  ModelDescriptor d;
+  d.id = std::string("preetham");
+  d.name = std::string("Preetham 1999");
+  d.version = std::string("1");
+  d.citation = std::string(
+      "A. J. Preetham, P. Shirley, B. Smits. A Practical Analytic Model for Daylight. Proceedings "
+      "of "
+      "SIGGRAPH 1999, pages 91-100.");
+  d.summary =
+      "Analytic sky luminance and chromaticity: Perez distributions fitted to Nishita96 skies, "
+      "with zenith "
+      "luminance and chromaticity as functions of turbidity and sun zenith; the spectrum is the "
+      "CIE daylight "
+      "basis S0 + M1 S1 + M2 S2 for the chromaticity, scaled to the luminance. As in the 2016 "
+      "study: turbidity "
+      "2.53; the extraterrestrial spectrum, albedo and aerosol parameters are built into the fit "
+      "and ignored. "
+      "Ground views only, sun above the horizon.";
+  d.min_wavelength_nm = 360.0;  // the CIE daylight basis table
+  d.max_wavelength_nm = 830.0;
+  d.parameters = {
+      ParameterSpec{"turbidity", "", "atmospheric turbidity (the study: 2.53)", 2.53, 2.0, 10.0,
+                    false, true},
+  };
+  ModelCapabilities& c = d.capabilities;
+  c.min_altitude_m = 0.0;
+  c.max_altitude_m = 0.0;
+  c.view_from_space = false;
+  c.view_below_horizon = false;
+  c.aerial_perspective = false;
+  c.max_sun_zenith_deg = 90.0;
+  c.scattering_orders = -1;
+  c.per_sun_precomputation = false;
+  c.sun_irradiance = true;
+  c.sky_irradiance = true;
+  return d;
+}
+
+// One Perez distribution normalised by its value at the zenith: value(view) = scale x F(view).
+struct ScaledPerez {
+  preetham::PerezCoefficients p;
+  double scale = 0;
+};
+
+class PreethamSunState final : public SunState {
+ public:
+  PreethamSunState(const SunPosition& sun, double turbidity) : SunState(sun) {
+    const double zenith = sun.zenith_rad;
+    const auto make = [&](const preetham::PerezCoefficients& p, double zenith_value) {
+      return ScaledPerez{p, zenith_value / preetham::perez(p, 1.0, zenith)};
+    };
+    // kcd/m2 -> cd/m2.
+    luminance = make(preetham::luminance_coefficients(turbidity),
+                     1000.0 * preetham::zenith_luminance_kcd_m2(turbidity, zenith));
+    chroma_x = make(preetham::chromaticity_x_coefficients(turbidity),
+                    preetham::zenith_chromaticity_x(turbidity, zenith));
+    chroma_y = make(preetham::chromaticity_y_coefficients(turbidity),
+                    preetham::zenith_chromaticity_y(turbidity, zenith));
+  }
+  std::size_t memory_bytes() const override { return sizeof(*this); }
+
+  ScaledPerez luminance, chroma_x, chroma_y;
+};
+
+const PreethamSunState& as_preetham_state(const SunState& sun) {
+  const auto* state = dynamic_cast<const PreethamSunState*>(&sun);
+  if (state == nullptr)
+    throw std::invalid_argument("sun state was not prepared by the preetham model");
+  return *state;
+}
+
+// F(theta, gamma) for the three distributions at once: they share cos(theta), gamma and
+// cos^2(gamma).
+PreethamModel::LuminanceChromaticity evaluate(const PreethamSunState& s, double cos_theta,
+                                              double cos_gamma) {
+  const double mu = std::max(cos_theta, 1e-9);
+  const double inverse_mu = 1.0 / mu;
+  const double gamma = std::acos(std::clamp(cos_gamma, -1.0, 1.0));
+  const double cos2 = cos_gamma * cos_gamma;
+  const auto f = [&](const ScaledPerez& d) {
+    const auto& p = d.p;
+    return d.scale * (1.0 + p.a * std::exp(p.b * inverse_mu)) *
+           (1.0 + p.c * std::exp(p.d * gamma) + p.e * cos2);
+  };
+  return {f(s.luminance), f(s.chroma_x), f(s.chroma_y)};
+}
+
+}  // namespace
+
+const ModelDescriptor& preetham_descriptor() {
+  static const ModelDescriptor descriptor = make_descriptor();
+  return descriptor;
+}
+
+ModelFactory preetham_factory() {
+  return ModelFactory{&preetham_descriptor(), &PreethamModel::create};
+}
+
+std::shared_ptr<const SkyModel> PreethamModel::create(const ModelConfig& config,
+                                                      const PrecomputeContext&) {
+  validate_config(preetham_descriptor(), config);
+  const double t = config.atmosphere.turbidity;
+  const ParameterSpec& spec = *preetham_descriptor().find_parameter("turbidity");
+  if (!(t >= spec.min_value && t <= spec.max_value)) {
+    throw std::invalid_argument("turbidity: must be in [2, 10] for the preetham model");
+  }
+  return std::shared_ptr<const SkyModel>(new PreethamModel(config));
+}
+
+PreethamModel::PreethamModel(const ModelConfig& config) : SkyModel(config) {
+  // The basis on the query grid, and its Y where the study integrates it: its 40 bins.
+  const auto basis = [](const WavelengthGrid& grid) {
+    const Spectrum s0 = daylight_relative_spectrum({0.0, 0.0}, grid);
+    return std::array<Spectrum, 3>{s0, daylight_relative_spectrum({1.0, 0.0}, grid) - s0,
+                                   daylight_relative_spectrum({0.0, 1.0}, grid) - s0};
+  };
+  const auto on_grid = basis(wavelengths());
+  s0_ = on_grid[0];
+  s1_ = on_grid[1];
+  s2_ = on_grid[2];
+  const WavelengthGrid bins = WavelengthGrid::paper_bins();
+  const auto on_bins = basis(bins);
+  y_s0_ = spectrum_to_xyz(on_bins[0], bins).y;
+  y_s1_ = spectrum_to_xyz(on_bins[1], bins).y;
+  y_s2_ = spectrum_to_xyz(on_bins[2], bins).y;
+}
+
+std::shared_ptr<const SunState> PreethamModel::compute_sun_state(const SunPosition& sun,
+                                                                 const PrecomputeContext&) const {
+  return std::make_shared<PreethamSunState>(sun, turbidity());
+}
+
+PreethamModel::LuminanceChromaticity PreethamModel::luminance_chromaticity(
+    const SunState& sun, const ViewDirection& view) const {
+  const PreethamSunState& state = as_preetham_state(sun);
+  return evaluate(state, std::cos(view.zenith_rad), cos_angle_between(view, state.sun()));
+}
+
+void PreethamModel::compute_sky_radiance(const SunState& sun, const Viewpoint&,
+                                         std::span<const ViewDirection> views,
+                                         SpectralBatch& out) const {
+  const PreethamSunState& state = as_preetham_state(sun);
+  const Vec3 sun_direction = state.sun().unit_vector();
+  const std::size_t n = s0_.size();
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    const Vec3 d = views[i].unit_vector();
+    const LuminanceChromaticity v = evaluate(state, d.z, dot(d, sun_direction));
+    const preetham::BasisWeights m = preetham::daylight_basis_weights(v.chroma_x, v.chroma_y);
+    // L = k (S0 + M1 S1 + M2 S2) with 683 k (Y_S0 + M1 Y_S1 + M2 Y_S2) = Y (cd/m2).
+    const double k =
+        v.luminance_cd_m2 / (kMaxLuminousEfficacy * (y_s0_ + m.m1 * y_s1_ + m.m2 * y_s2_));
+    auto spectrum = out.spectrum(i);
+    // For a low sun, views near the horizon towards it get chromaticities far from the
+    // daylight locus, where the basis combination turns negative at the short wavelengths:
+    // clamped to no light, the physical limit.
+    for (std::size_t w = 0; w < n; ++w)
+      spectrum[w] = std::max(k * (s0_[w] + m.m1 * s1_[w] + m.m2 * s2_[w]), 0.0);
+  }
+}
+
+Spectrum PreethamModel::compute_sun_irradiance(const SunState& sun, const Viewpoint&) const {
+  Spectrum irradiance = atmosphere().solar_irradiance_w_m2_nm;
+  for (std::size_t i = 0; i < irradiance.size(); ++i) {
+    irradiance[i] *=
+        preetham::sun_transmittance(turbidity(), sun.sun().zenith_rad, wavelengths()[i]);
+  }
+  return irradiance;
+}
+
+
+}  // namespace clearsky

@@ -1,0 +1,117 @@
+// End-to-end tests of the data commands of the clearsky executable (server/cli/): `import
+// kider`, `datasets --json` and `evaluate`, run as a user would, on a temporary database.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "models/registry.h"
+#include "tests/support/shared_data.h"
+
+namespace clearsky {
+namespace {
+
+struct Result {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+Result run(const std::string& arguments) {
+  const std::string command = std::string(CLEARSKY_BINARY_DIR) + "/clearsky " + arguments + " 2>&1";
+  Result result;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  std::array<char, 4096> buffer;
+  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
+  const int status = ::pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+struct TempDb {
+  std::filesystem::path dir;
+  std::string db;
+  TempDb() {
+    dir = std::filesystem::temp_directory_path() /
+          ("clearsky_cli_" + std::to_string(::getpid()) + "_" +
+           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(dir);
+    db = (dir / "var" / "sky.db").string();
+  }
+  ~TempDb() {
+    std::error_code ignored;
+    std::filesystem::remove_all(dir, ignored);
+  }
+};
+
+std::string archive(const std::string& time) {
+  return (clearsky::testing::shared_data_dir() / "kider2014/2013-05-27/RADIANCE" /
+          ("2013-05-27___" + time + ".00.7z"))
+      .string();
+}
+
+TEST(DataCommands, ImportThenListDatasets) {
+  CLEARSKY_REQUIRE_SHARED_DATA("kider2014/2013-05-27/RADIANCE");
+  ASSERT_TRUE(std::filesystem::exists(std::string(CLEARSKY_BINARY_DIR) + "/clearsky"))
+      << "build the clearsky target";
+  TempDb t;
+  const Result imported =
+      run("import kider " + archive("09.30") + " " + archive("09.45") + " --name day --db " + t.db);
+  ASSERT_EQ(imported.exit_code, 0) << imported.output;
+  EXPECT_NE(imported.output.find("2 captures added (162 samples)"), std::string::npos)
+      << imported.output;
+  const Result again = run("import kider " + archive("09.30") + " --name day --json --db " + t.db);
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(nlohmann::json::parse(again.output).at("unchanged").size(), 1u);
+  const Result listed = run("datasets --json --db " + t.db);
+  ASSERT_EQ(listed.exit_code, 0) << listed.output;
+  EXPECT_EQ(nlohmann::json::parse(listed.output),
+            nlohmann::json::parse(R"([{"name": "day", "captures": 2, "samples": 162}])"));
+}
+
+TEST(DataCommands, ErrorsAreReportedWithExitStatus1) {
+  TempDb t;
+  const Result no_dataset = run("evaluate --dataset missing --models all --db " + t.db);
+  EXPECT_EQ(no_dataset.exit_code, 1);
+  EXPECT_NE(no_dataset.output.find("clearsky: "), std::string::npos) << no_dataset.output;
+  const Result unknown_model = run("evaluate --dataset missing --models nishita2042 --db " + t.db);
+  EXPECT_EQ(unknown_model.exit_code, 1);
+  EXPECT_NE(unknown_model.output.find("nishita2042"), std::string::npos) << unknown_model.output;
+  std::filesystem::create_directories(t.dir);
+  const auto bad = t.dir / "bad.7z";
+  {
+    std::FILE* f = std::fopen(bad.c_str(), "w");
+    std::fputs("not an archive", f);
+    std::fclose(f);
+  }
+  const Result bad_import = run("import kider " + bad.string() + " --db " + t.db);
+  EXPECT_EQ(bad_import.exit_code, 1);
+  EXPECT_NE(bad_import.output.find("bad.7z"), std::string::npos) << bad_import.output;
+}
+
+// With the first registered model (when any is registered): the JSON of the CLI contract.
+TEST(DataCommands, EvaluatePrintsTheContractJson) {
+  CLEARSKY_REQUIRE_SHARED_DATA("kider2014/2013-05-27/RADIANCE");
+  if (registered_models().empty()) GTEST_SKIP() << "no model registered yet";
+  TempDb t;
+  ASSERT_EQ(run("import kider " + archive("11.45") + " --name one --db " + t.db).exit_code, 0);
+  const std::string id = registered_models().front().descriptor->id;
+  const Result evaluated = run("evaluate --dataset one --models " + id + " --json --db " + t.db);
+  ASSERT_EQ(evaluated.exit_code, 0) << evaluated.output;
+  const auto j = nlohmann::json::parse(evaluated.output);
+  EXPECT_EQ(j.at("dataset"), "one");
+  EXPECT_EQ(j.at("wavelength_range_nm").dump(), "[360,720]");
+  const auto& m = j.at("models").at(0);
+  EXPECT_EQ(m.at("model"), id);
+  EXPECT_GT(m.at("rmse").get<double>(), 0.0);
+  EXPECT_EQ(m.at("captures").at(0).at("time"), "2013-05-27T11:45:00-04:00");
+  EXPECT_NEAR(m.at("captures").at(0).at("sun_azimuth").get<double>(), 122.265, 0.2);
+}
+
+}  // namespace
+}  // namespace clearsky
