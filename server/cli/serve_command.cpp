@@ -14,6 +14,7 @@
 #include "models/registry.h"
 #include "server/cache/file_table_cache.h"
 #include "server/cli/commands.h"
+#include "server/cli/database_option.h"
 #include "server/http/http_server.h"
 
 namespace clearsky::cli {
@@ -28,8 +29,9 @@ void run_server(const server::ServerConfig& config) {
   sigaddset(&signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
 
-  const std::filesystem::path db_parent = std::filesystem::path(config.db_path).parent_path();
-  if (!db_parent.empty()) std::filesystem::create_directories(db_parent);
+  // The database is opened (created and migrated by the storage layer) at start, so that a
+  // bad --db fails here rather than at the first request that needs it.
+  const storage::Database database = open_cli_database(config.db_path);
   server::FileTableCache cache(config.cache_dir);
   server::Metrics metrics;
   cache.set_observer([&metrics](bool hit) { metrics.observe_cache_lookup(hit); });
@@ -108,7 +110,7 @@ void add_serve_command(CLI::App& app) {
   command->add_option("--port", config->port, "Port (0: any free port)")
       ->capture_default_str()
       ->check(CLI::Range(0, 65535));
-  command->add_option("--db", config->db_path, "SQLite database")->capture_default_str();
+  add_database_option(*command, config->db_path);
   command->add_option("--cache-dir", config->cache_dir, "Disk cache of model tables")
       ->capture_default_str();
   command
