@@ -146,6 +146,7 @@ json build() {
       if (s["name"] != "sun_zenith" && s["name"] != "sun_azimuth") p.push_back(s);
     }
     p.push_back(param("altitude", "number", "Observer elevation, m"));
+    p.push_back(param("delta_ut1", "number", "UT1 - UTC, seconds in (-1, 1) (default 0)"));
     paths["/v1/sun"]["get"] = {
         {"summary", "Sun zenith/azimuth (NREL SPA) and sunrise, transit, sunset of the local day"},
         {"parameters", p},
