@@ -3,10 +3,12 @@
 
 #include <vector>
 
+#include "models/haber/haber.h"
+
 namespace clearsky {
 
 std::span<const ModelFactory> registered_models() {
-  static const std::vector<ModelFactory> factories = {};
+  static const std::vector<ModelFactory> factories = {haber::kFactory};
   return factories;
 }
 
