@@ -1,0 +1,45 @@
+// Import of Kider et al. 2014 captures (archives or folders) into a dataset, all in one
+// transaction: every path is read and decoded before the database is touched, and a failure
+// at any point (malformed file, truncated archive, conflict, crash) leaves the database as it
+// was. A capture already present with the same content (hash of its decoded samples, time
+// and site) is left unchanged, so re-importing is a no-op; the same label with other content
+// is a conflict. Spectra are stored as measured: sample 0 keeps its kSampleKnownDefective
+// flag and is repaired by evaluations, not here. The computed sun position (SPA, no
+// refraction, as the study) is stored with each capture.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "storage/importers/kider_format.h"
+#include "storage/sqlite/database.h"
+
+namespace clearsky::storage {
+
+struct KiderImportRequest {
+  std::string dataset_name = "kider2014";
+  std::vector<std::filesystem::path> paths;  // .7z archives or folders
+  KiderImportOptions options;
+  // Called after each new capture is written, inside the transaction (tests use it to
+  // interrupt an import half-way).
+  std::function<void(int captures_written)> after_capture_written;
+};
+
+struct ImportReport {
+  std::string dataset;
+  std::vector<std::string> added;      // capture labels
+  std::vector<std::string> unchanged;  // already present with the same content
+  std::int64_t samples_added = 0;
+  double seconds = 0;
+};
+
+ImportReport import_kider(Database& db, const KiderImportRequest& request);
+
+// 16 hex digits identifying a capture's content: label, time, site and every sample's index,
+// direction, flags, wavelengths and values.
+std::string capture_content_hash(const MeasuredCapture& capture);
+
+}  // namespace clearsky::storage

@@ -1,0 +1,38 @@
+// Datasets of measured skies: a named set of captures of one format (e.g. "kider2014").
+// SQL on the datasets table lives only here. Thread-safety: as the Database it uses.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "storage/sqlite/database.h"
+
+namespace clearsky::storage {
+
+struct DatasetSummary {
+  std::int64_t id = 0;
+  std::string name;
+  std::string format;
+  std::string created_utc;
+  std::int64_t captures = 0;
+  std::int64_t samples = 0;
+};
+
+class DatasetRepository {
+ public:
+  explicit DatasetRepository(Database& db) : db_(db) {}
+  // The dataset's id, creating it when absent; throws std::invalid_argument when it exists
+  // with another format.
+  std::int64_t find_or_create(const std::string& name, const std::string& format);
+  std::optional<DatasetSummary> find(const std::string& name);
+  std::vector<DatasetSummary> list();
+  // Deletes the dataset with its captures, samples and runs; false when absent.
+  bool remove(const std::string& name);
+
+ private:
+  Database& db_;
+};
+
+}  // namespace clearsky::storage

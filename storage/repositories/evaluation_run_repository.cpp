@@ -1,0 +1,132 @@
+// SQL of the evaluation_runs and evaluation_capture_results tables
+// (evaluation_run_repository.h).
+#include "storage/repositories/evaluation_run_repository.h"
+
+#include "storage/repositories/utc_clock.h"
+
+namespace clearsky::storage {
+namespace {
+
+constexpr const char* kRunSelect =
+    "SELECT id, dataset_id, job_id, model_id, model_version, parameters, software_version, min_wavelength_nm,"
+    " max_wavelength_nm, started_utc, finished_utc, status, error, rmse, precompute_seconds, evaluate_seconds,"
+    " processing_steps FROM evaluation_runs";
+
+std::optional<double> optional_double(const Statement& row, int column) {
+  if (row.is_null(column)) return std::nullopt;
+  return row.column_double(column);
+}
+
+std::optional<std::string> optional_text(const Statement& row, int column) {
+  if (row.is_null(column)) return std::nullopt;
+  return row.column_text(column);
+}
+
+RunRecord read_run(const Statement& row) {
+  RunRecord r;
+  r.id = row.column_int64(0);
+  r.dataset_id = row.column_int64(1);
+  if (!row.is_null(2)) r.job_id = row.column_int64(2);
+  r.model_id = row.column_text(3);
+  r.model_version = row.column_text(4);
+  r.parameters = row.column_text(5);
+  r.software_version = row.column_text(6);
+  r.min_wavelength_nm = row.column_double(7);
+  r.max_wavelength_nm = row.column_double(8);
+  r.started_utc = row.column_text(9);
+  r.finished_utc = optional_text(row, 10);
+  r.status = row.column_text(11);
+  r.error = optional_text(row, 12);
+  r.rmse = optional_double(row, 13);
+  r.precompute_seconds = optional_double(row, 14);
+  r.evaluate_seconds = optional_double(row, 15);
+  r.processing_steps = row.column_text(16);
+  return r;
+}
+
+}  // namespace
+
+std::int64_t EvaluationRunRepository::start(const NewRun& run) {
+  auto statement = db_.prepare(
+      "INSERT INTO evaluation_runs (dataset_id, job_id, model_id, model_version, parameters, software_version,"
+      " min_wavelength_nm, max_wavelength_nm, started_utc, status) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, 'running')");
+  statement.bind(1, run.dataset_id);
+  if (run.job_id)
+    statement.bind(2, *run.job_id);
+  else
+    statement.bind_null(2);
+  statement.bind(3, run.model_id)
+      .bind(4, run.model_version)
+      .bind(5, run.parameters)
+      .bind(6, run.software_version)
+      .bind(7, run.min_wavelength_nm)
+      .bind(8, run.max_wavelength_nm)
+      .bind(9, utc_now_iso8601());
+  statement.run();
+  return db_.last_insert_rowid();
+}
+
+void EvaluationRunRepository::finish(std::int64_t run_id, double rmse, double precompute_seconds,
+                                     double evaluate_seconds, const std::string& processing_steps,
+                                     const std::vector<RunCaptureResult>& captures) {
+  Transaction transaction(db_);
+  auto insert = db_.prepare(
+      "INSERT INTO evaluation_capture_results (run_id, capture_id, sun_zenith_deg, sun_azimuth_deg, rmse,"
+      " values_compared) VALUES (?, ?, ?, ?, ?, ?)");
+  for (const RunCaptureResult& c : captures) {
+    insert.reset();
+    insert.bind(1, run_id)
+        .bind(2, c.capture_id)
+        .bind(3, c.sun_zenith_deg)
+        .bind(4, c.sun_azimuth_deg)
+        .bind(5, c.rmse)
+        .bind(6, c.values_compared);
+    insert.run();
+  }
+  auto update = db_.prepare(
+      "UPDATE evaluation_runs SET status = 'succeeded', finished_utc = ?, rmse = ?, precompute_seconds = ?,"
+      " evaluate_seconds = ?, processing_steps = ? WHERE id = ?");
+  update.bind(1, utc_now_iso8601())
+      .bind(2, rmse)
+      .bind(3, precompute_seconds)
+      .bind(4, evaluate_seconds)
+      .bind(5, processing_steps)
+      .bind(6, run_id);
+  update.run();
+  transaction.commit();
+}
+
+void EvaluationRunRepository::fail(std::int64_t run_id, const std::string& error) {
+  auto update =
+      db_.prepare("UPDATE evaluation_runs SET status = 'failed', finished_utc = ?, error = ? WHERE id = ?");
+  update.bind(1, utc_now_iso8601()).bind(2, error).bind(3, run_id);
+  update.run();
+}
+
+std::optional<RunRecord> EvaluationRunRepository::get(std::int64_t run_id) {
+  auto query = db_.prepare(std::string(kRunSelect) + " WHERE id = ?");
+  query.bind(1, run_id);
+  if (!query.step()) return std::nullopt;
+  RunRecord run = read_run(query);
+  auto results = db_.prepare(
+      "SELECT r.capture_id, c.label, c.time_utc_s, c.utc_offset_minutes, r.sun_zenith_deg, r.sun_azimuth_deg,"
+      " r.rmse, r.values_compared FROM evaluation_capture_results r JOIN captures c ON r.capture_id = c.id"
+      " WHERE r.run_id = ? ORDER BY c.time_utc_s, c.label");
+  results.bind(1, run_id);
+  while (results.step()) {
+    run.captures.push_back({results.column_int64(0), results.column_text(1), results.column_double(2),
+                            static_cast<int>(results.column_int64(3)), results.column_double(4),
+                            results.column_double(5), results.column_double(6), results.column_int64(7)});
+  }
+  return run;
+}
+
+std::vector<RunRecord> EvaluationRunRepository::list(std::int64_t dataset_id) {
+  auto query = db_.prepare(std::string(kRunSelect) + " WHERE dataset_id = ? ORDER BY started_utc DESC, id DESC");
+  query.bind(1, dataset_id);
+  std::vector<RunRecord> runs;
+  while (query.step()) runs.push_back(read_run(query));
+  return runs;
+}
+
+}  // namespace clearsky::storage

@@ -1,0 +1,70 @@
+// Evaluation runs of a model against a dataset: what was run (model id and version, the full
+// parameter set, the software version, the wavelength range, the processing steps applied to
+// the measurements), when, how it ended, the total RMSE and timings, and the result of every
+// capture (sun angles used, RMSE). A run is recorded as 'running' when it starts so that a
+// crash leaves a trace. SQL on these tables lives only here. Thread-safety: as the Database.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "storage/sqlite/database.h"
+
+namespace clearsky::storage {
+
+struct RunCaptureResult {
+  std::int64_t capture_id = 0;
+  std::string capture_label;   // filled when read
+  double capture_time_utc_s = 0;  // filled when read
+  int utc_offset_minutes = 0;     // filled when read
+  double sun_zenith_deg = 0;
+  double sun_azimuth_deg = 0;
+  double rmse = 0;  // mW/(m2.sr.nm)
+  std::int64_t values_compared = 0;
+};
+
+struct NewRun {
+  std::int64_t dataset_id = 0;
+  std::optional<std::int64_t> job_id;
+  std::string model_id;
+  std::string model_version;
+  std::string parameters;        // ModelConfig::canonical_string()
+  std::string software_version;
+  double min_wavelength_nm = 360;
+  double max_wavelength_nm = 720;
+};
+
+struct RunRecord {
+  std::int64_t id = 0;
+  std::int64_t dataset_id = 0;
+  std::optional<std::int64_t> job_id;
+  std::string model_id, model_version, parameters, software_version;
+  double min_wavelength_nm = 0, max_wavelength_nm = 0;
+  std::string started_utc;
+  std::optional<std::string> finished_utc;
+  std::string status;  // running, succeeded, failed
+  std::optional<std::string> error;
+  std::optional<double> rmse, precompute_seconds, evaluate_seconds;
+  std::string processing_steps;  // one step per line
+  std::vector<RunCaptureResult> captures;  // filled by get()
+};
+
+class EvaluationRunRepository {
+ public:
+  explicit EvaluationRunRepository(Database& db) : db_(db) {}
+  std::int64_t start(const NewRun& run);
+  // Records success with the per-capture results (in one transaction).
+  void finish(std::int64_t run_id, double rmse, double precompute_seconds, double evaluate_seconds,
+              const std::string& processing_steps, const std::vector<RunCaptureResult>& captures);
+  void fail(std::int64_t run_id, const std::string& error);
+  std::optional<RunRecord> get(std::int64_t run_id);
+  // Runs of a dataset, newest first, without per-capture results.
+  std::vector<RunRecord> list(std::int64_t dataset_id);
+
+ private:
+  Database& db_;
+};
+
+}  // namespace clearsky::storage

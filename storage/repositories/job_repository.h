@@ -1,0 +1,44 @@
+// Scheduled evaluations: a named job evaluates models (ids or "all") against a dataset on a
+// cron-style schedule; the scheduler (server/) records its last and next run. The schedule
+// text is validated by the scheduler, not here. SQL on the jobs table lives only here.
+// Thread-safety: as the Database it uses.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "storage/sqlite/database.h"
+
+namespace clearsky::storage {
+
+struct JobRecord {
+  std::int64_t id = 0;
+  std::string name;
+  std::string schedule;
+  std::int64_t dataset_id = 0;
+  std::string models;      // "all" or comma-separated model ids
+  std::string parameters;  // parameter overrides, as the API received them
+  bool paused = false;
+  std::string created_utc;
+  std::optional<std::string> last_run_utc;
+  std::optional<std::string> next_run_utc;
+};
+
+class JobRepository {
+ public:
+  explicit JobRepository(Database& db) : db_(db) {}
+  // Throws SqliteError (constraint) when the name is taken or the dataset does not exist.
+  std::int64_t create(const JobRecord& job);
+  std::vector<JobRecord> list();
+  std::optional<JobRecord> get(std::int64_t id);
+  bool set_paused(std::int64_t id, bool paused);
+  bool record_run(std::int64_t id, const std::string& last_run_utc, const std::optional<std::string>& next_run_utc);
+  bool remove(std::int64_t id);
+
+ private:
+  Database& db_;
+};
+
+}  // namespace clearsky::storage

@@ -1,0 +1,124 @@
+// Schema migrations (migrations.h). Tables (issue 3): datasets of measured captures, their
+// samples (spectra as float64 blobs), evaluation runs with per-capture results, and scheduled
+// evaluation jobs. Times are ISO 8601 UTC text except capture instants (unix seconds).
+#include "storage/schema/migrations.h"
+
+#include <string>
+
+namespace clearsky::storage {
+
+const std::vector<std::string_view>& schema_migrations() {
+  static const std::vector<std::string_view> migrations = {
+      // Version 1.
+      R"sql(
+CREATE TABLE datasets (
+  id INTEGER PRIMARY KEY,
+  name TEXT NOT NULL UNIQUE,
+  format TEXT NOT NULL,
+  created_utc TEXT NOT NULL
+);
+CREATE TABLE captures (
+  id INTEGER PRIMARY KEY,
+  dataset_id INTEGER NOT NULL REFERENCES datasets(id) ON DELETE CASCADE,
+  label TEXT NOT NULL,
+  time_utc_s REAL NOT NULL,
+  utc_offset_minutes INTEGER NOT NULL,
+  latitude_deg REAL NOT NULL,
+  longitude_deg REAL NOT NULL,
+  elevation_m REAL NOT NULL,
+  sun_zenith_computed_deg REAL,
+  sun_azimuth_computed_deg REAL,
+  sun_azimuth_estimated_deg REAL,
+  content_hash TEXT NOT NULL,
+  source TEXT NOT NULL,
+  imported_utc TEXT NOT NULL,
+  UNIQUE (dataset_id, label),
+  UNIQUE (dataset_id, content_hash)
+);
+CREATE TABLE samples (
+  id INTEGER PRIMARY KEY,
+  capture_id INTEGER NOT NULL REFERENCES captures(id) ON DELETE CASCADE,
+  scan_index INTEGER NOT NULL,
+  view_zenith_rad REAL NOT NULL,
+  view_azimuth_rad REAL NOT NULL,
+  wavelengths_nm BLOB NOT NULL,
+  radiance BLOB NOT NULL,
+  quality_flags INTEGER NOT NULL DEFAULT 0,
+  UNIQUE (capture_id, scan_index)
+);
+CREATE TABLE jobs (
+  id INTEGER PRIMARY KEY,
+  name TEXT NOT NULL UNIQUE,
+  schedule TEXT NOT NULL,
+  dataset_id INTEGER NOT NULL REFERENCES datasets(id) ON DELETE CASCADE,
+  models TEXT NOT NULL,
+  parameters TEXT NOT NULL DEFAULT '',
+  paused INTEGER NOT NULL DEFAULT 0 CHECK (paused IN (0, 1)),
+  created_utc TEXT NOT NULL,
+  last_run_utc TEXT,
+  next_run_utc TEXT
+);
+CREATE TABLE evaluation_runs (
+  id INTEGER PRIMARY KEY,
+  dataset_id INTEGER NOT NULL REFERENCES datasets(id) ON DELETE CASCADE,
+  job_id INTEGER REFERENCES jobs(id) ON DELETE SET NULL,
+  model_id TEXT NOT NULL,
+  model_version TEXT NOT NULL,
+  parameters TEXT NOT NULL,
+  software_version TEXT NOT NULL,
+  min_wavelength_nm REAL NOT NULL,
+  max_wavelength_nm REAL NOT NULL,
+  started_utc TEXT NOT NULL,
+  finished_utc TEXT,
+  status TEXT NOT NULL CHECK (status IN ('running', 'succeeded', 'failed')),
+  error TEXT,
+  rmse REAL,
+  precompute_seconds REAL,
+  evaluate_seconds REAL,
+  processing_steps TEXT NOT NULL DEFAULT ''
+);
+CREATE TABLE evaluation_capture_results (
+  run_id INTEGER NOT NULL REFERENCES evaluation_runs(id) ON DELETE CASCADE,
+  capture_id INTEGER NOT NULL REFERENCES captures(id) ON DELETE CASCADE,
+  sun_zenith_deg REAL NOT NULL,
+  sun_azimuth_deg REAL NOT NULL,
+  rmse REAL NOT NULL,
+  values_compared INTEGER NOT NULL,
+  PRIMARY KEY (run_id, capture_id)
+);
+CREATE INDEX captures_by_dataset ON captures(dataset_id, time_utc_s);
+CREATE INDEX samples_by_capture ON samples(capture_id, scan_index);
+CREATE INDEX runs_by_dataset ON evaluation_runs(dataset_id, started_utc);
+)sql",
+  };
+  return migrations;
+}
+
+int migrate(Database& db, const std::vector<std::string_view>& migrations) {
+  const int latest = static_cast<int>(migrations.size());
+  int applied = 0;
+  for (;;) {
+    Transaction transaction(db);
+    // Read inside the write transaction: two processes migrating at once apply each step once.
+    const int version = db.user_version();
+    if (version > latest)
+      throw std::runtime_error("database schema version " + std::to_string(version) +
+                               " is newer than this program's " + std::to_string(latest));
+    if (version == latest) {
+      transaction.commit();
+      return applied;
+    }
+    db.execute(migrations[static_cast<std::size_t>(version)]);
+    db.execute("PRAGMA user_version = " + std::to_string(version + 1));
+    transaction.commit();
+    ++applied;
+  }
+}
+
+Database open_database(const std::filesystem::path& path, const DatabaseOptions& options) {
+  Database db = Database::open(path, options);
+  if (!options.read_only) migrate(db);
+  return db;
+}
+
+}  // namespace clearsky::storage

@@ -1,0 +1,181 @@
+// Tests of the paper's RMSE (models/evaluation/evaluate_model.h) with test-only models whose
+// error against synthetic captures is known by hand.
+#include "models/evaluation/evaluate_model.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tests/models/evaluation/synthetic_sky.h"
+
+namespace clearsky {
+namespace {
+
+const ModelDescriptor& test_descriptor() {
+  static const ModelDescriptor descriptor = [] {
+    ModelDescriptor d;
+    d.id = "test-model";
+    d.name = "Test model";
+    d.version = "1";
+    d.min_wavelength_nm = 300;
+    d.max_wavelength_nm = 1000;
+    d.capabilities.max_sun_zenith_deg = 90.0;
+    return d;
+  }();
+  return descriptor;
+}
+
+// Radiance = f(view, wavelength) on its grid: the measured sky itself when f is the function
+// the synthetic capture was made of.
+class FunctionModel : public SkyModel {
+ public:
+  explicit FunctionModel(testing::SkyFunction f, ModelConfig config = {})
+      : SkyModel(std::move(config)), f_(std::move(f)) {}
+  const ModelDescriptor& descriptor() const override { return test_descriptor(); }
+
+ protected:
+  void compute_sky_radiance(const SunState&, const Viewpoint&, std::span<const ViewDirection> views,
+                            SpectralBatch& out) const override {
+    for (std::size_t v = 0; v < views.size(); ++v) {
+      auto spectrum = out.spectrum(v);
+      for (std::size_t i = 0; i < wavelengths().size(); ++i) spectrum[i] = f_(views[v], wavelengths()[i]);
+    }
+  }
+  Spectrum compute_sun_irradiance(const SunState&, const Viewpoint&) const override {
+    return Spectrum(wavelengths().size(), 0.0);
+  }
+
+ private:
+  testing::SkyFunction f_;
+};
+
+// Returns the measured spectra of a capture, read at the grid wavelengths.
+class MeasuredSkyModel : public SkyModel {
+ public:
+  explicit MeasuredSkyModel(const MeasuredCapture& capture) : SkyModel(ModelConfig{}), capture_(capture) {}
+  const ModelDescriptor& descriptor() const override { return test_descriptor(); }
+
+ protected:
+  void compute_sky_radiance(const SunState&, const Viewpoint&, std::span<const ViewDirection> views,
+                            SpectralBatch& out) const override {
+    for (std::size_t v = 0; v < views.size(); ++v) {
+      for (const MeasuredSample& s : capture_.samples) {
+        if (cos_angle_between(s.view, views[v]) < std::cos(1e-6)) continue;
+        auto spectrum = out.spectrum(v);
+        for (std::size_t i = 0; i < wavelengths().size(); ++i)
+          spectrum[i] = s.radiance.at(wavelengths()[i], OutOfRange::hold_end_values);
+      }
+    }
+  }
+  Spectrum compute_sun_irradiance(const SunState&, const Viewpoint&) const override {
+    return Spectrum(wavelengths().size(), 0.0);
+  }
+
+ private:
+  const MeasuredCapture& capture_;
+};
+
+// A smooth, sun-dependent sky in W/(m2.sr.nm).
+double sky(const ViewDirection& view, double nm) {
+  return 0.05 + 0.02 * std::cos(view.zenith_rad) + 0.01 * std::sin(view.azimuth_rad) + 1e-5 * (nm - 500);
+}
+
+TEST(EvaluateModel, ModelReturningTheMeasurementsHasZeroError) {
+  const std::vector<MeasuredCapture> captures = {testing::synthetic_capture(sky)};
+  const MeasuredSkyModel model(captures[0]);
+  const EvaluationResult r = evaluate_sky_model(model, captures);
+  EXPECT_EQ(r.rmse, 0.0);
+  ASSERT_EQ(r.captures.size(), 1u);
+  EXPECT_EQ(r.captures[0].values_compared, 81u * 31u);
+  EXPECT_EQ(r.model_id, "test-model");
+}
+
+TEST(EvaluateModel, ComparesThe31GridWavelengthsFrom360To712Point5) {
+  const std::vector<MeasuredCapture> captures = {testing::synthetic_capture(sky)};
+  // Wrong only beyond 720 nm: invisible to the paper's measure.
+  const FunctionModel model([](const ViewDirection& v, double nm) { return sky(v, nm) + (nm > 720 ? 1.0 : 0.0); });
+  const EvaluationResult r = evaluate_sky_model(model, captures);
+  ASSERT_EQ(r.wavelengths_nm.size(), 31u);
+  EXPECT_DOUBLE_EQ(r.wavelengths_nm.front(), 360.0);
+  EXPECT_DOUBLE_EQ(r.wavelengths_nm.back(), 712.5);
+  EXPECT_NEAR(r.rmse, 0.0, 1e-9);
+}
+
+TEST(EvaluateModel, ConstantOffsetGivesTheOffsetInMilliwatts) {
+  const std::vector<MeasuredCapture> captures = {testing::synthetic_capture(sky), testing::synthetic_capture(sky)};
+  const FunctionModel model([](const ViewDirection& v, double nm) { return sky(v, nm) - 0.0025; });
+  const EvaluationResult r = evaluate_sky_model(model, captures);
+  EXPECT_NEAR(r.rmse, 2.5, 1e-9);
+  for (const auto& c : r.captures) EXPECT_NEAR(c.rmse, 2.5, 1e-9);
+}
+
+TEST(EvaluateModel, TotalIsTheRootMeanOfSquaredCaptureErrors) {
+  // Uniform skies of 3 and 4 mW against a black model: capture RMSE 3 and 4, total
+  // sqrt((9 + 16) / 2).
+  const std::vector<MeasuredCapture> captures = {
+      testing::synthetic_capture([](const ViewDirection&, double) { return 0.003; }),
+      testing::synthetic_capture([](const ViewDirection&, double) { return 0.004; })};
+  const FunctionModel model([](const ViewDirection&, double) { return 0.0; });
+  const EvaluationResult r = evaluate_sky_model(model, captures);
+  ASSERT_EQ(r.captures.size(), 2u);
+  EXPECT_NEAR(r.captures[0].rmse, 3.0, 1e-12);
+  EXPECT_NEAR(r.captures[1].rmse, 4.0, 1e-12);
+  EXPECT_NEAR(r.rmse, std::sqrt(12.5), 1e-12);
+}
+
+TEST(EvaluateModel, HandComputedErrorOfAWavelengthDependentModel) {
+  // Model error e(nm) = 1e-5 * (nm - 360) W: RMSE = 1e-2 * sqrt(mean over the 31 grid
+  // wavelengths of (11.75 i)^2) mW = 0.1175 * sqrt(sum i^2 / 31), sum_{i<31} i^2 = 9455.
+  const std::vector<MeasuredCapture> captures = {testing::synthetic_capture(sky)};
+  const FunctionModel model([](const ViewDirection& v, double nm) { return sky(v, nm) + 1e-5 * (nm - 360); });
+  const EvaluationResult r = evaluate_sky_model(model, captures);
+  EXPECT_NEAR(r.rmse, 0.1175 * std::sqrt(9455.0 / 31.0), 1e-9);
+}
+
+TEST(EvaluateModel, UsesTheEstimatedSunAzimuthAndTheComputedZenith) {
+  MeasuredCapture capture = testing::synthetic_capture(sky, 35.0, 140.0);
+  capture.sun_azimuth_estimated_deg = 131.2;
+  const std::vector<MeasuredCapture> captures = {capture};
+  const FunctionModel model(sky);
+  const EvaluationResult estimated = evaluate_sky_model(model, captures);
+  EXPECT_DOUBLE_EQ(estimated.captures[0].sun_zenith_deg, 35.0);
+  EXPECT_DOUBLE_EQ(estimated.captures[0].sun_azimuth_deg, 131.2);
+  EvaluationOptions computed;
+  computed.use_estimated_sun_azimuth = false;
+  EXPECT_DOUBLE_EQ(evaluate_sky_model(model, captures, computed).captures[0].sun_azimuth_deg, 140.0);
+  EXPECT_EQ(estimated.captures[0].time_iso, "2013-05-27T09:30:00-04:00");
+}
+
+TEST(EvaluateModel, RefusesUnpreparedCaptures) {
+  const FunctionModel model(sky);
+  MeasuredCapture no_sun = testing::synthetic_capture(sky);
+  no_sun.sun_azimuth_estimated_deg = kNotComputed;
+  EXPECT_THROW(evaluate_sky_model(model, std::vector<MeasuredCapture>{no_sun}), std::invalid_argument);
+  MeasuredCapture defective = testing::synthetic_capture(sky);
+  defective.samples[5].quality_flags |= kSampleKnownDefective;
+  EXPECT_THROW(evaluate_sky_model(model, std::vector<MeasuredCapture>{defective}), std::invalid_argument);
+  EXPECT_THROW(evaluate_sky_model(model, std::vector<MeasuredCapture>{}), std::invalid_argument);
+}
+
+TEST(EvaluateModel, ModelThatCannotAnswerTheSunIsAnError) {
+  const FunctionModel model(sky);
+  const std::vector<MeasuredCapture> captures = {testing::synthetic_capture(sky, 95.0, 120.0)};
+  EXPECT_THROW(evaluate_sky_model(model, captures), std::runtime_error);
+}
+
+std::shared_ptr<const SkyModel> create_offset_model(const ModelConfig& config, const PrecomputeContext&) {
+  return std::make_shared<FunctionModel>([](const ViewDirection& v, double nm) { return sky(v, nm) + 0.001; }, config);
+}
+
+TEST(EvaluateModel, FactoryPathTimesThePrecomputation) {
+  const ModelFactory factory{&test_descriptor(), &create_offset_model};
+  const std::vector<MeasuredCapture> captures = {testing::synthetic_capture(sky)};
+  const EvaluationResult r = evaluate_model(factory, ModelConfig{}, captures, {});
+  EXPECT_NEAR(r.rmse, 1.0, 1e-9);
+  EXPECT_GE(r.precompute_seconds, 0.0);
+  EXPECT_GE(r.evaluate_seconds, 0.0);
+  EXPECT_EQ(r.model_version, "1");
+}
+
+}  // namespace
+}  // namespace clearsky
