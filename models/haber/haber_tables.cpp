@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "models/atmosphere/phase_functions.h"
-#include "models/core/fast_exp.h"
+#include "models/core/fast_exp_float.h"
 #include "models/core/numeric.h"
 #include "models/core/parallel.h"
 
@@ -116,7 +116,7 @@ struct CellSpectra {
 __attribute__((target_clones("avx2", "default"))) void transmittance(const float* sigma_rayleigh, const float* sigma_mie, float rayleigh_m, float mie_m,
                    float weight, float* out, std::size_t n) {
   for (std::size_t w = 0; w < n; ++w) {
-    out[w] = weight * exp_nonpositive(-(sigma_rayleigh[w] * rayleigh_m + sigma_mie[w] * mie_m));
+    out[w] = weight * exp_nonpositive_float(-(sigma_rayleigh[w] * rayleigh_m + sigma_mie[w] * mie_m));
   }
 }
 

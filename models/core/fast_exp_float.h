@@ -2,7 +2,7 @@
 // loops over wavelengths vectorise (transmittances exp(-tau) of the per-sun precomputations
 // are evaluated hundreds of millions of times). Relative error below 3e-7 against std::exp
 // on [-87, 0]; arguments below -87 (transmittance under 1.6e-38) give exactly 0, never a
-// denormal. Tested in tests/models/core/fast_exp_test.cpp.
+// denormal. Tested in tests/models/core/fast_exp_float_test.cpp.
 #pragma once
 
 #include <bit>
@@ -10,7 +10,7 @@
 
 namespace clearsky {
 
-inline float exp_nonpositive(float x) {
+inline float exp_nonpositive_float(float x) {
   // exp(x) = 2^n exp(f), n = round(x / ln 2), f = x - n ln 2 in [-ln2/2, ln2/2]; ln 2 split in
   // a high part exact in float and a low part (Cody and Waite) so that f keeps full precision.
   constexpr float kLog2e = 1.44269504088896341f;
