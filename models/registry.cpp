@@ -4,11 +4,17 @@
 #include <vector>
 
 #include "models/haber/haber.h"
+#include "models/nishita93/nishita93.h"
+#include "models/oneal/oneal.h"
 
 namespace clearsky {
 
 std::span<const ModelFactory> registered_models() {
-  static const std::vector<ModelFactory> factories = {haber::kFactory};
+  static const std::vector<ModelFactory> factories = {
+      nishita93_factory(),
+      oneal_factory(),
+      haber::kFactory,
+  };
   return factories;
 }
 

@@ -178,6 +178,36 @@ SpectralSample SkyModel::sky_irradiance(const SunState& sun, const Viewpoint& vi
   return sample;
 }
 
+AerialPerspectiveSample SkyModel::aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
+                                                     const ViewDirection& view, double distance_m) const {
+  const std::size_t n = wavelengths().size();
+  AerialPerspectiveSample sample{Spectrum(n, 0.0), Spectrum(n, 0.0), check_viewpoint(viewpoint)};
+  if (sample.status == SampleStatus::ok) sample.status = check_sun(sun.sun());
+  if (sample.status == SampleStatus::ok) sample.status = check_view(view);
+  if (sample.status == SampleStatus::ok &&
+      (!descriptor().capabilities.aerial_perspective || !is_finite_non_negative(distance_m))) {
+    sample.status = SampleStatus::invalid_input;
+  }
+  if (sample.status != SampleStatus::ok) return sample;
+  ScatteringAlongRay result = compute_aerial_perspective(sun, viewpoint, view, distance_m);
+  sample.radiance = std::move(result.radiance);
+  sample.transmittance = std::move(result.transmittance);
+  zero_out_of_range(*this, {sample.radiance.data(), n});
+  zero_out_of_range(*this, {sample.transmittance.data(), n});
+  sample.status = sanitize({sample.radiance.data(), n});
+  if (sample.status == SampleStatus::ok) sample.status = sanitize({sample.transmittance.data(), n});
+  if (sample.status != SampleStatus::ok) {
+    sample.radiance = Spectrum(n, 0.0);
+    sample.transmittance = Spectrum(n, 0.0);
+  }
+  return sample;
+}
+
+ScatteringAlongRay SkyModel::compute_aerial_perspective(const SunState&, const Viewpoint&, const ViewDirection&,
+                                                        double) const {
+  throw std::logic_error("model " + descriptor().id + " declares aerial perspective but does not implement it");
+}
+
 Spectrum SkyModel::compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
                                           const PlaneOrientation& plane) const {
   return sky_irradiance_by_quadrature(sun, viewpoint, plane);

@@ -24,6 +24,7 @@
 #include "models/core/geometry.h"
 #include "models/core/model_descriptor.h"
 #include "models/core/precompute_context.h"
+#include "models/core/ray_scattering.h"
 #include "models/core/sample_status.h"
 #include "models/spectral/spectrum.h"
 #include "models/spectral/wavelength_grid.h"
@@ -58,6 +59,14 @@ struct SpectralBatch {
 
 struct SpectralSample {
   Spectrum value;
+  SampleStatus status = SampleStatus::ok;
+};
+
+// Aerial perspective between the observer and a point along the view: an object of radiance
+// L_object there is seen as L_object * transmittance + radiance.
+struct AerialPerspectiveSample {
+  Spectrum radiance;       // in-scattered, W/(m2.sr.nm)
+  Spectrum transmittance;  // dimensionless, in [0, 1]
   SampleStatus status = SampleStatus::ok;
 };
 
@@ -110,6 +119,12 @@ class SkyModel {
   // the part of the sky the plane sees (ground-reflected light excluded).
   SpectralSample sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
                                 const PlaneOrientation& plane = {}) const;
+  // Radiance scattered towards the observer and transmittance between it and the point at
+  // distance_m (m, finite, >= 0) along the view; the segment stops earlier at the ground or
+  // where the view leaves the atmosphere. invalid_input when the model does not declare
+  // capabilities.aerial_perspective or distance_m is not finite and >= 0.
+  AerialPerspectiveSample aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
+                                             const ViewDirection& view, double distance_m) const;
 
  protected:
   // Builds atmosphere() from config.atmosphere and config.wavelengths (validating both).
@@ -125,6 +140,10 @@ class SkyModel {
   // Default: sky_irradiance_by_quadrature(). Models with an irradiance table override it.
   virtual Spectrum compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
                                           const PlaneOrientation& plane) const;
+  // Called only for models that declare capabilities.aerial_perspective, with checked inputs.
+  // Default: throws std::logic_error (a descriptor that declares what the model lacks).
+  virtual ScatteringAlongRay compute_aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
+                                                        const ViewDirection& view, double distance_m) const;
 
   // Gauss-Legendre quadrature of L cos(theta) over the plane's hemisphere (restricted to the
   // directions the model answers), zenith_nodes x azimuth_nodes directions.

@@ -1,0 +1,32 @@
+// exp(x) for x <= 0 over arrays, and the other vector kernels of the transmittance loops, written so that the compiler vectorises it (glibc's exp is
+// only vectorised under -ffast-math, which this project never uses). The numerical models
+// spend most of their time in the transmittances exp(-tau) of 40 wavelengths at every sample
+// of a view ray; this is their hot loop.
+//
+// Method: x = k ln2 + r with k = round(x / ln2) (the 1.5 * 2^52 rounding trick, whose low
+// mantissa bits are k), |r| <= ln2 / 2; exp(r) by its Taylor polynomial of degree 13 (error
+// (ln2/2)^14 / 14! < 4e-18, below rounding); 2^k assembled in the exponent field. Relative
+// error within 2 ulp of std::exp on [-708, 0] (tests/models/core/fast_exp_test.cpp). Inputs are
+// clamped to [-708, 0]: below, the result is exp(-708) = 3.3e-307 instead of a smaller number
+// (an absolute error no transmittance can notice); above 0 it is 1 (transmittances never
+// exceed 1). NaN inputs give unspecified finite values: callers pass finite optical depths.
+// Pure; thread-safe.
+#pragma once
+
+#include <cstddef>
+
+namespace clearsky {
+
+void exp_nonpositive_in_place(double* values, std::size_t n);
+
+// out[i] = exp(-(beta_rayleigh[i] rayleigh_m + beta_mie[i] mie_m)): the transmittance of the
+// optical lengths (optical_depth.h) on n wavelengths, in one vector pass.
+void transmittance_from_lengths(std::size_t n, const double* beta_rayleigh_per_m, const double* beta_mie_per_m,
+                                double rayleigh_m, double mie_m, double* out);
+
+// sum_a[i] += scale_a values[i]; sum_b[i] += scale_b values[i] (the Rayleigh and Mie
+// integrals of the numerical models share each transmittance).
+void add_scaled_pair(std::size_t n, const double* values, double scale_a, double scale_b, double* sum_a,
+                     double* sum_b);
+
+}  // namespace clearsky

@@ -1,0 +1,162 @@
+// Nishita93's optical-length tables (see nishita93_tables.h).
+#include "models/nishita93/nishita93_tables.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "models/core/numeric.h"
+#include "models/core/parallel.h"
+
+namespace clearsky {
+
+namespace {
+
+// Trapezoid rule over successive samples (distance, densities) along one ray.
+struct TrapezoidLengths {
+  double distance = 0, rayleigh_density = 0, mie_density = 0;
+  OpticalLengths sum;
+
+  void add(double d, double rayleigh, double mie) {
+    const double half = 0.5 * (d - distance);
+    sum.rayleigh_m += half * (rayleigh + rayleigh_density);
+    sum.mie_m += half * (mie + mie_density);
+    distance = d;
+    rayleigh_density = rayleigh;
+    mie_density = mie;
+  }
+};
+
+// Half chord length sqrt(r^2 - c^2) without cancellation, for c <= r.
+double half_chord(double r, double c) { return safe_sqrt((r - c) * (r + c)); }
+
+}  // namespace
+
+Nishita93Tables Nishita93Tables::build(const AtmosphereParameters& atmosphere, int spheres, int cylinders,
+                                       const PrecomputeContext& context) {
+  atmosphere.validate();
+  if (spheres < 2 || cylinders < 2) throw std::invalid_argument("spheres, cylinders: must be >= 2");
+  Nishita93Tables t;
+  t.sphere_count_ = spheres;
+  t.cylinder_count_ = cylinders;
+  t.bottom_radius_m_ = atmosphere.earth_radius_m;
+  t.top_radius_m_ = atmosphere.top_radius_m;
+  t.rayleigh_scale_height_m_ = atmosphere.rayleigh_scale_height_m;
+  const double r_ground = t.bottom_radius_m_, r_top = t.top_radius_m_;
+  const double h_r = atmosphere.rayleigh_scale_height_m, h_m = atmosphere.mie_scale_height_m;
+  t.density_step_ = std::exp(-(r_top - r_ground) / h_r) - 1.0;
+
+  const auto n_s = static_cast<std::size_t>(spheres);
+  t.sphere_radius_m_.resize(n_s);
+  t.sphere_rayleigh_density_.resize(n_s);
+  t.sphere_mie_density_.resize(n_s);
+  for (std::size_t i = 0; i < n_s; ++i) {
+    const double x = static_cast<double>(i) / static_cast<double>(n_s - 1);
+    // The end spheres exactly on the ground and the top, whatever the rounding of the log.
+    const double r = i == 0 ? r_ground : i + 1 == n_s ? r_top : r_ground - h_r * std::log1p(t.density_step_ * x);
+    t.sphere_radius_m_[i] = r;
+    t.sphere_rayleigh_density_[i] = std::exp(-(r - r_ground) / h_r);
+    t.sphere_mie_density_[i] = std::exp(-(r - r_ground) / h_m);
+  }
+
+  const std::size_t size = n_s * static_cast<std::size_t>(cylinders);
+  t.along_rayleigh_m_.resize(size);
+  t.along_mie_m_.resize(size);
+  t.against_rayleigh_m_.resize(size);
+  t.against_mie_m_.resize(size);
+  const auto& radius = t.sphere_radius_m_;
+  parallel_for(
+      n_s,
+      [&](std::size_t i) {
+        context.check_cancelled();
+        const double r = radius[i];
+        for (int j = 0; j < cylinders; ++j) {
+          const std::size_t cell = i * static_cast<std::size_t>(cylinders) + static_cast<std::size_t>(j);
+          const double cylinder = r_top * j / (cylinders - 1.0);
+          // Sun along the axis: from the point up through the exits of the spheres above it.
+          {
+            const double c = std::min(cylinder, r);
+            const double start = half_chord(r, c);
+            TrapezoidLengths path{0.0, t.sphere_rayleigh_density_[i], t.sphere_mie_density_[i], {}};
+            for (std::size_t k = i + 1; k < n_s; ++k) {
+              path.add(half_chord(radius[k], c) - start, t.sphere_rayleigh_density_[k], t.sphere_mie_density_[k]);
+            }
+            t.along_rayleigh_m_[cell] = path.sum.rayleigh_m;
+            t.along_mie_m_[cell] = path.sum.mie_m;
+          }
+          // Sun against the axis: down to the tangent point (the ground-grazing one when the
+          // ray meets the ground), then up to the top.
+          {
+            const double c = std::clamp(cylinder, r_ground, r);
+            const double tangent = half_chord(r, c);
+            TrapezoidLengths path{0.0, t.sphere_rayleigh_density_[i], t.sphere_mie_density_[i], {}};
+            std::size_t lowest = i;  // lowest sphere above the tangent point
+            for (std::size_t k = i; k-- > 0;) {
+              if (radius[k] <= c) break;
+              path.add(tangent - half_chord(radius[k], c), t.sphere_rayleigh_density_[k], t.sphere_mie_density_[k]);
+              lowest = k;
+            }
+            if (tangent > path.distance) {
+              path.add(tangent, std::exp(-(c - r_ground) / h_r), std::exp(-(c - r_ground) / h_m));
+            }
+            for (std::size_t k = lowest; k < n_s; ++k) {
+              if (radius[k] <= c) continue;
+              const double d = tangent + half_chord(radius[k], c);
+              if (d > path.distance) path.add(d, t.sphere_rayleigh_density_[k], t.sphere_mie_density_[k]);
+            }
+            t.against_rayleigh_m_[cell] = path.sum.rayleigh_m;
+            t.against_mie_m_[cell] = path.sum.mie_m;
+          }
+        }
+      },
+      context.threads);
+  context.report(1.0, "optical lengths");
+  return t;
+}
+
+double Nishita93Tables::lookup(const std::vector<double>& table, double u, double v) const {
+  const int i = std::min(static_cast<int>(u), sphere_count_ - 2);
+  const int j = std::min(static_cast<int>(v), cylinder_count_ - 2);
+  const double fu = u - i, fv = v - j;
+  const std::size_t row0 = static_cast<std::size_t>(i) * static_cast<std::size_t>(cylinder_count_);
+  const std::size_t row1 = row0 + static_cast<std::size_t>(cylinder_count_);
+  const auto col = static_cast<std::size_t>(j);
+  return (1.0 - fu) * ((1.0 - fv) * table[row0 + col] + fv * table[row0 + col + 1]) +
+         fu * ((1.0 - fv) * table[row1 + col] + fv * table[row1 + col + 1]);
+}
+
+std::optional<OpticalLengths> Nishita93Tables::sun_optical_lengths(double r_m, double mu_s, int sphere_index) const {
+  double r = std::max(r_m, bottom_radius_m_);
+  if (r > top_radius_m_) {
+    // Above the atmosphere: nothing in the way unless the ray to the sun crosses it; then the
+    // lengths are those from where it enters.
+    const double c2 = r * r * (1.0 - mu_s * mu_s);
+    if (mu_s >= 0.0 || c2 >= top_radius_m_ * top_radius_m_) return OpticalLengths{};
+    if (c2 < bottom_radius_m_ * bottom_radius_m_) return std::nullopt;
+    mu_s = -safe_sqrt(1.0 - c2 / (top_radius_m_ * top_radius_m_));
+    r = top_radius_m_;
+    sphere_index = sphere_count_ - 1;
+  }
+  if (mu_s < 0.0 && ray_hits_ground(r, mu_s, bottom_radius_m_)) return std::nullopt;
+  const double max_u = sphere_count_ - 1.0, max_v = cylinder_count_ - 1.0;
+  const double u = sphere_index >= 0
+                       ? static_cast<double>(sphere_index)
+                       : std::clamp(max_u * std::expm1(-(r - bottom_radius_m_) / rayleigh_scale_height_m_) / density_step_,
+                                    0.0, max_u);
+  const double v = std::clamp(max_v * r * safe_sqrt(1.0 - mu_s * mu_s) / top_radius_m_, 0.0, max_v);
+  if (mu_s >= 0.0) return OpticalLengths{lookup(along_rayleigh_m_, u, v), lookup(along_mie_m_, u, v)};
+  return OpticalLengths{lookup(against_rayleigh_m_, u, v), lookup(against_mie_m_, u, v)};
+}
+
+OpticalLengths Nishita93Tables::node(int i, int j, bool against_axis) const {
+  const std::size_t cell = static_cast<std::size_t>(i) * static_cast<std::size_t>(cylinder_count_) +
+                           static_cast<std::size_t>(j);
+  return against_axis ? OpticalLengths{against_rayleigh_m_[cell], against_mie_m_[cell]}
+                      : OpticalLengths{along_rayleigh_m_[cell], along_mie_m_[cell]};
+}
+
+std::size_t Nishita93Tables::memory_bytes() const {
+  return sizeof(*this) + sizeof(double) * (3 * sphere_radius_m_.size() + 4 * along_rayleigh_m_.size());
+}
+
+}  // namespace clearsky

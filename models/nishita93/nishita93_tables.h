@@ -1,0 +1,69 @@
+// Nishita93's precomputation (Nishita et al. 1993, section 4; paper section "Nishita93 Model",
+// IMPLEMENTATION-NOTES "Nishita93"): the atmosphere is cut by n_s spheres of equal steps of
+// Rayleigh density (layers of equal Rayleigh optical depth), ground to top,
+//   r_i = R - H_R ln(1 + a i / (n_s - 1)),   a = exp(-(R_top - R) / H_R) - 1,
+// and by n_c cylinders of radii R_top j / (n_c - 1) whose axis points at the sun. At the
+// intersection of sphere i and cylinder j, the optical lengths (integrals of relative Rayleigh
+// and Mie density, m) towards the sun are stored, for the sun along the cylinder axis (the
+// point on the sun side) and against it (the far side): 4 tables of n_s x n_c, each integrated
+// with the trapezoid rule over the ray's crossings of the same spheres.
+//
+// The 2D table does not depend on the sun: a point at radius r whose sun zenith cosine is
+// mu_s lies on sphere coordinate x = (exp(-(r - R)/H_R) - 1) / a and cylinder radius
+// r sqrt(1 - mu_s^2); lookups are bilinear between the nodes (the study's texel-centre lookup
+// of an n_s x n_c texture at (0.5 + (n_s - 1) x) / n_s is exactly this).
+//
+// Beyond the study: the against-axis tables follow the ray through its tangent point (the
+// study's code reused the near intersections on the way up, a defect it never exercised with
+// the sun above the horizon); rays that meet the ground are shadowed (lookups report it), and
+// their table entries hold the ground-grazing chord so that bilinear lookups next to the
+// shadow stay monotone. Immutable after build(); thread-safe.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "models/atmosphere/atmosphere_parameters.h"
+#include "models/core/optical_depth.h"
+#include "models/core/precompute_context.h"
+
+namespace clearsky {
+
+class Nishita93Tables {
+ public:
+  // spheres, cylinders >= 2 (the study: 64 and 64). May throw PrecomputeCancelled.
+  static Nishita93Tables build(const AtmosphereParameters& atmosphere, int spheres, int cylinders,
+                               const PrecomputeContext& context = {});
+
+  int sphere_count() const { return sphere_count_; }
+  int cylinder_count() const { return cylinder_count_; }
+  double sphere_radius_m(int i) const { return sphere_radius_m_[static_cast<std::size_t>(i)]; }
+  const std::vector<double>& sphere_radii_m() const { return sphere_radius_m_; }
+  double sphere_rayleigh_density(int i) const { return sphere_rayleigh_density_[static_cast<std::size_t>(i)]; }
+  double sphere_mie_density(int i) const { return sphere_mie_density_[static_cast<std::size_t>(i)]; }
+  double bottom_radius_m() const { return bottom_radius_m_; }
+  double top_radius_m() const { return top_radius_m_; }
+
+  // Optical lengths from a point at radius r_m (any radius >= the ground) to the sun, whose
+  // zenith cosine there is mu_s; nothing when the Earth hides the sun. sphere_index >= 0 says
+  // the point lies on that sphere (saves the density coordinate's exp).
+  std::optional<OpticalLengths> sun_optical_lengths(double r_m, double mu_s, int sphere_index = -1) const;
+
+  // Raw node values (tests): optical lengths stored at sphere i, cylinder j.
+  OpticalLengths node(int i, int j, bool against_axis) const;
+
+  std::size_t memory_bytes() const;
+
+ private:
+  double lookup(const std::vector<double>& table, double u, double v) const;
+
+  int sphere_count_ = 0, cylinder_count_ = 0;
+  double bottom_radius_m_ = 0, top_radius_m_ = 0, rayleigh_scale_height_m_ = 0;
+  double density_step_ = 0;  // a of the sphere radii formula
+  std::vector<double> sphere_radius_m_, sphere_rayleigh_density_, sphere_mie_density_;
+  // [i * cylinder_count + j]
+  std::vector<double> along_rayleigh_m_, along_mie_m_, against_rayleigh_m_, against_mie_m_;
+};
+
+}  // namespace clearsky

@@ -1,0 +1,47 @@
+// The O'Neal model (O'Neil 2005, GPU Gems 2 chapter 16; paper section "O'Neal Model") as the
+// 2016 study implemented it (IMPLEMENTATION-NOTES "O'Neal"): single scattering by a few
+// midpoint samples along each view ray, with Schuler's Chapman-function approximation for
+// every transmittance instead of a table (oneal_functions.h). No precomputation.
+//
+// | parameter | unit | default | range     | meaning                                          |
+// |-----------|------|---------|-----------|--------------------------------------------------|
+// | samples   | -    | 4       | [1, 1024] | midpoint samples per view ray (O'Neil's code: 2) |
+// | alpha, beta, g (atmosphere) | - | 0.8, 0.04, 0.7 | see AtmosphereParameters | aerosols   |
+//
+// Capabilities: observers from the ground to far above the atmosphere, views in every
+// direction, aerial perspective (SkyModel::aerial_perspective()), the sun anywhere (Earth's
+// shadow included), single scattering only, no ground albedo. Immutable; queries are const
+// and thread-safe.
+#pragma once
+
+#include <memory>
+
+#include "models/core/ray_scattering.h"
+#include "models/core/sky_model.h"
+
+namespace clearsky {
+
+const ModelDescriptor& oneal_descriptor();
+ModelFactory oneal_factory();
+
+class ONealModel final : public SkyModel {
+ public:
+  static std::shared_ptr<const SkyModel> create(const ModelConfig& config, const PrecomputeContext& context);
+
+  const ModelDescriptor& descriptor() const override { return oneal_descriptor(); }
+  int samples() const { return samples_; }
+
+ protected:
+  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint, std::span<const ViewDirection> views,
+                            SpectralBatch& out) const override;
+  Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
+  ScatteringAlongRay compute_aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
+                                                const ViewDirection& view, double distance_m) const override;
+
+ private:
+  explicit ONealModel(const ModelConfig& config);
+
+  int samples_ = 4;
+};
+
+}  // namespace clearsky
