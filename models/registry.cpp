@@ -5,6 +5,7 @@
 
 #include "models/haber/haber.h"
 #include "models/nishita93/nishita93.h"
+#include "models/nishita96/nishita96.h"
 #include "models/oneal/oneal.h"
 
 namespace clearsky {
@@ -12,6 +13,7 @@ namespace clearsky {
 std::span<const ModelFactory> registered_models() {
   static const std::vector<ModelFactory> factories = {
       nishita93_factory(),
+      nishita96_factory(),
       oneal_factory(),
       haber::kFactory,
   };
