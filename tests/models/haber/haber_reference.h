@@ -21,51 +21,63 @@ class ScatteringReference {
   ScatteringReference(const LayeredAtmosphere& layers, const AtmosphereSpectra& atmosphere, double sun_zenith_rad)
       : layers_(layers), atmosphere_(atmosphere), sun_{std::sin(sun_zenith_rad), 0.0, std::cos(sun_zenith_rad)} {}
 
-  // Single-scattered radiance reaching `origin` from direction `direction` (unit), wavelength w.
-  double single(Vec3 origin, Vec3 direction, std::size_t w, int points_per_layer = 4) const {
+  // Single-scattered radiance reaching `origin` from direction `direction` (unit), at each
+  // wavelength index of `wavelengths`.
+  std::vector<double> single(Vec3 origin, Vec3 direction, const std::vector<std::size_t>& wavelengths,
+                             int points_per_layer = 4) const {
     const double mie_phase = cornette_shanks_phase(dot(direction, sun_), atmosphere_.parameters.mie_phase_g);
-    double sum = 0.0;
+    std::vector<double> sum(wavelengths.size(), 0.0);
     for_each_sample(origin, direction, points_per_layer, [&](Vec3 x, int layer, double weight) {
-      const double scattered = atmosphere_.rayleigh_scattering_per_m[w] * layers_.rayleigh_density(layer) * isotropic_phase() +
-                               atmosphere_.mie_scattering_per_m[w] * layers_.mie_density(layer) * mie_phase;
-      sum += weight * transmittance(origin, x, w) * scattered * sun_light(x, w);
+      const OpticalLength view = optical_length(layers_, origin, x);
+      const OpticalLength sun = optical_length(layers_, x, exit_point(layers_, x, sun_));
+      if (view.blocked || sun.blocked) return;
+      for (std::size_t i = 0; i < wavelengths.size(); ++i) {
+        const std::size_t w = wavelengths[i];
+        const double scattered = atmosphere_.rayleigh_scattering_per_m[w] * layers_.rayleigh_density(layer) * isotropic_phase() +
+                                 atmosphere_.mie_scattering_per_m[w] * layers_.mie_density(layer) * mie_phase;
+        sum[i] += weight * transmittance(view, w) * transmittance(sun, w) * scattered *
+                  atmosphere_.solar_irradiance_w_m2_nm[w];
+      }
     });
     return sum;
+  }
+  double single(Vec3 origin, Vec3 direction, std::size_t w, int points_per_layer = 4) const {
+    return single(origin, direction, std::vector<std::size_t>{w}, points_per_layer)[0];
   }
 
   // Double-scattered radiance reaching the ground viewer from `direction`: the single-scattered
   // radiance integrated over all directions at each point, scattered isotropically.
-  double double_scattering(Vec3 direction, std::size_t w, int zenith_nodes = 16, int azimuth_nodes = 32,
-                           int points_per_layer = 1) const {
+  std::vector<double> double_scattering(Vec3 direction, const std::vector<std::size_t>& wavelengths,
+                                        int zenith_nodes = 16, int azimuth_nodes = 32, int points_per_layer = 1) const {
     const Vec3 viewer{0.0, 0.0, layers_.earth_radius_m()};
     const auto mu_nodes = gauss_legendre(zenith_nodes, -1.0, 1.0);
-    double sum = 0.0;
+    std::vector<double> sum(wavelengths.size(), 0.0);
     for_each_sample(viewer, direction, points_per_layer, [&](Vec3 x, int layer, double weight) {
-      // Local frame at x: the incoming directions only depend on the global axes here.
-      double irradiance_over_sphere = 0.0;
+      std::vector<double> irradiance_over_sphere(wavelengths.size(), 0.0);
       for (const auto& [mu, w_mu] : mu_nodes) {
         const double s = std::sqrt(std::max(0.0, 1.0 - mu * mu));
         for (int j = 0; j < azimuth_nodes; ++j) {
           const double phi = 2.0 * kPi * (j + 0.5) / azimuth_nodes;
           const Vec3 omega{s * std::cos(phi), s * std::sin(phi), mu};
-          irradiance_over_sphere += w_mu * (2.0 * kPi / azimuth_nodes) * single(x, omega, w, points_per_layer);
+          const auto l1 = single(x, omega, wavelengths, points_per_layer);
+          for (std::size_t i = 0; i < l1.size(); ++i) irradiance_over_sphere[i] += w_mu * (2.0 * kPi / azimuth_nodes) * l1[i];
         }
       }
-      const double scattering = atmosphere_.rayleigh_scattering_per_m[w] * layers_.rayleigh_density(layer) +
-                                atmosphere_.mie_scattering_per_m[w] * layers_.mie_density(layer);
-      sum += weight * transmittance(viewer, x, w) * scattering * isotropic_phase() * irradiance_over_sphere;
+      const OpticalLength view = optical_length(layers_, viewer, x);
+      for (std::size_t i = 0; i < wavelengths.size(); ++i) {
+        const std::size_t w = wavelengths[i];
+        const double scattering = atmosphere_.rayleigh_scattering_per_m[w] * layers_.rayleigh_density(layer) +
+                                  atmosphere_.mie_scattering_per_m[w] * layers_.mie_density(layer);
+        sum[i] += weight * transmittance(view, w) * scattering * isotropic_phase() * irradiance_over_sphere[i];
+      }
     });
     return sum;
   }
 
  private:
-  double transmittance(Vec3 p, Vec3 q, std::size_t w) const {
-    const OpticalLength l = optical_length(layers_, p, q);
+  double transmittance(const OpticalLength& l, std::size_t w) const {
     if (l.blocked) return 0.0;
     return std::exp(-(atmosphere_.rayleigh_scattering_per_m[w] * l.rayleigh_m + atmosphere_.mie_extinction_per_m[w] * l.mie_m));
-  }
-  double sun_light(Vec3 x, std::size_t w) const {
-    return atmosphere_.solar_irradiance_w_m2_nm[w] * transmittance(x, exit_point(layers_, x, sun_), w);
   }
 
   // Gauss-Legendre samples along the ray from p in direction d up to the top of the layers or
