@@ -108,7 +108,7 @@ std::shared_ptr<const SunState> Nishita96Model::compute_sun_state(const SunPosit
   key.precision(17);
   key << cache_prefix_ << ";sun_zenith_rad=" << zenith;
   auto tables = cache_->get_or_build(key.str(), [&] {
-    return nishita96::build_sun_tables(optical_lengths_, atmosphere(), zenith, table_nodes_, context);
+    return nishita96::build_sun_tables(optical_lengths_, atmosphere(), zenith, table_nodes_, phase_theta_cells_, context);
   });
   return std::make_shared<const Nishita96SunState>(sun, std::move(tables));
 }
@@ -133,8 +133,7 @@ void Nishita96Model::radiance_orders(const Nishita96SunState& state, const Viewp
   const double azimuth = view.azimuth_rad - state.sun().azimuth_rad;
   const double sin_zenith = std::sin(view.zenith_rad);
   const Vec3 view_dir{std::cos(azimuth) * sin_zenith, std::sin(azimuth) * sin_zenith, std::cos(view.zenith_rad)};
-  const nishita96::PhaseIntegrals phase =
-      nishita96::binned_phase_integrals(view_dir, tables.directions(), a.parameters.mie_phase_g, phase_theta_cells_);
+  const nishita96::PhaseIntegrals phase = tables.phase_bins().integrate(view_dir, a.parameters.mie_phase_g);
   const double r = a.parameters.earth_radius_m + viewpoint.altitude_m;
   const double rmu = r * view_dir.z;
   const Vec3 viewer{0.0, 0.0, r};
@@ -143,7 +142,8 @@ void Nishita96Model::radiance_orders(const Nishita96SunState& state, const Viewp
   double rayleigh_length = 0.0;
   double mie_length = 0.0;
   double previous_distance = 0.0;
-  std::vector<double> sample(n), transmittance(n), table_value(n), accumulated(n, 0.0);
+  std::vector<double> sample(n), transmittance(n), accumulated(n, 0.0);
+  std::vector<float> table_value(n);
   for (int i = 0; i < optical_lengths_.sphere_count(); ++i) {
     const double ri = optical_lengths_.sphere_radius_m(i);
     if (ri <= r) continue;

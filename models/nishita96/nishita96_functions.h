@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include "models/core/geometry.h"
 
@@ -31,5 +32,21 @@ struct PhaseIntegrals {
 };
 PhaseIntegrals binned_phase_integrals(Vec3 view, const std::array<Vec3, kSamplingDirections>& sampling_directions,
                                       double mie_g, int theta_cells = 32);
+
+// The same integrals with the binning done once per sun (it does not depend on the view):
+// each bin keeps its directions w and solid angles; the Rayleigh integral of a bin is then
+// 3/(16 pi) (Omega_k + v^T M_k v) with M_k = sum of w w^T dOmega (exact, P_R being quadratic),
+// and the Cornette-Shanks one a sum over the bin's directions. Immutable; thread-safe.
+class PhaseBins {
+ public:
+  PhaseBins(const std::array<Vec3, kSamplingDirections>& sampling_directions, int theta_cells);
+  PhaseIntegrals integrate(Vec3 view, double mie_g) const;
+
+ private:
+  std::array<int, kSamplingDirections + 1> begin_{};  // bin k: [begin_[k], begin_[k + 1])
+  std::vector<double> x_, y_, z_, solid_angle_;
+  std::array<double, kSamplingDirections> bin_solid_angle_{};
+  std::array<std::array<double, 6>, kSamplingDirections> moments_{};  // xx, yy, zz, xy, xz, yz
+};
 
 }  // namespace clearsky::nishita96

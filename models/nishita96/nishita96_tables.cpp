@@ -50,7 +50,21 @@ std::span<const float> SamplingTable::node(int i, int j, int k) const {
   return {values_.data() + index(i, j - nodes_ / 2, k), wavelengths_};
 }
 
-void SamplingTable::lookup(Vec3 p, std::span<double> out) const {
+namespace {
+
+// The weighted sum of the 8 corner spectra of a voxel, in single precision (the tables').
+__attribute__((target_clones("avx2", "default"))) void trilinear(const float* const* corners, const float* weights,
+                                                                 float* out, std::size_t n) {
+  for (std::size_t l = 0; l < n; ++l) {
+    out[l] = weights[0] * corners[0][l] + weights[1] * corners[1][l] + weights[2] * corners[2][l] +
+             weights[3] * corners[3][l] + weights[4] * corners[4][l] + weights[5] * corners[5][l] +
+             weights[6] * corners[6][l] + weights[7] * corners[7][l];
+  }
+}
+
+}  // namespace
+
+void SamplingTable::lookup(Vec3 p, std::span<float> out) const {
   const double thickness = top_radius_m_ - earth_radius_m_;
   double u, w;
   // |y|: the stored half, by symmetry about the sun's vertical plane.
@@ -77,23 +91,35 @@ void SamplingTable::lookup(Vec3 p, std::span<double> out) const {
   split(v, j0, fv);
   split(w, k0, fw);
   const int jj0 = j0 - nodes_ / 2;  // >= 0 since v >= 0.5
-  std::fill(out.begin(), out.end(), 0.0);
+  const float* corners[8];
+  float weights[8];
+  int c = 0;
   for (int di = 0; di < 2; ++di) {
     for (int dj = 0; dj < 2; ++dj) {
-      for (int dk = 0; dk < 2; ++dk) {
-        const double weight = (di ? fu : 1.0 - fu) * (dj ? fv : 1.0 - fv) * (dk ? fw : 1.0 - fw);
-        if (weight == 0.0) continue;
-        const float* values = values_.data() + index(i0 + di, std::max(jj0 + dj, 0), k0 + dk);
-        for (std::size_t l = 0; l < out.size(); ++l) out[l] += weight * values[l];
+      for (int dk = 0; dk < 2; ++dk, ++c) {
+        weights[c] = static_cast<float>((di ? fu : 1.0 - fu) * (dj ? fv : 1.0 - fv) * (dk ? fw : 1.0 - fw));
+        corners[c] = values_.data() + index(i0 + di, std::max(jj0 + dj, 0), k0 + dk);
       }
     }
   }
+  trilinear(corners, weights, out.data(), out.size());
 }
 
-SunTables::SunTables(double sun_zenith_rad, std::vector<SamplingTable> tables)
-    : sun_zenith_rad_(sun_zenith_rad), tables_(std::move(tables)) {
-  for (int k = 0; k < kSamplingDirections; ++k) directions_[k] = direction_of_angle(tables_[k].angle_rad());
+namespace {
+
+std::array<Vec3, kSamplingDirections> directions_of(const std::vector<SamplingTable>& tables) {
+  std::array<Vec3, kSamplingDirections> d;
+  for (int k = 0; k < kSamplingDirections; ++k) d[k] = direction_of_angle(tables[static_cast<std::size_t>(k)].angle_rad());
+  return d;
 }
+
+}  // namespace
+
+SunTables::SunTables(double sun_zenith_rad, std::vector<SamplingTable> tables, int phase_theta_cells)
+    : sun_zenith_rad_(sun_zenith_rad),
+      tables_(std::move(tables)),
+      directions_(directions_of(tables_)),
+      phase_bins_(directions_, phase_theta_cells) {}
 
 std::size_t SunTables::memory_bytes() const {
   std::size_t bytes = sizeof(*this);
@@ -205,7 +231,8 @@ void build_column(const ColumnContext& c, SamplingTable& table, int i, int j) {
 
 std::shared_ptr<const SunTables> build_sun_tables(const Nishita93Tables& optical_lengths,
                                                   const AtmosphereSpectra& atmosphere, double sun_zenith_rad,
-                                                  int nodes, const PrecomputeContext& context) {
+                                                  int nodes, int phase_theta_cells,
+                                                  const PrecomputeContext& context) {
   const auto angles = sampling_angles_rad(sun_zenith_rad);
   std::vector<SamplingTable> tables;
   for (double a : angles) {
@@ -227,7 +254,7 @@ std::shared_ptr<const SunTables> build_sun_tables(const Nishita93Tables& optical
       },
       context.threads, 8);
   context.report(1.0, "sampling tables");
-  return std::make_shared<const SunTables>(sun_zenith_rad, std::move(tables));
+  return std::make_shared<const SunTables>(sun_zenith_rad, std::move(tables), phase_theta_cells);
 }
 
 }  // namespace clearsky::nishita96

@@ -42,7 +42,7 @@ class SamplingTable {
   // Position of node (i, j, k), each in [0, nodes - 1]; k runs along the table's axis.
   Vec3 node_position(int i, int j, int k) const;
   // Trilinear radiance arriving at p from the sampling direction (clamped to the box).
-  void lookup(Vec3 p, std::span<double> out) const;
+  void lookup(Vec3 p, std::span<float> out) const;
   // Stored spectrum of node (i, j, k), j >= nodes / 2 (the stored half).
   std::span<float> node(int i, int j, int k);
   std::span<const float> node(int i, int j, int k) const;
@@ -69,21 +69,25 @@ class SamplingTable {
 // The 8 tables of one sun zenith. Immutable; thread-safe.
 class SunTables {
  public:
-  SunTables(double sun_zenith_rad, std::vector<SamplingTable> tables);
+  SunTables(double sun_zenith_rad, std::vector<SamplingTable> tables, int phase_theta_cells);
   double sun_zenith_rad() const { return sun_zenith_rad_; }
   const SamplingTable& table(int k) const { return tables_[static_cast<std::size_t>(k)]; }
   const std::array<Vec3, kSamplingDirections>& directions() const { return directions_; }
+  // The phase-integration directions binned to the sampling directions of this sun.
+  const PhaseBins& phase_bins() const { return phase_bins_; }
   std::size_t memory_bytes() const;
 
  private:
   double sun_zenith_rad_;
   std::vector<SamplingTable> tables_;
   std::array<Vec3, kSamplingDirections> directions_;
+  PhaseBins phase_bins_;
 };
 
 // Builds the 8 tables on all workers of `context` (cancellable).
 std::shared_ptr<const SunTables> build_sun_tables(const Nishita93Tables& optical_lengths,
                                                   const AtmosphereSpectra& atmosphere, double sun_zenith_rad,
-                                                  int nodes, const PrecomputeContext& context);
+                                                  int nodes, int phase_theta_cells,
+                                                  const PrecomputeContext& context);
 
 }  // namespace clearsky::nishita96

@@ -82,7 +82,7 @@ TEST(Nishita96Tables, PaperGridIs33CubedPerDirectionAndFitsIn24MB) {
   EXPECT_NEAR(corner.z - 6360e3, 60e3, 1e-6);
   EXPECT_NEAR(zenith.node_position(16, 16, 32).z, 6360e3, 1e-6);
   // Node lookups reproduce the stored values.
-  std::vector<double> value(model->wavelengths().size());
+  std::vector<float> value(model->wavelengths().size());
   zenith.lookup(zenith.node_position(16, 20, 30), value);
   for (std::size_t w = 0; w < value.size(); ++w) EXPECT_NEAR(value[w], zenith.node(16, 20, 30)[w], 1e-6 * value[w] + 1e-12);
   // Looking up at the ground, under the sun: light scattered in the whole column.
@@ -165,6 +165,25 @@ TEST(Nishita96Model, SingleScatteringTermMatchesTheReferenceIntegrator) {
       for (std::size_t w : {0u, 12u, 30u}) {
         EXPECT_NEAR(single[w], reference.radiance[w], 0.015 * reference.radiance[w]) << zenith << " " << azimuth;
       }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace clearsky
+
+namespace clearsky {
+namespace {
+
+TEST(Nishita96Functions, PhaseBinsOfTheSunEqualTheDirectBinning) {
+  const auto d = directions_for(degrees_to_radians(33.0));
+  const nishita96::PhaseBins bins(d, 32);
+  for (const Vec3& view : {Vec3{0, 0, 1}, normalize(Vec3{0.3, -0.5, 0.8}), normalize(Vec3{-1, 0.2, 0.05})}) {
+    const auto direct = nishita96::binned_phase_integrals(view, d, 0.7);
+    const auto fast = bins.integrate(view, 0.7);
+    for (int k = 0; k < kSamplingDirections; ++k) {
+      EXPECT_NEAR(fast.rayleigh[k], direct.rayleigh[k], 1e-12);
+      EXPECT_NEAR(fast.mie[k], direct.mie[k], 1e-12);
     }
   }
 }
