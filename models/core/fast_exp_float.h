@@ -2,7 +2,9 @@
 // loops over wavelengths vectorise (transmittances exp(-tau) of the per-sun precomputations
 // are evaluated hundreds of millions of times). Relative error below 3e-7 against std::exp
 // on [-87, 0]; arguments below -87 (transmittance under 1.6e-38) give exactly 0, never a
-// denormal. Tested in tests/models/core/fast_exp_float_test.cpp.
+// denormal; arguments >= 0 give 1 (transmittances never exceed 1). NaN inputs give a finite
+// value in [0, 1] (callers pass finite optical depths); no input reaches undefined behaviour.
+// Tested in tests/models/core/fast_exp_float_test.cpp.
 #pragma once
 
 #include <bit>
@@ -19,12 +21,16 @@ inline float exp_nonpositive_float(float x) {
   // Value selects rather than std::min/max (which select references and keep GCC from
   // vectorising the loop under the default -ftrapping-math).
   const float keep = x >= -87.0f ? 1.0f : 0.0f;
-  // max(x, -87) on the bit patterns (for x <= 0 a larger magnitude is a larger unsigned value):
-  // an integer select, so that the float-to-int conversion below cannot see an out-of-range
-  // value and GCC vectorises the loop under the default -ftrapping-math.
-  const std::uint32_t bits = std::bit_cast<std::uint32_t>(x);
-  constexpr std::uint32_t kLowestBits = std::bit_cast<std::uint32_t>(-87.0f);
-  const float clamped = std::bit_cast<float>(bits > kLowestBits ? kLowestBits : bits);
+  // Clamp to [-87, 0] on the bit patterns (sign and magnitude: for x < 0 a larger magnitude is
+  // a larger unsigned value; a clear sign bit means x >= 0 or +NaN): integer selects, so that
+  // the float-to-int conversion below never sees an out-of-range value or a NaN, and GCC
+  // vectorises the loop under the default -ftrapping-math.
+  const std::int32_t bits = std::bit_cast<std::int32_t>(x);
+  constexpr std::int32_t kLowestBits = std::bit_cast<std::int32_t>(-87.0f);
+  // Negative floats are negative integers here, more negative floats larger integers.
+  const std::int32_t low_clamped = bits > kLowestBits ? kLowestBits : bits;
+  const std::int32_t sign_mask = bits >> 31;  // all ones for x < 0 (or -NaN), else 0
+  const float clamped = std::bit_cast<float>(low_clamped & sign_mask);
   // Truncation of a value <= 0 shifted by -0.5 rounds to nearest (conversion vectorises).
   const auto n = static_cast<std::int32_t>(clamped * kLog2e - 0.5f);
   const float nf = static_cast<float>(n);
