@@ -77,7 +77,7 @@ TEST(HaberModel, RadianceIsFiniteNonNegativeAndSymmetricAboutTheSunPlane) {
 }
 
 TEST(HaberModel, SunBelowTheHorizonGivesATwilightSkyAndNoDirectSun) {
-  const auto model = HaberModel::create(coarse_config());
+  const auto model = HaberModel::create(coarse_config(2));
   const auto views = sky_directions();
   double previous = std::numeric_limits<double>::infinity();
   // Up to 95 degrees part of the 35 km atmosphere within the grid is still lit; at 108
