@@ -269,6 +269,35 @@ std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid, const Atmosph
   for (std::size_t s = 0; s < n_active; ++s) {
     for (int j = 0; j < n_phi; ++j) positions[s * n_phi + j] = grid.centre(cells[active[s]], grid.sector_azimuth_rad(j));
   }
+  // The optical length between target t in sector 0 and source s in sector delta is, by
+  // rotation about the vertical, that between s in sector 0 and t in sector -delta: each
+  // unordered pair is integrated once. Task t writes rows (t, s >= t) and (s > t, t) only.
+  if (orders >= 2) {
+    parallel_for(
+        n_active,
+        [&](std::size_t t) {
+          context.check_cancelled();
+          for (std::size_t s = t; s < n_active; ++s) {
+            float* forward = pair_lengths.data() + (t * n_active + s) * n_phi * 2;
+            float* backward = pair_lengths.data() + (s * n_active + t) * n_phi * 2;
+            for (int delta = 0; delta < n_phi; ++delta) {
+              const int mirrored = (n_phi - delta) % n_phi;
+              float rayleigh = -1.0f;
+              float mie = 0.0f;
+              if (!(s == t && delta == 0)) {
+                const OpticalLength l = optical_length(layers, positions[s * n_phi + delta], positions[t * n_phi]);
+                rayleigh = l.blocked ? -1.0f : static_cast<float>(l.rayleigh_m);
+                mie = static_cast<float>(l.mie_m);
+              }
+              forward[2 * delta] = rayleigh;
+              forward[2 * delta + 1] = mie;
+              backward[2 * mirrored] = rayleigh;
+              backward[2 * mirrored + 1] = mie;
+            }
+          }
+        },
+        context.threads);
+  }
   for (int order = 2; order <= orders; ++order) {
     const bool second = order == 2;
     // Radiance leaving each source cell along a path as long as its radial width.
@@ -311,21 +340,12 @@ std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid, const Atmosph
           }
           for (std::size_t s = 0; s < n_active; ++s) {
             const RingCell& source = cells[active[s]];
-            float* lengths = pair_lengths.data() + (t * n_active + s) * n_phi * 2;
+            const float* lengths = pair_lengths.data() + (t * n_active + s) * n_phi * 2;
             for (int delta = 0; delta < n_phi; ++delta) {
               const Vec3 p = positions[s * n_phi + delta];
               const Vec3 d = p - target0;
               const double distance2 = dot(d, d);
               inverse_distance[delta] = distance2 > 0.0 ? static_cast<float>(1.0 / std::sqrt(distance2)) : 0.0f;
-              if (second) {
-                if (s == t && delta == 0) {
-                  lengths[2 * delta] = -1.0f;
-                } else {
-                  const OpticalLength l = optical_length(layers, p, target0);
-                  lengths[2 * delta] = l.blocked ? -1.0f : static_cast<float>(l.rayleigh_m);
-                  lengths[2 * delta + 1] = static_cast<float>(l.mie_m);
-                }
-              }
               float* k = kernel.data() + static_cast<std::size_t>(delta) * np;
               if (lengths[2 * delta] < 0.0f) {
                 std::fill(k, k + np, 0.0f);
