@@ -199,6 +199,8 @@ __attribute__((target_clones("avx2", "default"))) void gather_double(
   }
 }
 
+#undef CLEARSKY_LOAD_CHUNK
+
 int mirror(int j, int n_phi) {
   const int m = ((j % n_phi) + n_phi) % n_phi;
   return m < n_phi / 2 ? m : n_phi - 1 - m;
