@@ -183,19 +183,10 @@ std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory,
 
 std::shared_ptr<const SunState> TableStore::sun_state(const std::shared_ptr<const SkyModel>& model,
                                                       const SunPosition& sun) const {
-  const SunKey key{model.get(), sun.zenith_rad, sun.azimuth_rad};
-  {
-    std::lock_guard lock(sun_mutex_);
-    const auto it = sun_states_.find(key);
-    if (it != sun_states_.end() && it->second.model.lock() == model) return it->second.state;
-  }
-  // Computed outside the lock: concurrent first requests may compute it twice, which is
-  // harmless (the states are equal and immutable).
-  auto state = model->prepare_sun(sun);
-  std::lock_guard lock(sun_mutex_);
-  if (sun_states_.size() >= kSunStates) sun_states_.clear();
-  sun_states_[key] = {model, state};
-  return state;
+  // The models whose per-sun preparation is costly (Haber, Nishita96) keep their own bounded,
+  // single-flight cache of per-sun states (models/core/sun_state_cache.h); for the others a
+  // SunState is just the sun. A second cache here would only defeat the models' memory bound.
+  return model->prepare_sun(sun);
 }
 
 api::ModelState TableStore::default_state(const ModelFactory& factory) const {

@@ -51,11 +51,9 @@ class TableStore final : public api::ModelProvider {
   std::shared_ptr<const SkyModel> model(const ModelFactory& factory,
                                         const ModelConfig& config) const override;
   api::ModelState default_state(const ModelFactory& factory) const override;
-  // Per-sun states are kept (up to kSunStates, then the cache starts over), keyed by model and
-  // exact sun angles; a model that has died is never matched (weak reference).
+  // The model's per-sun state; per-sun models share and bound them in their own cache.
   std::shared_ptr<const SunState> sun_state(const std::shared_ptr<const SkyModel>& model,
                                             const SunPosition& sun) const override;
-  static constexpr std::size_t kSunStates = 4096;
 
   // Queues the default configuration of every model (the server does this at start).
   void start_default_builds();
@@ -93,20 +91,6 @@ class TableStore final : public api::ModelProvider {
     std::shared_ptr<std::atomic<bool>> done;
   };
   mutable std::vector<OnDemandBuild> on_demand_;
-  struct SunKey {
-    const SkyModel* model;
-    double zenith_rad, azimuth_rad;
-    bool operator<(const SunKey& o) const {
-      return std::tie(model, zenith_rad, azimuth_rad) <
-             std::tie(o.model, o.zenith_rad, o.azimuth_rad);
-    }
-  };
-  struct SunValue {
-    std::weak_ptr<const SkyModel> model;
-    std::shared_ptr<const SunState> state;
-  };
-  mutable std::mutex sun_mutex_;
-  mutable std::map<SunKey, SunValue> sun_states_;
 };
 
 }  // namespace clearsky::server

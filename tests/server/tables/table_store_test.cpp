@@ -143,16 +143,16 @@ TEST(TableStore, OnDemandBuildsDoNotWaitBehindTheStartQueue) {
 namespace clearsky::server {
 namespace {
 
-TEST(TableStore, SharesSunStatesPerModelAndSun) {
+TEST(TableStore, SunStatesComeFromTheModelsOwnPreparation) {
+  // Per-sun models (Haber, Nishita96) share and bound their states in their own single-flight
+  // cache (tests/models/core/sun_state_cache_test.cpp); the store adds no second cache.
   TableStore store(clearsky::testing::test_factories(), {});
   const auto model = store.model(store.factories()[0], with_options({{"gain", 2}}));
   const SunPosition a{0.3, 1.0}, b{0.3, 1.5};
-  const auto first = store.sun_state(model, a);
-  EXPECT_EQ(store.sun_state(model, a), first);
-  EXPECT_NE(store.sun_state(model, b), first);
+  EXPECT_DOUBLE_EQ(store.sun_state(model, a)->sun().azimuth_rad, 1.0);
   EXPECT_DOUBLE_EQ(store.sun_state(model, b)->sun().azimuth_rad, 1.5);
-  const auto other = store.model(store.factories()[0], with_options({{"gain", 3}}));
-  EXPECT_NE(store.sun_state(other, a), first);
+  EXPECT_THROW(store.sun_state(model, SunPosition{3.0, 0.0}), std::invalid_argument)
+      << "a sun the model refuses is refused through the store";
 }
 
 }  // namespace
