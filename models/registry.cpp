@@ -1,12 +1,14 @@
-// The list of registered models. Models are added here as their issues land.
+// The list of registered models, in the paper's order.
 #include "models/registry.h"
 
 #include <vector>
 
 #include "models/bruneton/bruneton.h"
 #include "models/elek/elek.h"
+#include "models/haber/haber.h"
 #include "models/hosek/hosek.h"
 #include "models/nishita93/nishita93.h"
+#include "models/nishita96/nishita96.h"
 #include "models/oneal/oneal.h"
 #include "models/preetham/preetham.h"
 
@@ -15,12 +17,8 @@ namespace clearsky {
 std::span<const ModelFactory> registered_models() {
   static const std::vector<ModelFactory> factories = {
       // The paper's order: Nishita93, Nishita96, Preetham, O'Neal, Haber, Bruneton, Elek, Hosek.
-      nishita93_factory(),
-      preetham_factory(),
-      oneal_factory(),
-      bruneton_factory(),
-      elek_factory(),
-      hosek_factory(),
+      nishita93_factory(), nishita96_factory(), preetham_factory(), oneal_factory(),
+      haber::kFactory,     bruneton_factory(),  elek_factory(),     hosek_factory(),
   };
   return factories;
 }

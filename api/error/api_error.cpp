@@ -8,8 +8,9 @@ ApiError invalid_parameter(const std::string& parameter, const std::string& mess
 }
 
 ApiError unknown_parameter(const std::string& parameter, const std::string& endpoint) {
-  return ApiError(400, "unknown_parameter", parameter,
-                  parameter + ": not a parameter of " + endpoint + " (or not used by this request)");
+  return ApiError(
+      400, "unknown_parameter", parameter,
+      parameter + ": not a parameter of " + endpoint + " (or not used by this request)");
 }
 
 ApiError missing_parameter(const std::string& parameter, const std::string& message) {
@@ -23,20 +24,24 @@ ApiError conflicting_parameters(const std::string& parameter, const std::string&
 }
 
 ApiError unknown_model(const std::string& id, const std::string& available) {
-  return ApiError(404, "unknown_model", "model",
-                  "model: no model '" + id + "' (available: " + (available.empty() ? "none" : available) + ")");
+  return ApiError(
+      404, "unknown_model", "model",
+      "model: no model '" + id + "' (available: " + (available.empty() ? "none" : available) + ")");
 }
 
 ApiError too_large(const std::string& parameter, const std::string& message) {
   return ApiError(413, "too_large", parameter, parameter + ": " + message);
 }
 
-ApiError cannot_answer(const std::string& parameter, const std::string& model_id, const std::string& reason) {
-  return ApiError(422, "model_cannot_answer", parameter, "model " + model_id + " cannot answer: " + reason);
+ApiError cannot_answer(const std::string& parameter, const std::string& model_id,
+                       const std::string& reason) {
+  return ApiError(422, "model_cannot_answer", parameter,
+                  "model " + model_id + " cannot answer: " + reason);
 }
 
 ApiError not_ready(const std::string& model_id, const std::string& message, int retry_after_s) {
-  return ApiError(503, "model_not_ready", "model", "model " + model_id + ": " + message, retry_after_s);
+  return ApiError(503, "model_not_ready", "model", "model " + model_id + ": " + message,
+                  retry_after_s);
 }
 
 ApiError from_invalid_argument(const std::invalid_argument& error) {

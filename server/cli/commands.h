@@ -9,6 +9,7 @@
 namespace clearsky::cli {
 
 void add_models_command(CLI::App& app);
+void add_serve_command(CLI::App& app);
 void add_sun_command(CLI::App& app);
 void add_import_command(CLI::App& app);
 void add_datasets_command(CLI::App& app);

@@ -1,0 +1,79 @@
+// GET/POST /v1/radiance: spectral sky radiance, W/(m2.sr.nm), for one view or a batch.
+// format=json (default): {"model", "sun", "altitude_m", "unit", "wavelengths_nm",
+// "samples": [{"view_zenith_deg", "view_azimuth_deg", "radiance": [...]}]};
+// format=csv: one row per view and wavelength
+// (view_zenith_deg,view_azimuth_deg,wavelength_nm,radiance_w_m2_sr_nm).
+#include <cstdio>
+
+#include "api/handlers/handlers.h"
+#include "api/handlers/sky_radiance_query.h"
+
+namespace clearsky::api {
+
+namespace {
+
+std::string csv_number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(finite(x)));
+  return buffer;
+}
+
+}  // namespace
+
+ApiResponse radiance(const ApiContext& context, const ApiRequest& request) {
+  Parameters p = request_parameters(request, {"views"});
+  const ModelFactory& factory = parse_model(p, context.models);
+  const SunSpec sun = parse_sun(p);
+  const Viewpoint viewpoint = parse_viewpoint(p);
+  ModelConfig config = parse_config(p, *factory.descriptor);
+  const auto wavelengths = parse_wavelengths(p, context.limits);
+  const std::string format = p.choice("format", {"json", "csv"}, "json");
+  const ViewList views =
+      request.method == "POST"
+          ? parse_view_batch(request_body(request).value("views", nlohmann::json()), context.limits)
+          : parse_single_view(p);
+  p.reject_unused();
+
+  const ModelOnGrid m =
+      model_on_wavelengths(context.models, factory, std::move(config), wavelengths);
+  const SpectralBatch batch = checked_sky_radiance(context.models, m.model, sun, viewpoint, views);
+
+  ApiResponse response;
+  response.model_id = factory.descriptor->id;
+  if (format == "csv") {
+    std::string body = "view_zenith_deg,view_azimuth_deg,wavelength_nm,radiance_w_m2_sr_nm\n";
+    for (std::size_t v = 0; v < batch.size(); ++v) {
+      const auto spectrum = batch.spectrum(v);
+      for (std::size_t k = 0; k < m.indices.size(); ++k) {
+        body += csv_number(views.zenith_deg[v]) + ',' + csv_number(views.azimuth_deg[v]) + ',' +
+                csv_number(m.wavelengths_nm[k]) + ',' + csv_number(spectrum[m.indices[k]]) + '\n';
+      }
+    }
+    response.content_type = "text/csv";
+    response.body = std::move(body);
+    return response;
+  }
+  nlohmann::json samples = nlohmann::json::array();
+  for (std::size_t v = 0; v < batch.size(); ++v) {
+    const auto spectrum = batch.spectrum(v);
+    nlohmann::json values = nlohmann::json::array();
+    for (std::size_t i : m.indices) values.push_back(finite(spectrum[i]));
+    samples.push_back({{"view_zenith_deg", views.zenith_deg[v]},
+                       {"view_azimuth_deg", views.azimuth_deg[v]},
+                       {"radiance", std::move(values)}});
+  }
+  const WavelengthGrid& grid = m.model->wavelengths();
+  nlohmann::json body = {{"model", factory.descriptor->id},
+                         {"model_version", factory.descriptor->version},
+                         {"sun", sun_json(sun)},
+                         {"altitude_m", viewpoint.altitude_m},
+                         {"unit", "W/(m2.sr.nm)"},
+                         {"grid", grid.kind() == WavelengthGrid::Kind::bins ? "bins" : "points"},
+                         {"wavelengths_nm", m.wavelengths_nm},
+                         {"samples", std::move(samples)}};
+  if (grid.kind() == WavelengthGrid::Kind::bins) body["bin_width_nm"] = grid.bin_width_nm();
+  response.body = body.dump();
+  return response;
+}
+
+}  // namespace clearsky::api

@@ -1,0 +1,77 @@
+// GET/POST /v1/rgb: linear sRGB (IEC 61966-2-1 primaries, D65 white, no transfer curve) and
+// luminance (cd/m2) per view. method=spectral (default): the model on the paper's 40-bin grid,
+// integrated against the CIE 1931 matching functions (models/colour). method=three: the
+// paper's 3-wavelength method (section "Spectrum sampling"): the model built on the points
+// 440, 550, 680 nm and c = k_c L(lambda_c) (models/colour/three_wavelength_rgb.h).
+// RGB values are radiometric (XYZ with Y in W/(m2.sr)); luminance is 683 Y.
+#include "api/colour/xyz_weights.h"
+#include "api/handlers/handlers.h"
+#include "api/handlers/sky_radiance_query.h"
+#include "models/colour/three_wavelength_rgb.h"
+
+namespace clearsky::api {
+
+namespace {
+
+const ThreeWavelengthRgb& three_wavelength_method() {
+  static const ThreeWavelengthRgb method;
+  return method;
+}
+
+}  // namespace
+
+ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
+  Parameters p = request_parameters(request, {"views"});
+  const ModelFactory& factory = parse_model(p, context.models);
+  const SunSpec sun = parse_sun(p);
+  const Viewpoint viewpoint = parse_viewpoint(p);
+  ModelConfig config = parse_config(p, *factory.descriptor);
+  const std::string method = p.choice("method", {"spectral", "three"}, "spectral");
+  const ViewList views =
+      request.method == "POST"
+          ? parse_view_batch(request_body(request).value("views", nlohmann::json()), context.limits)
+          : parse_single_view(p);
+  p.reject_unused();
+
+  const ThreeWavelengthRgb& three = three_wavelength_method();
+  std::optional<std::vector<double>> wavelengths;
+  if (method == "three") {
+    wavelengths = three.grid().nanometres();
+    config.wavelengths = three.grid();
+  }
+  const ModelOnGrid m =
+      model_on_wavelengths(context.models, factory, std::move(config), wavelengths);
+  const SpectralBatch batch = checked_sky_radiance(context.models, m.model, sun, viewpoint, views);
+
+  nlohmann::json samples = nlohmann::json::array();
+  const XyzWeights xyz(m.model->wavelengths());
+  for (std::size_t v = 0; v < batch.size(); ++v) {
+    const auto spectrum = batch.spectrum(v);
+    LinearSrgb c;
+    double luminance = 0;
+    if (method == "three") {
+      c = three.rgb(spectrum[m.indices[2]], spectrum[m.indices[1]], spectrum[m.indices[0]]);
+      luminance = kMaxLuminousEfficacy * linear_srgb_to_xyz(c).y;
+    } else {
+      const Xyz x = xyz.xyz(spectrum);
+      c = xyz_to_linear_srgb(x);
+      luminance = kMaxLuminousEfficacy * x.y;
+    }
+    samples.push_back({{"view_zenith_deg", views.zenith_deg[v]},
+                       {"view_azimuth_deg", views.azimuth_deg[v]},
+                       {"rgb", {finite(c.r), finite(c.g), finite(c.b)}},
+                       {"luminance_cd_m2", finite(luminance)}});
+  }
+  nlohmann::json body = {{"model", factory.descriptor->id},
+                         {"model_version", factory.descriptor->version},
+                         {"method", method},
+                         {"sun", sun_json(sun)},
+                         {"altitude_m", viewpoint.altitude_m},
+                         {"colour_space", "linear sRGB (D65), radiometric: Y in W/(m2.sr)"},
+                         {"samples", std::move(samples)}};
+  ApiResponse response = json_response(body);
+  response.model_id = factory.descriptor->id;
+  return response;
+}
+
+}  // namespace clearsky::api

@@ -1,0 +1,156 @@
+// Typed access to request parameters, with strict parsing and unused-parameter detection.
+#include "api/request/parameters.h"
+
+#include <charconv>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "api/error/api_error.h"
+
+namespace clearsky::api {
+
+namespace {
+
+std::string format_limit(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+}  // namespace
+
+double number_value(const std::string& parameter, std::string_view text) {
+  text = trim(text);
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
+    throw invalid_parameter(parameter, "'" + std::string(text) + "' is not a number");
+  }
+  if (!std::isfinite(value)) throw invalid_parameter(parameter, "must be a finite number");
+  return value;
+}
+
+void Parameters::add(const std::string& name, std::string value) {
+  if (!values_.emplace(name, std::move(value)).second) {
+    throw ApiError(400, "duplicate_parameter", name, name + ": given more than once");
+  }
+}
+
+Parameters Parameters::from_json_object(std::string endpoint, const nlohmann::json& object,
+                                        std::initializer_list<std::string_view> structured) {
+  if (!object.is_object())
+    throw ApiError(400, "invalid_body", "", "the request body must be a JSON object");
+  Parameters p(std::move(endpoint));
+  for (const auto& [name, value] : object.items()) {
+    bool skip = false;
+    for (std::string_view s : structured) skip = skip || s == name;
+    if (skip) continue;
+    if (value.is_string()) {
+      p.add(name, value.get<std::string>());
+    } else if (value.is_boolean()) {
+      p.add(name, value.get<bool>() ? "true" : "false");
+    } else if (value.is_number()) {
+      std::ostringstream out;
+      out.precision(17);
+      out << value.get<double>();
+      p.add(name, out.str());
+    } else {
+      throw invalid_parameter(name, "must be a string, a number or a boolean");
+    }
+  }
+  return p;
+}
+
+bool Parameters::has_any(std::initializer_list<std::string_view> names) const {
+  for (std::string_view n : names)
+    if (values_.contains(std::string(n))) return true;
+  return false;
+}
+
+std::optional<std::string> Parameters::text(const std::string& name) {
+  const auto it = values_.find(name);
+  if (it == values_.end()) return std::nullopt;
+  used_.insert(name);
+  return it->second;
+}
+
+std::string Parameters::required_text(const std::string& name) {
+  auto value = text(name);
+  if (!value) throw missing_parameter(name);
+  return *value;
+}
+
+std::optional<double> Parameters::number(const std::string& name, double min, double max) {
+  const auto value = text(name);
+  if (!value) return std::nullopt;
+  const double x = number_value(name, *value);
+  if (!(x >= min && x <= max)) {
+    throw invalid_parameter(name,
+                            "must be in [" + format_limit(min) + ", " + format_limit(max) + "]");
+  }
+  return x;
+}
+
+double Parameters::number_or(const std::string& name, double fallback, double min, double max) {
+  return number(name, min, max).value_or(fallback);
+}
+
+double Parameters::required_number(const std::string& name, double min, double max) {
+  const auto x = number(name, min, max);
+  if (!x) throw missing_parameter(name);
+  return *x;
+}
+
+std::optional<long long> Parameters::integer(const std::string& name, long long min,
+                                             long long max) {
+  const auto value = text(name);
+  if (!value) return std::nullopt;
+  const std::string_view t = trim(*value);
+  long long x = 0;
+  const auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), x);
+  if (t.empty() || error != std::errc() || end != t.data() + t.size()) {
+    throw invalid_parameter(name, "'" + *value + "' is not an integer");
+  }
+  if (x < min || x > max) {
+    throw invalid_parameter(
+        name, "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
+  }
+  return x;
+}
+
+std::string Parameters::choice(const std::string& name,
+                               std::initializer_list<std::string_view> choices,
+                               std::string_view fallback) {
+  const auto value = text(name);
+  if (!value) return std::string(fallback);
+  std::string list;
+  for (std::string_view c : choices) {
+    if (c == *value) return *value;
+    list += (list.empty() ? "" : ", ") + std::string(c);
+  }
+  throw invalid_parameter(name, "'" + *value + "' is not one of " + list);
+}
+
+bool Parameters::boolean_or(const std::string& name, bool fallback) {
+  const auto value = text(name);
+  if (!value) return fallback;
+  if (*value == "true" || *value == "1") return true;
+  if (*value == "false" || *value == "0") return false;
+  throw invalid_parameter(name, "must be true or false");
+}
+
+void Parameters::reject_unused() const {
+  for (const auto& [name, value] : values_) {
+    if (!used_.contains(name)) throw unknown_parameter(name, endpoint_);
+  }
+}
+
+}  // namespace clearsky::api

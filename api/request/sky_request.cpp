@@ -1,0 +1,214 @@
+// Parsing of the shared sky-query parameters and the capability checks around them.
+#include "api/request/sky_request.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "api/error/api_error.h"
+#include "api/request/place_time.h"
+#include "models/core/numeric.h"
+
+namespace clearsky::api {
+
+const ModelFactory& parse_model(Parameters& p, const ModelProvider& provider) {
+  const std::string id = p.required_text("model");
+  std::string available;
+  for (const ModelFactory& f : provider.factories()) {
+    if (f.descriptor->id == id) return f;
+    available += (available.empty() ? "" : ", ") + f.descriptor->id;
+  }
+  throw unknown_model(id, available);
+}
+
+SunSpec parse_sun(Parameters& p) {
+  SunSpec spec;
+  const bool given = p.has_any({"sun_zenith", "sun_azimuth"});
+  if (given) {
+    for (const char* name : {"lat", "lon", "time"}) {
+      if (p.has(name)) throw conflicting_parameters(name, "sun_zenith/sun_azimuth");
+    }
+    spec.zenith_deg = p.required_number("sun_zenith", 0.0, 180.0);
+    spec.azimuth_deg = p.required_number("sun_azimuth", -360.0, 360.0);
+    spec.azimuth_deg = std::fmod(spec.azimuth_deg + 360.0, 360.0);
+  } else {
+    if (!p.has_any({"lat", "lon", "time"})) {
+      throw missing_parameter("sun_zenith",
+                              "give sun_zenith and sun_azimuth, or lat, lon and time");
+    }
+    const SolarPosition position = solar_position_checked(parse_place_and_time(p));
+    spec.zenith_deg = position.zenith_deg;
+    spec.azimuth_deg = position.azimuth_deg;
+    spec.from_place_and_time = true;
+    spec.parameter = "time";
+  }
+  spec.sun = {degrees_to_radians(spec.zenith_deg), degrees_to_radians(spec.azimuth_deg)};
+  return spec;
+}
+
+Viewpoint parse_viewpoint(Parameters& p) { return {p.number_or("altitude", 0.0, -500.0, 1e7)}; }
+
+bool set_atmosphere_parameter(AtmosphereParameters& a, const std::string& name, double value) {
+  if (name == "alpha")
+    a.angstrom_alpha = value;
+  else if (name == "beta")
+    a.angstrom_beta = value;
+  else if (name == "g")
+    a.mie_phase_g = value;
+  else if (name == "turbidity")
+    a.turbidity = value;
+  else if (name == "albedo")
+    a.ground_albedo = value;
+  else if (name == "mie_single_scattering_albedo")
+    a.mie_single_scattering_albedo = value;
+  else if (name == "rayleigh_scale_height_m")
+    a.rayleigh_scale_height_m = value;
+  else if (name == "mie_scale_height_m")
+    a.mie_scale_height_m = value;
+  else if (name == "rayleigh_temperature_celsius")
+    a.rayleigh_temperature_celsius = value;
+  else if (name == "earth_radius_m")
+    a.earth_radius_m = value;
+  else if (name == "top_radius_m")
+    a.top_radius_m = value;
+  else
+    return false;
+  return true;
+}
+
+ModelConfig parse_config(Parameters& p, const ModelDescriptor& descriptor) {
+  ModelConfig config;
+  for (const ParameterSpec& spec : descriptor.parameters) {
+    if (!p.has(spec.name)) continue;
+    if (spec.atmosphere && spec.name == "albedo" && p.has("albedo")) {
+      // "grass" selects the spectral albedo of grass (the study's default).
+      const std::string text = *p.text("albedo");
+      if (text == "grass") {
+        config.atmosphere.ground_albedo.reset();
+        continue;
+      }
+      const double value = number_value("albedo", text);
+      if (!(value >= spec.min_value && value <= spec.max_value)) {
+        throw invalid_parameter("albedo", "must be 'grass' or a number in [0, 1]");
+      }
+      config.atmosphere.ground_albedo = value;
+      continue;
+    }
+    const double value = *p.number(spec.name, spec.min_value, spec.max_value);
+    if (spec.integer && value != std::floor(value))
+      throw invalid_parameter(spec.name, "must be an integer");
+    if (spec.atmosphere) {
+      if (!set_atmosphere_parameter(config.atmosphere, spec.name, value)) {
+        throw std::logic_error("descriptor of " + descriptor.id +
+                               " lists unknown atmosphere parameter " + spec.name);
+      }
+    } else {
+      config.options[spec.name] = value;
+    }
+  }
+  try {
+    validate_config(descriptor, config);
+  } catch (const std::invalid_argument& e) {
+    throw from_invalid_argument(e);
+  }
+  return config;
+}
+
+std::optional<std::vector<double>> parse_wavelengths(Parameters& p, const Limits& limits) {
+  const auto text = p.text("wavelengths");
+  if (!text) return std::nullopt;
+  std::vector<double> nm;
+  if (text->find(':') != std::string::npos) {
+    std::vector<double> parts;
+    std::size_t begin = 0;
+    while (true) {
+      const std::size_t end = text->find(':', begin);
+      parts.push_back(
+          number_value("wavelengths", std::string_view(*text).substr(begin, end - begin)));
+      if (end == std::string::npos) break;
+      begin = end + 1;
+    }
+    if (parts.size() != 3) throw invalid_parameter("wavelengths", "a range is start:stop:step");
+    const double start = parts[0], stop = parts[1], step = parts[2];
+    if (!(step > 0.0)) throw invalid_parameter("wavelengths", "the step must be positive");
+    if (!(stop >= start)) throw invalid_parameter("wavelengths", "stop must not be below start");
+    const double count = std::floor((stop - start) / step + 1e-9) + 1.0;
+    if (count > static_cast<double>(limits.max_wavelengths)) {
+      throw too_large("wavelengths",
+                      "at most " + std::to_string(limits.max_wavelengths) + " wavelengths");
+    }
+    for (long i = 0; i < static_cast<long>(count); ++i)
+      nm.push_back(start + step * static_cast<double>(i));
+  } else {
+    std::size_t begin = 0;
+    while (true) {
+      const std::size_t end = text->find(',', begin);
+      nm.push_back(number_value("wavelengths", std::string_view(*text).substr(begin, end - begin)));
+      if (nm.size() > limits.max_wavelengths) {
+        throw too_large("wavelengths",
+                        "at most " + std::to_string(limits.max_wavelengths) + " wavelengths");
+      }
+      if (end == std::string::npos) break;
+      begin = end + 1;
+    }
+  }
+  for (std::size_t i = 0; i < nm.size(); ++i) {
+    if (!(nm[i] > 0.0 && nm[i] <= 1e5))
+      throw invalid_parameter("wavelengths", "each must be in (0, 100000] nm");
+    if (i > 0 && !(nm[i] > nm[i - 1]))
+      throw invalid_parameter("wavelengths", "must be strictly increasing");
+  }
+  return nm;
+}
+
+ModelOnGrid model_on_wavelengths(const ModelProvider& provider, const ModelFactory& factory,
+                                 ModelConfig config,
+                                 const std::optional<std::vector<double>>& wavelengths) {
+  ModelOnGrid out;
+  const ModelDescriptor& d = *factory.descriptor;
+  if (wavelengths) {
+    for (double w : *wavelengths) {
+      if (w < d.min_wavelength_nm - 1e-9 || w > d.max_wavelength_nm + 1e-9) {
+        std::ostringstream reason;
+        reason << w << " nm is outside its spectral range [" << d.min_wavelength_nm << ", "
+               << d.max_wavelength_nm << "] nm";
+        throw cannot_answer("wavelengths", d.id, reason.str());
+      }
+    }
+    bool on_grid = true;
+    for (double w : *wavelengths)
+      on_grid = on_grid && config.wavelengths.index_of(w) < config.wavelengths.size();
+    if (!on_grid) config.wavelengths = WavelengthGrid::points(*wavelengths);
+  }
+  out.model = provider.model(factory, config);
+  const WavelengthGrid& grid = out.model->wavelengths();
+  if (wavelengths) {
+    for (double w : *wavelengths) out.indices.push_back(grid.index_of(w));
+  } else {
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+      if (out.model->answers_wavelength(i)) out.indices.push_back(i);
+    }
+  }
+  if (out.indices.empty())
+    throw cannot_answer("wavelengths", d.id, "no wavelength of the grid is in its spectral range");
+  for (std::size_t i : out.indices) out.wavelengths_nm.push_back(grid[i]);
+  return out;
+}
+
+void require_answer(SampleStatus status, const std::string& parameter,
+                    const std::string& model_id) {
+  if (status == SampleStatus::ok) return;
+  if (status == SampleStatus::numerical_failure) {
+    throw ApiError(500, "numerical_failure", parameter,
+                   "model " + model_id + ": " + std::string(describe(status)));
+  }
+  throw cannot_answer(parameter, model_id, std::string(describe(status)));
+}
+
+std::shared_ptr<const SunState> prepare_sun(const ModelProvider& provider,
+                                            const std::shared_ptr<const SkyModel>& model,
+                                            const SunSpec& sun) {
+  require_answer(model->check_sun(sun.sun), sun.parameter, model->descriptor().id);
+  return provider.sun_state(model, sun.sun);
+}
+
+}  // namespace clearsky::api

@@ -1,0 +1,46 @@
+// Where handlers get built models from: the registered factories and, for a (model,
+// configuration) pair, the immutable SkyModel with its tables. The server implements it with
+// its table store (build on demand, single-flight, disk cache); tests may implement it with
+// any factory list. Implementations must be thread-safe.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <string>
+
+#include "models/core/sky_model.h"
+
+namespace clearsky::api {
+
+// The state of a model's default tables, as GET /v1/models reports it.
+struct ModelState {
+  enum class Status { queued, precomputing, ready, failed };
+  Status status = Status::queued;
+  double progress = 0;             // [0, 1]
+  std::string stage;               // the precomputation's current stage
+  std::string error;               // when failed
+  double precompute_seconds = 0;   // measured build (or cache load) time, when ready
+  std::size_t table_bytes = 0;     // SkyModel::table_bytes(), when ready
+  bool loaded_from_cache = false;  // whether the disk cache supplied the tables
+};
+
+std::string_view to_string(ModelState::Status status);
+
+class ModelProvider {
+ public:
+  virtual ~ModelProvider() = default;
+  virtual std::span<const ModelFactory> factories() const = 0;
+  // The model built with config. Throws ApiError: 400 for a configuration the descriptor
+  // rejects, 503 (with Retry-After) while its tables are being built, 500 when the build failed.
+  virtual std::shared_ptr<const SkyModel> model(const ModelFactory& factory,
+                                                const ModelConfig& config) const = 0;
+  virtual ModelState default_state(const ModelFactory& factory) const = 0;
+  // The model's per-sun state (SkyModel::prepare_sun; sun already checked). Providers may
+  // share it between requests for the same model and sun: it is immutable.
+  virtual std::shared_ptr<const SunState> sun_state(const std::shared_ptr<const SkyModel>& model,
+                                                    const SunPosition& sun) const {
+    return model->prepare_sun(sun);
+  }
+};
+
+}  // namespace clearsky::api

@@ -1,0 +1,47 @@
+// Where each pixel of a skydome image looks (DESIGN.md GET /v1/skydome):
+//  - fisheye: size x size, equidistant (zenith angle proportional to the distance from the
+//    centre; the horizon on the inscribed circle), seen from below looking up: North at the
+//    top, East on the LEFT, as on a sky chart. Pixels outside the circle see nothing.
+//  - latlong: size x size/2, OpenEXR's latitude-longitude environment map (ImfEnvmap.h), with
+//    OpenEXR's +y up and +z North (so +x West): North at the centre column, East to its right,
+//    the zenith on the top row, the nadir on the bottom row.
+//  - cubemap: size x 6 size, OpenEXR's cube map (faces +X, -X, +Y, -Y, +Z, -Z stacked
+//    vertically, ImfEnvmap.h) in the same frame as latlong.
+// Pixel (x, y) is sampled at its centre for fisheye and at OpenEXR's pixel position (x, y) for
+// the environment maps, so that OpenEXR-aware readers look the map up consistently.
+// Immutable; thread-safe.
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "models/core/geometry.h"
+
+namespace clearsky::api {
+
+enum class Projection { fisheye, latlong, cubemap };
+
+class SkydomeProjection {
+ public:
+  SkydomeProjection(Projection projection, int size);
+  Projection projection() const { return projection_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  // The direction pixel (x, y) sees, or false when it sees none (outside the fisheye circle).
+  bool direction(int x, int y, SkyDirection& out) const;
+
+  static SkyDirection from_openexr_frame(double x, double y, double z);
+
+ private:
+  Projection projection_;
+  int size_;
+  int width_, height_;
+  // Cube map: per face, image pixel -> position in face, as an affine map (OpenEXR lays each
+  // face out with flips and swaps, so the inverse is read from its forward map).
+  struct FaceMap {
+    double origin_x, origin_y, xx, xy, yx, yy;
+  };
+  std::array<FaceMap, 6> faces_{};
+};
+
+}  // namespace clearsky::api

@@ -1,0 +1,259 @@
+// Skydome parsing, band-parallel evaluation and streamed EXR encoding.
+#include "api/skydome/skydome_render.h"
+
+#include <Imath/half.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFloatAttribute.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStandardAttributes.h>
+#include <OpenEXR/ImfStringAttribute.h>
+
+#include <cstdio>
+
+#include "api/colour/xyz_weights.h"
+#include "api/handlers/sky_radiance_query.h"
+#include "api/skydome/exr_stream.h"
+#include "models/colour/three_wavelength_rgb.h"
+#include "models/core/parallel.h"
+
+namespace clearsky::api {
+
+struct SkydomeRender::Settings {
+  std::string model_id;
+  ModelOnGrid m;
+  std::shared_ptr<const SunState> sun_state;
+  SunSpec sun;
+  Viewpoint viewpoint;
+  SkydomeProjection projection{Projection::fisheye, 8};
+  std::string channels;
+  std::string method;
+  bool half = true;
+  std::string projection_name;
+  std::unique_ptr<XyzWeights> xyz;
+};
+
+namespace {
+
+constexpr int kBandRows = 16;
+
+const ThreeWavelengthRgb& three_wavelength_method() {
+  static const ThreeWavelengthRgb method;
+  return method;
+}
+
+}  // namespace
+
+std::string spectral_channel_name(double wavelength_nm) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "S0.%.6fnm", wavelength_nm);
+  std::string name = buffer;
+  for (char& c : name) {
+    if (c == '.' && &c != &name[2]) c = ',';
+  }
+  return name;
+}
+
+SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& request) {
+  Parameters p = request_parameters(request);
+  auto s = std::make_shared<SkydomeRender::Settings>();
+  const ModelFactory& factory = parse_model(p, context.models);
+  s->model_id = factory.descriptor->id;
+  s->sun = parse_sun(p);
+  s->viewpoint = parse_viewpoint(p);
+  ModelConfig config = parse_config(p, *factory.descriptor);
+  s->projection_name = p.choice("projection", {"fisheye", "latlong", "cubemap"}, "fisheye");
+  const auto size_text = p.text("size");
+  long long size = 512;
+  if (size_text) {
+    const double x = number_value("size", *size_text);
+    if (x != std::floor(x) || x < 8) throw invalid_parameter("size", "must be an integer >= 8");
+    if (x > context.limits.max_skydome_size) {
+      throw too_large("size",
+                      "at most " + std::to_string(context.limits.max_skydome_size) + " pixels");
+    }
+    size = static_cast<long long>(x);
+  }
+  if (s->projection_name == "latlong" && size % 2 != 0)
+    throw invalid_parameter("size", "must be even for latlong");
+  s->channels = p.choice("channels", {"rgb", "luminance", "spectral"}, "rgb");
+  s->half =
+      p.choice("pixel_type", {"half", "float"}, s->channels == "rgb" ? "half" : "float") == "half";
+  s->method = "spectral";
+  if (s->channels == "rgb") s->method = p.choice("method", {"spectral", "three"}, "spectral");
+  std::optional<std::vector<double>> wavelengths;
+  if (s->channels == "spectral") wavelengths = parse_wavelengths(p, context.limits);
+  p.reject_unused();
+
+  if (s->method == "three") {
+    wavelengths = three_wavelength_method().grid().nanometres();
+    config.wavelengths = three_wavelength_method().grid();
+  }
+  const Projection projection = s->projection_name == "fisheye"   ? Projection::fisheye
+                                : s->projection_name == "latlong" ? Projection::latlong
+                                                                  : Projection::cubemap;
+  s->projection = SkydomeProjection(projection, static_cast<int>(size));
+  s->m = model_on_wavelengths(context.models, factory, std::move(config), wavelengths);
+  // The sun and the viewpoint are checked now, so that a sky the model cannot answer is an
+  // error rather than a black image: one view at the zenith goes through the checked path.
+  ViewList zenith;
+  zenith.views.push_back({0.0, 0.0});
+  zenith.zenith_deg.push_back(0.0);
+  zenith.azimuth_deg.push_back(0.0);
+  checked_sky_radiance(context.models, s->m.model, s->sun, s->viewpoint, zenith);
+  s->sun_state = prepare_sun(context.models, s->m.model, s->sun);
+  s->xyz = std::make_unique<XyzWeights>(s->m.model->wavelengths());
+  return SkydomeRender(std::move(s));
+}
+
+const std::string& SkydomeRender::model_id() const { return settings_->model_id; }
+int SkydomeRender::width() const { return settings_->projection.width(); }
+int SkydomeRender::height() const { return settings_->projection.height(); }
+
+bool SkydomeRender::write(const Sink& sink, unsigned threads,
+                          std::size_t* unanswered_pixels) const {
+  const Settings& s = *settings_;
+  const int width = s.projection.width();
+  const int height = s.projection.height();
+
+  // Channels, in the order of the band buffer.
+  std::vector<std::string> names;
+  if (s.channels == "rgb")
+    names = {"R", "G", "B"};
+  else if (s.channels == "luminance")
+    names = {"Y"};
+  else
+    for (double w : s.m.wavelengths_nm) names.push_back(spectral_channel_name(w));
+  const std::size_t n_channels = names.size();
+  const Imf::PixelType type = s.half ? Imf::HALF : Imf::FLOAT;
+  const std::size_t sample_bytes = s.half ? 2 : 4;
+
+  Imf::Header header(width, height);
+  header.compression() = Imf::NO_COMPRESSION;
+  header.lineOrder() = Imf::INCREASING_Y;
+  for (const auto& name : names) header.channels().insert(name, Imf::Channel(type));
+  header.insert("clearskyModel", Imf::StringAttribute(s.model_id));
+  header.insert("clearskyProjection", Imf::StringAttribute(s.projection_name));
+  header.insert("sunZenithDeg", Imf::FloatAttribute(static_cast<float>(s.sun.zenith_deg)));
+  header.insert("sunAzimuthDeg", Imf::FloatAttribute(static_cast<float>(s.sun.azimuth_deg)));
+  header.insert("observerAltitudeM",
+                Imf::FloatAttribute(static_cast<float>(s.viewpoint.altitude_m)));
+  if (s.projection.projection() == Projection::latlong) Imf::addEnvmap(header, Imf::ENVMAP_LATLONG);
+  if (s.projection.projection() == Projection::cubemap) Imf::addEnvmap(header, Imf::ENVMAP_CUBE);
+  if (s.channels == "rgb") {
+    Imf::addChromaticities(header, Imf::Chromaticities());  // Rec. 709 primaries = sRGB, D65
+    header.insert("clearskyColourMethod", Imf::StringAttribute(s.method));
+  }
+  if (s.channels == "luminance") header.insert("luminanceUnits", Imf::StringAttribute("cd.m^-2"));
+  if (s.channels == "spectral") {
+    header.insert("spectralLayoutVersion", Imf::StringAttribute("1.0"));
+    header.insert("emissiveUnits", Imf::StringAttribute("W.m^-2.sr^-1"));
+  }
+
+  ExrStream stream(sink);
+  try {
+    Imf::OutputFile file(stream, header, 0);
+    const std::uint64_t line_bytes = static_cast<std::uint64_t>(width) * n_channels * sample_bytes;
+    stream.start(uncompressed_chunk_offsets(stream.tellp(), height, line_bytes));
+
+    // One band of rows: channel-interleaved float, then converted to half when asked.
+    const std::size_t band_pixels =
+        static_cast<std::size_t>(kBandRows) * static_cast<std::size_t>(width);
+    std::vector<float> band_float(band_pixels * n_channels);
+    std::vector<half> band_half(s.half ? band_pixels * n_channels : 0);
+    const SkyModel& model = *s.m.model;
+    const ThreeWavelengthRgb& three = three_wavelength_method();
+    std::atomic<int> failed_pixels{0};
+
+    for (int y0 = 0; y0 < height; y0 += kBandRows) {
+      const int rows = std::min(kBandRows, height - y0);
+      parallel_for(
+          static_cast<std::size_t>(rows),
+          [&](std::size_t r) {
+            const int y = y0 + static_cast<int>(r);
+            std::vector<ViewDirection> views;
+            std::vector<int> columns;
+            views.reserve(static_cast<std::size_t>(width));
+            for (int x = 0; x < width; ++x) {
+              SkyDirection d;
+              if (s.projection.direction(x, y, d)) {
+                views.push_back(d);
+                columns.push_back(x);
+              }
+            }
+            float* row = band_float.data() + r * static_cast<std::size_t>(width) * n_channels;
+            std::fill(row, row + static_cast<std::size_t>(width) * n_channels, 0.0f);
+            if (views.empty()) return;
+            SpectralBatch batch;
+            model.sky_radiance(*s.sun_state, s.viewpoint, views, batch);
+            for (std::size_t k = 0; k < views.size(); ++k) {
+              if (batch.status[k] != SampleStatus::ok) {
+                if (batch.status[k] != SampleStatus::view_below_horizon_unsupported)
+                  ++failed_pixels;
+                continue;
+              }
+              const auto l = batch.spectrum(k);
+              float* px = row + static_cast<std::size_t>(columns[k]) * n_channels;
+              if (s.channels == "spectral") {
+                for (std::size_t c = 0; c < n_channels; ++c)
+                  px[c] = static_cast<float>(l[s.m.indices[c]]);
+              } else if (s.method == "three") {
+                const LinearSrgb c =
+                    three.rgb(l[s.m.indices[2]], l[s.m.indices[1]], l[s.m.indices[0]]);
+                if (s.channels == "rgb") {
+                  px[0] = static_cast<float>(c.r), px[1] = static_cast<float>(c.g),
+                  px[2] = static_cast<float>(c.b);
+                } else {
+                  px[0] = static_cast<float>(kMaxLuminousEfficacy * linear_srgb_to_xyz(c).y);
+                }
+              } else {
+                const Xyz xyz = s.xyz->xyz(l);
+                if (s.channels == "rgb") {
+                  const LinearSrgb c = xyz_to_linear_srgb(xyz);
+                  px[0] = static_cast<float>(c.r), px[1] = static_cast<float>(c.g),
+                  px[2] = static_cast<float>(c.b);
+                } else {
+                  px[0] = static_cast<float>(kMaxLuminousEfficacy * xyz.y);
+                }
+              }
+            }
+          },
+          threads);
+
+      Imf::FrameBuffer frame;
+      const std::size_t x_stride = n_channels * sample_bytes;
+      const std::size_t y_stride = static_cast<std::size_t>(width) * x_stride;
+      char* base = s.half ? reinterpret_cast<char*>(band_half.data())
+                          : reinterpret_cast<char*>(band_float.data());
+      if (s.half) {
+        const std::size_t count =
+            static_cast<std::size_t>(rows) * static_cast<std::size_t>(width) * n_channels;
+        for (std::size_t i = 0; i < count; ++i) band_half[i] = half(band_float[i]);
+      }
+      // OpenEXR addresses pixel (x, y) at base + x * x_stride + y * y_stride: shift the base so
+      // that row y0 is the band's first row.
+      const std::ptrdiff_t shift =
+          -static_cast<std::ptrdiff_t>(y0) * static_cast<std::ptrdiff_t>(y_stride);
+      for (std::size_t c = 0; c < n_channels; ++c) {
+        frame.insert(names[c],
+                     Imf::Slice(type, base + shift + c * sample_bytes, x_stride, y_stride));
+      }
+      file.setFrameBuffer(frame);
+      file.writePixels(rows);
+    }
+    if (unanswered_pixels != nullptr)
+      *unanswered_pixels = static_cast<std::size_t>(failed_pixels.load());
+  } catch (const StreamAborted&) {
+    return false;
+  } catch (const std::exception& e) {
+    if (stream.aborted()) return false;
+    throw;
+  }
+  if (!stream.matches_sent_table()) {
+    throw std::logic_error("skydome: the EXR offset table sent differs from the one OpenEXR wrote");
+  }
+  return true;
+}
+
+}  // namespace clearsky::api

@@ -1,0 +1,56 @@
+// GET /v1/skydome: an OpenEXR image of the sky computed band by band in parallel and streamed
+// as it is computed, with memory bounded by one band (independent of the image size).
+//
+// | parameter  | values                         | default  | meaning |
+// |------------|--------------------------------|----------|-----------------------------------------|
+// | projection | fisheye, latlong, cubemap      | fisheye  | skydome_projection.h | | size       |
+// 8 .. max_skydome_size (even)   | 512      | width (and fisheye height; cube face)   | | channels
+// | rgb, luminance, spectral       | rgb      | R,G,B linear sRGB; Y in cd/m2; or one channel per
+// wavelength | | pixel_type | half, float                    | half for rgb, float otherwise | | |
+// method     | spectral, three (rgb only)     | spectral | as GET /v1/rgb | | wavelengths| list or
+// start:stop:step (spectral only) | the model's grid |                      | plus the sky
+// parameters of sky_request.h (model, sun or place and time, altitude, atmosphere). Spectral images
+// follow Fichet, Pacanowski and Wilkie 2021, "An OpenEXR Layout for Spectral Images" (JCGT 10(3)):
+// emissive channels "S0.<nm with comma decimals>nm" (e.g. S0.550,000000nm) in W/(m2.sr.nm),
+// attributes spectralLayoutVersion = "1.0" and emissiveUnits = "W.m^-2.sr^-1". Files are
+// uncompressed scan lines (the only layout whose offset table is known before the pixels, which
+// streaming needs). Directions the model does not answer (below the horizon for ground-only models,
+// outside the fisheye circle) are 0. prepare_skydome() checks everything (errors are ApiError,
+// before any byte is sent).
+#pragma once
+
+#include <functional>
+#include <memory>
+
+#include "api/http/api_types.h"
+#include "api/skydome/skydome_projection.h"
+
+namespace clearsky::api {
+
+class SkydomeRender {
+ public:
+  using Sink = std::function<bool(const char* data, std::size_t size)>;
+  struct Settings;
+
+  explicit SkydomeRender(std::shared_ptr<const Settings> settings)
+      : settings_(std::move(settings)) {}
+  // Computes and writes the whole file to sink; false when the sink refused data (client
+  // gone), in which case the computation stops. Throws on internal errors only.
+  // unanswered_pixels: directions the model should answer but gave no value for (a status
+  // other than ok or below-horizon), written as 0.
+  bool write(const Sink& sink, unsigned threads = 0,
+             std::size_t* unanswered_pixels = nullptr) const;
+  const std::string& model_id() const;
+  int width() const;
+  int height() const;
+
+ private:
+  std::shared_ptr<const Settings> settings_;
+};
+
+SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& request);
+
+// "S0.550,000000nm" for 550 nm (Fichet et al. 2021).
+std::string spectral_channel_name(double wavelength_nm);
+
+}  // namespace clearsky::api

@@ -1,0 +1,67 @@
+// The Haber model (Haber, Magnor and Seidel 2005, "Physically-based simulation of twilight
+// phenomena") as the 2016 study implemented it: descriptor, parameters and the model object.
+// Ground views only; the sun may be below the horizon (the model was made for twilight).
+//
+// | option                 | unit | default | range     | meaning                                         |
+// |------------------------|------|---------|-----------|-------------------------------------------------|
+// | azimuth_sectors        | -    | 72      | [12, 144] | n_phi (even); also sets ring width and shells   |
+// | layers                 | -    | 50      | [5, 200]  | layers of equal Rayleigh mass up to 35 km       |
+// | shell_stride           | -    | 4       | [1, 16]   | multiple scattering gathered on every n-th shell|
+// | scattering_orders      | -    | 4       | [1, 8]    | 1: single scattering only                       |
+// | sun_zenith_bucket_deg  | deg  | 0       | [0, 5]    | per-sun states shared within this width (0: exact) |
+// | sun_state_cache_size   | -    | 32      | [1, 1024] | per-sun states kept                             |
+#pragma once
+
+#include <memory>
+
+#include "models/core/sky_model.h"
+#include "models/core/sun_state_cache.h"
+#include "models/haber/haber_tables.h"
+
+namespace clearsky::haber {
+
+extern const ModelDescriptor kDescriptor;
+extern const ModelFactory kFactory;
+
+// The per-sun state: the sky dome of the sun's zenith bucket (shared with other suns of the
+// bucket) and the exact sun.
+class HaberSunState final : public SunState {
+ public:
+  HaberSunState(const SunPosition& sun, std::shared_ptr<const HaberDome> dome, double dome_sun_zenith_rad)
+      : SunState(sun), dome_(std::move(dome)), dome_sun_zenith_rad_(dome_sun_zenith_rad) {}
+  const HaberDome& dome() const { return *dome_; }
+  double dome_sun_zenith_rad() const { return dome_sun_zenith_rad_; }
+  std::size_t memory_bytes() const override { return sizeof(*this) + dome_->memory_bytes(); }
+
+ private:
+  std::shared_ptr<const HaberDome> dome_;
+  double dome_sun_zenith_rad_;
+};
+
+class HaberModel final : public SkyModel {
+ public:
+  static std::shared_ptr<const HaberModel> create(const ModelConfig& config, const PrecomputeContext& context = {});
+
+  const ModelDescriptor& descriptor() const override { return kDescriptor; }
+  std::size_t table_bytes() const override;
+  const HaberGrid& grid() const { return grid_; }
+  SunStateCacheStats cache_stats() const { return cache_->stats(); }
+
+ protected:
+  std::shared_ptr<const SunState> compute_sun_state(const SunPosition& sun,
+                                                    const PrecomputeContext& context) const override;
+  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint, std::span<const ViewDirection> views,
+                            SpectralBatch& out) const override;
+  Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
+
+ private:
+  HaberModel(ModelConfig config, const HaberSettings& settings);
+
+  HaberGrid grid_;
+  double bucket_width_rad_;
+  std::string cache_prefix_;
+  // The one shared, internally synchronised piece of the model: per-sun domes by bucket.
+  std::unique_ptr<SunStateCache<HaberDome>> cache_;
+};
+
+}  // namespace clearsky::haber

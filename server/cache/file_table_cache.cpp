@@ -1,0 +1,105 @@
+// Versioned, checksummed table files with atomic replacement.
+#include "server/cache/file_table_cache.h"
+
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "models/core/content_hash.h"
+
+namespace clearsky::server {
+
+namespace {
+
+constexpr char kMagic[8] = {'C', 'S', 'K', 'Y', 'T', 'B', 'L', '\n'};
+
+template <typename T>
+void put(std::string& out, T value) {
+  for (std::size_t i = 0; i < sizeof(T); ++i)
+    out.push_back(static_cast<char>((value >> (8 * i)) & 0xff));
+}
+
+template <typename T>
+bool get(std::string_view& in, T& value) {
+  if (in.size() < sizeof(T)) return false;
+  value = 0;
+  for (std::size_t i = 0; i < sizeof(T); ++i)
+    value |= static_cast<T>(static_cast<unsigned char>(in[i])) << (8 * i);
+  in.remove_prefix(sizeof(T));
+  return true;
+}
+
+}  // namespace
+
+FileTableCache::FileTableCache(std::filesystem::path directory) : directory_(std::move(directory)) {
+  std::filesystem::create_directories(directory_);
+}
+
+std::filesystem::path FileTableCache::path_of(const std::string& key) const {
+  return directory_ / (hex64(fnv1a_64(key)) + ".table");
+}
+
+std::optional<std::string> FileTableCache::load(const std::string& key) const {
+  auto result = [&]() -> std::optional<std::string> {
+    std::ifstream file(path_of(key), std::ios::binary);
+    if (!file) return std::nullopt;
+    std::ostringstream content;
+    content << file.rdbuf();
+    const std::string data = std::move(content).str();
+    std::string_view in(data);
+    if (in.size() < sizeof kMagic || std::memcmp(in.data(), kMagic, sizeof kMagic) != 0)
+      return std::nullopt;
+    in.remove_prefix(sizeof kMagic);
+    std::uint32_t version = 0, key_length = 0;
+    std::uint64_t payload_length = 0, checksum = 0;
+    if (!get(in, version) || version != kFormatVersion) return std::nullopt;
+    if (!get(in, key_length) || in.size() < key_length || in.substr(0, key_length) != key)
+      return std::nullopt;
+    in.remove_prefix(key_length);
+    if (!get(in, payload_length) || !get(in, checksum) || in.size() != payload_length)
+      return std::nullopt;
+    if (fnv1a_64(in) != checksum) {
+      spdlog::warn("table cache: checksum mismatch in {}, rebuilding", path_of(key).string());
+      return std::nullopt;
+    }
+    return std::string(in);
+  }();
+  if (observer_) observer_(result.has_value());
+  return result;
+}
+
+void FileTableCache::store(const std::string& key, std::string_view bytes) const {
+  const std::filesystem::path target = path_of(key);
+  const std::filesystem::path temporary = target.string() + ".tmp." + std::to_string(::getpid()) +
+                                          "." + std::to_string(temp_counter_.fetch_add(1));
+  std::string header(kMagic, sizeof kMagic);
+  put(header, kFormatVersion);
+  put(header, static_cast<std::uint32_t>(key.size()));
+  header += key;
+  put(header, static_cast<std::uint64_t>(bytes.size()));
+  put(header, fnv1a_64(bytes));
+  {
+    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+    file.write(header.data(), static_cast<std::streamsize>(header.size()));
+    file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    file.flush();
+    if (!file) {
+      spdlog::warn("table cache: cannot write {}", temporary.string());
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      return;
+    }
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, target, error);
+  if (error) {
+    spdlog::warn("table cache: cannot rename {} to {}: {}", temporary.string(), target.string(),
+                 error.message());
+    std::filesystem::remove(temporary, error);
+  }
+}
+
+}  // namespace clearsky::server

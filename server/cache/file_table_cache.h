@@ -1,0 +1,48 @@
+// The on-disk TableCache (models/core/precompute_context.h): one file per key under a
+// directory, named by the key's FNV-1a hash. A file is trusted only when its header matches:
+//
+//   offset  size  field
+//   0       8     magic "CSKYTBL\n"
+//   8       4     format version (little-endian uint32, kFormatVersion)
+//   12      4     key length K (uint32)
+//   16      K     the key itself (compared in full: a hash collision or a stale file is a miss)
+//   16+K    8     payload length N (uint64)
+//   24+K    8     FNV-1a 64 checksum of the payload
+//   32+K    N     payload
+//
+// A missing, truncated, stale or corrupt file is a miss (the model rebuilds and stores again,
+// replacing it). Writes go to a unique temporary file in the same directory, then rename(2)
+// replaces the entry atomically, so readers never see a partial file. Store failures are
+// logged and otherwise ignored (the cache is an optimisation).
+// Thread-safety: load() and store() may be called concurrently from any thread.
+#pragma once
+
+#include <atomic>
+#include <filesystem>
+#include <functional>
+
+#include "models/core/precompute_context.h"
+
+namespace clearsky::server {
+
+class FileTableCache final : public TableCache {
+ public:
+  static constexpr std::uint32_t kFormatVersion = 1;
+
+  // Creates directory when missing (std::filesystem_error when it cannot).
+  explicit FileTableCache(std::filesystem::path directory);
+
+  std::optional<std::string> load(const std::string& key) const override;
+  void store(const std::string& key, std::string_view bytes) const override;
+
+  std::filesystem::path path_of(const std::string& key) const;
+  // Called after each load with whether it hit (for metrics); set before concurrent use.
+  void set_observer(std::function<void(bool hit)> observer) { observer_ = std::move(observer); }
+
+ private:
+  std::filesystem::path directory_;
+  std::function<void(bool)> observer_;
+  mutable std::atomic<std::uint64_t> temp_counter_{0};
+};
+
+}  // namespace clearsky::server

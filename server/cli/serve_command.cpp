@@ -1,0 +1,163 @@
+// `clearsky serve`: the HTTP service. Options (or the same keys in the [serve] section of
+// `clearsky --config FILE serve`, an INI/TOML file) fill ServerConfig
+// (server/config/server_config.h). At start the default tables of every registered model are loaded
+// from --cache-dir or built in the background, with progress in the log; /healthz answers at once,
+// /readyz once they are ready. SIGINT/SIGTERM stop the server gracefully.
+#include <pthread.h>
+#include <spdlog/spdlog.h>
+
+#include <csignal>
+#include <filesystem>
+#include <thread>
+
+#include "models/colour/three_wavelength_rgb.h"
+#include "models/registry.h"
+#include "server/cache/file_table_cache.h"
+#include "server/cli/commands.h"
+#include "server/cli/database_option.h"
+#include "server/http/http_server.h"
+
+namespace clearsky::cli {
+
+namespace {
+
+void run_server(const server::ServerConfig& config) {
+  // Signals are taken by one thread with sigwait (a handler may not call into the server).
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+
+  // The database is opened (created and migrated by the storage layer) at start, so that a
+  // bad --db fails here rather than at the first request that needs it.
+  const storage::Database database = open_cli_database(config.db_path);
+  server::FileTableCache cache(config.cache_dir);
+  server::Metrics metrics;
+  cache.set_observer([&metrics](bool hit) { metrics.observe_cache_lookup(hit); });
+
+  server::TableStore::Options options;
+  options.capacity = config.table_capacity;
+  options.build_wait = std::chrono::milliseconds(config.build_wait_ms);
+  options.retry_after_s = config.retry_after_s;
+  options.builder_threads = config.builder_threads;
+  options.cache = &cache;
+  const auto registered = registered_models();
+  server::TableStore tables({registered.begin(), registered.end()}, options);
+  tables.set_build_observer([&metrics](const std::string& id, double seconds, bool from_cache) {
+    metrics.observe_build(id, seconds, from_cache);
+  });
+  tables.start_default_builds();
+  if (config.prebuild_three) {
+    // The paper's 3-wavelength colour method needs each model on its 3-point grid.
+    const ThreeWavelengthRgb three;
+    ModelConfig on_three_points;
+    on_three_points.wavelengths = three.grid();
+    for (const ModelFactory& f : tables.factories()) {
+      if (f.descriptor->min_wavelength_nm <= on_three_points.wavelengths[0] &&
+          f.descriptor->max_wavelength_nm >= on_three_points.wavelengths[2]) {
+        tables.prebuild(f, on_three_points);
+      }
+    }
+  }
+
+  server::HttpServer http(config, tables, metrics);
+  const int port = http.bind();
+  spdlog::info("clearsky serving on http://{}:{} ({} workers, {} models, cache {}, database {})",
+               config.host, port, config.worker_threads(), registered.size(), config.cache_dir,
+               config.db_path);
+
+  std::thread signal_thread([&] {
+    int received = 0;
+    sigwait(&signals, &received);
+    spdlog::info("signal {}: stopping", received);
+    http.stop();
+  });
+  std::atomic<bool> done{false};
+  std::thread progress_thread([&] {
+    while (!done && !tables.ready()) {
+      for (int i = 0; i < 50 && !done; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      for (const ModelFactory& f : tables.factories()) {
+        const api::ModelState s = tables.default_state(f);
+        if (s.status == api::ModelState::Status::precomputing) {
+          spdlog::info("tables: {} {:.0f}% ({})", f.descriptor->id, 100.0 * s.progress, s.stage);
+        }
+      }
+    }
+    if (tables.ready()) spdlog::info("tables: every model is ready");
+  });
+
+  http.listen();
+  done = true;
+  progress_thread.join();
+  // The signal thread waits for a signal; after a stop from elsewhere, send it one.
+  pthread_kill(signal_thread.native_handle(), SIGTERM);
+  signal_thread.join();
+}
+
+}  // namespace
+
+void add_serve_command(CLI::App& app) {
+  auto* command = app.add_subcommand("serve", "Serve the HTTP API");
+  auto config = std::make_shared<server::ServerConfig>();
+  // The configuration file belongs to the top-level command (CLI11 reads it there); the serve
+  // options are its [serve] section.
+  app.set_config(
+      "--config", "",
+      "INI/TOML file; `clearsky serve` reads its [serve] section (keys: the long option names)");
+  command->add_option("--host", config->host, "Address to listen on")->capture_default_str();
+  command->add_option("--port", config->port, "Port (0: any free port)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 65535));
+  add_database_option(*command, config->db_path);
+  command->add_option("--cache-dir", config->cache_dir, "Disk cache of model tables")
+      ->capture_default_str();
+  command
+      ->add_option("--threads", config->threads,
+                   "HTTP worker threads (0: 32 per core, at least 64)")
+      ->capture_default_str();
+  command->add_option("--max-queued", config->max_queued, "Connections waiting for a worker")
+      ->capture_default_str();
+  command
+      ->add_option("--listen-backlog", config->listen_backlog, "Pending connections before accept")
+      ->capture_default_str();
+  command->add_option("--payload-max-bytes", config->payload_max_bytes, "Request body limit")
+      ->capture_default_str();
+  command->add_option("--read-timeout", config->read_timeout_s, "Socket read timeout, s")
+      ->capture_default_str();
+  command->add_option("--write-timeout", config->write_timeout_s, "Socket write timeout, s")
+      ->capture_default_str();
+  command
+      ->add_option("--keep-alive-max-count", config->keep_alive_max_count,
+                   "Requests per connection")
+      ->capture_default_str();
+  command
+      ->add_option("--keep-alive-timeout", config->keep_alive_timeout_s,
+                   "Idle keep-alive timeout, s")
+      ->capture_default_str();
+  command->add_option("--max-views", config->max_views, "Views per batch")->capture_default_str();
+  command->add_option("--max-wavelengths", config->max_wavelengths, "Wavelengths per request")
+      ->capture_default_str();
+  command->add_option("--max-skydome-size", config->max_skydome_size, "Skydome size limit, pixels")
+      ->capture_default_str();
+  command
+      ->add_option("--table-capacity", config->table_capacity,
+                   "Non-default table configurations kept")
+      ->capture_default_str();
+  command
+      ->add_option("--build-wait-ms", config->build_wait_ms,
+                   "Wait for a table build before 503, ms")
+      ->capture_default_str();
+  command->add_option("--retry-after", config->retry_after_s, "Retry-After of a 503, s")
+      ->capture_default_str();
+  command->add_option("--builder-threads", config->builder_threads, "Concurrent table builds")
+      ->capture_default_str();
+  command
+      ->add_option("--prebuild-three", config->prebuild_three,
+                   "Also build the 3-wavelength tables of rgb method=three at start")
+      ->capture_default_str();
+  command->callback([config] { run_server(*config); });
+}
+
+}  // namespace clearsky::cli

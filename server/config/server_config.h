@@ -1,0 +1,60 @@
+// The server's configuration: command-line options of `clearsky serve` (or the same keys in
+// its --config file), with the limits the HTTP layer enforces (STYLE.md habit 14).
+//
+// | option                | unit  | default     | meaning |
+// |-----------------------|-------|-------------|--------------------------------------------------------|
+// | host, port            |       | 127.0.0.1, 8080 | where to listen (port 0: any free port) | |
+// db                    | path  | var/clearsky.db | SQLite database (its parent directory is
+// created)  | | cache_dir             | path  | var/cache   | disk cache of model tables | |
+// threads               |       | 0           | HTTP worker threads; 0: 32 per core, at least 64
+// (cpp-httplib holds a worker per keep-alive connection, so workers are connection slots;
+// computations parallelise over the cores themselves) | | max_queued            |       | 256 |
+// accepted connections waiting for a worker (the acceptor waits beyond) | | listen_backlog        |
+// | 1024        | connections the kernel holds before accept (listen(2))  | | payload_max_bytes |
+// byte  | 8 MiB       | request body limit (413 beyond)                        | |
+// read/write_timeout_s  | s     | 10 / 30     | socket timeouts | | keep_alive_max_count  |       |
+// 1000        | requests per keep-alive connection                     | | keep_alive_timeout_s  |
+// s     | 5           | idle keep-alive connection lifetime                    | | max_views | |
+// 10000       | views per radiance/rgb batch (413 beyond)              | | max_wavelengths       |
+// | 2000        | wavelengths per request (413 beyond)                   | | max_skydome_size |
+// pixel | 4096        | skydome size limit (413 beyond)                        | | table_capacity
+// |       | 16          | non-default table configurations kept / pending        | | build_wait_ms
+// | ms    | 2000        | how long a request waits for a table build before 503  | | retry_after_s
+// | s     | 5           | Retry-After of a 503                                   | |
+// builder_threads       |       | 1           | concurrent builds of the tables queued at start |
+// | prebuild_three        |       | true        | also build each model on the 3-wavelength grid of
+// /v1/rgb?method=three at start (after the defaults) |
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+namespace clearsky::server {
+
+struct ServerConfig {
+  std::string host = "127.0.0.1";
+  int port = 8080;
+  std::string db_path = "var/clearsky.db";
+  std::string cache_dir = "var/cache";
+  unsigned threads = 0;
+  std::size_t max_queued = 256;
+  int listen_backlog = 1024;
+  std::size_t payload_max_bytes = 8u << 20;
+  int read_timeout_s = 10;
+  int write_timeout_s = 30;
+  std::size_t keep_alive_max_count = 1000;
+  int keep_alive_timeout_s = 5;
+  std::size_t max_views = 10000;
+  std::size_t max_wavelengths = 2000;
+  int max_skydome_size = 4096;
+  std::size_t table_capacity = 16;
+  int build_wait_ms = 2000;
+  int retry_after_s = 5;
+  unsigned builder_threads = 1;
+  bool prebuild_three = true;
+
+  // The worker count threads resolves to.
+  unsigned worker_threads() const;
+};
+
+}  // namespace clearsky::server

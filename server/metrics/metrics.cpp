@@ -1,0 +1,57 @@
+// Metric families and their exposition.
+#include "server/metrics/metrics.h"
+
+#include <prometheus/text_serializer.h>
+
+namespace clearsky::server {
+
+Metrics::Metrics()
+    : registry_(std::make_shared<prometheus::Registry>()),
+      requests_(&prometheus::BuildCounter()
+                     .Name("clearsky_http_requests_total")
+                     .Help("HTTP requests by endpoint, model and status")
+                     .Register(*registry_)),
+      durations_(&prometheus::BuildHistogram()
+                      .Name("clearsky_http_request_duration_seconds")
+                      .Help("HTTP request latency (to the last byte) by endpoint and model")
+                      .Register(*registry_)),
+      table_bytes_(&prometheus::BuildGauge()
+                        .Name("clearsky_table_bytes")
+                        .Help("Memory held by ready model tables")
+                        .Register(*registry_)),
+      cache_lookups_(&prometheus::BuildCounter()
+                          .Name("clearsky_table_cache_lookups_total")
+                          .Help("Disk table cache lookups by result")
+                          .Register(*registry_)),
+      build_seconds_(
+          &prometheus::BuildGauge()
+               .Name("clearsky_table_build_seconds")
+               .Help("Duration of the last table build or cache load by model and source")
+               .Register(*registry_)) {}
+
+void Metrics::observe_request(const std::string& endpoint, const std::string& model, int status,
+                              double seconds) {
+  const std::string model_label = model.empty() ? "none" : model;
+  requests_
+      ->Add({{"endpoint", endpoint}, {"model", model_label}, {"status", std::to_string(status)}})
+      .Increment();
+  static const prometheus::Histogram::BucketBoundaries kBuckets = {
+      0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1.0, 2.5, 5.0, 10.0};
+  durations_->Add({{"endpoint", endpoint}, {"model", model_label}}, kBuckets).Observe(seconds);
+}
+
+void Metrics::observe_cache_lookup(bool hit) {
+  cache_lookups_->Add({{"result", hit ? "hit" : "miss"}}).Increment();
+}
+
+void Metrics::observe_build(const std::string& model, double seconds, bool from_cache) {
+  build_seconds_->Add({{"model", model}, {"source", from_cache ? "cache" : "built"}}).Set(seconds);
+}
+
+std::string Metrics::scrape(const std::map<std::string, std::size_t>& table_bytes) {
+  for (const auto& [model, bytes] : table_bytes)
+    table_bytes_->Add({{"model", model}}).Set(static_cast<double>(bytes));
+  return prometheus::TextSerializer().Serialize(registry_->Collect());
+}
+
+}  // namespace clearsky::server

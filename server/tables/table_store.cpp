@@ -1,0 +1,331 @@
+// Single-flight builds of model tables, with LRU eviction of non-default configurations.
+#include "server/tables/table_store.h"
+
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "api/error/api_error.h"
+
+namespace clearsky::server {
+
+struct TableStore::Entry {
+  const ModelFactory* factory = nullptr;
+  ModelConfig config;
+  std::string key;
+  bool pinned = false;
+  api::ModelState::Status status = api::ModelState::Status::queued;
+  std::atomic<double> progress{0.0};
+  std::string stage;  // guarded by the store's mutex
+  std::string error;
+  std::shared_ptr<const SkyModel> model;
+  double seconds = 0;
+  bool from_cache = false;
+  std::uint64_t last_used = 0;
+};
+
+namespace {
+
+// Counts the cache traffic of one build, to tell a cache load from a build.
+class ObservedCache final : public TableCache {
+ public:
+  explicit ObservedCache(const TableCache* inner) : inner_(inner) {}
+  std::optional<std::string> load(const std::string& key) const override {
+    auto value = inner_->load(key);
+    (value ? hits : misses)++;
+    return value;
+  }
+  void store(const std::string& key, std::string_view bytes) const override {
+    ++stores;
+    inner_->store(key, bytes);
+  }
+  mutable std::atomic<int> hits{0}, misses{0}, stores{0};
+
+ private:
+  const TableCache* inner_;
+};
+
+const std::string& default_canonical_string() {
+  static const std::string canonical = ModelConfig{}.canonical_string();
+  return canonical;
+}
+
+std::string entry_key(const ModelFactory& factory, const std::string& canonical) {
+  return factory.descriptor->id + "|" + factory.descriptor->version + "|" + canonical;
+}
+
+std::string entry_key(const ModelFactory& factory, const ModelConfig& config) {
+  return entry_key(factory, config.canonical_string());
+}
+
+}  // namespace
+
+TableStore::TableStore(std::vector<ModelFactory> factories, Options options)
+    : factories_(std::move(factories)), options_(options) {
+  for (unsigned i = 0; i < std::max(1u, options_.builder_threads); ++i)
+    builders_.emplace_back([this] { builder_loop(); });
+}
+
+TableStore::~TableStore() {
+  std::vector<OnDemandBuild> on_demand;
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+    on_demand.swap(on_demand_);
+  }
+  changed_.notify_all();
+  for (auto& t : builders_) t.join();
+  for (auto& b : on_demand) b.thread.join();
+}
+
+void TableStore::launch_locked(const std::shared_ptr<Entry>& entry) const {
+  // Join the builds that have finished, so that threads do not accumulate.
+  std::erase_if(on_demand_, [](OnDemandBuild& b) {
+    if (!b.done->load()) return false;
+    b.thread.join();
+    return true;
+  });
+  entry->status = api::ModelState::Status::precomputing;
+  auto done = std::make_shared<std::atomic<bool>>(false);
+  on_demand_.push_back({std::thread([this, entry, done] {
+                          build(*entry);
+                          changed_.notify_all();
+                          *done = true;
+                        }),
+                        done});
+}
+
+std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory& factory,
+                                                             const ModelConfig& config,
+                                                             const std::string& key,
+                                                             bool pinned) const {
+  // Caller holds mutex_.
+  auto it = entries_.find(key);
+  if (it != entries_.end()) {
+    if (pinned) it->second->pinned = true;
+    it->second->last_used = ++clock_;
+    return it->second;
+  }
+  if (!pinned) {
+    std::size_t pending = 0;
+    for (const auto& [k, e] : entries_) {
+      pending += !e->pinned && e->status != api::ModelState::Status::ready &&
+                 e->status != api::ModelState::Status::failed;
+    }
+    if (pending >= options_.capacity) {
+      throw api::not_ready(factory.descriptor->id,
+                           "too many table builds are pending; try again later",
+                           options_.retry_after_s);
+    }
+  }
+  auto entry = std::make_shared<Entry>();
+  entry->factory = &factory;
+  entry->config = config;
+  entry->key = key;
+  entry->pinned = pinned;
+  entry->last_used = ++clock_;
+  entries_.emplace(key, entry);
+  if (pinned) {
+    queue_.push_back(entry);
+    changed_.notify_all();
+  } else {
+    launch_locked(entry);
+  }
+  return entry;
+}
+
+std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory,
+                                                  const ModelConfig& config) const {
+  try {
+    validate_config(*factory.descriptor, config);
+  } catch (const std::invalid_argument& e) {
+    throw api::from_invalid_argument(e);
+  }
+  // The default configuration (most requests) skips building its canonical text.
+  static const AtmosphereParameters default_atmosphere;
+  static const WavelengthGrid default_grid = ModelConfig{}.wavelengths;
+  const bool plain = config.options.empty() && config.atmosphere == default_atmosphere &&
+                     config.wavelengths == default_grid;
+  const std::string canonical = plain ? default_canonical_string() : config.canonical_string();
+  const bool is_default = canonical == default_canonical_string();
+  const std::string key = entry_key(factory, canonical);
+  std::unique_lock lock(mutex_);
+  std::shared_ptr<Entry> entry = find_or_queue(factory, config, key, is_default);
+  bool launched_now = false;
+  if (entry->status == api::ModelState::Status::queued) {
+    // A request needs a queued default: build it now rather than after the queue.
+    std::erase(queue_, entry);
+    launch_locked(entry);
+    launched_now = true;
+  }
+  const auto settled = [&] {
+    return entry->status == api::ModelState::Status::ready ||
+           entry->status == api::ModelState::Status::failed;
+  };
+  // Wait for a build that may be short (a non-default one, or one started by this request); a
+  // default build already under way since start is long: answer 503 at once.
+  if (!settled() && (launched_now || !is_default))
+    changed_.wait_for(lock, options_.build_wait, settled);
+  if (entry->status == api::ModelState::Status::ready) return entry->model;
+  if (entry->status == api::ModelState::Status::failed) {
+    const std::string error = entry->error;
+    if (!entry->pinned) entries_.erase(entry->key);  // a later request tries again
+    throw api::ApiError(500, "precomputation_failed", "model",
+                        "model " + factory.descriptor->id + ": precomputation failed: " + error);
+  }
+  std::ostringstream message;
+  message << "its tables for this configuration are being built ("
+          << (entry->status == api::ModelState::Status::queued ? "queued" : "in progress") << ", "
+          << std::lround(100.0 * entry->progress.load()) << "% done)";
+  throw api::not_ready(factory.descriptor->id, message.str(), options_.retry_after_s);
+}
+
+std::shared_ptr<const SunState> TableStore::sun_state(const std::shared_ptr<const SkyModel>& model,
+                                                      const SunPosition& sun) const {
+  const SunKey key{model.get(), sun.zenith_rad, sun.azimuth_rad};
+  {
+    std::lock_guard lock(sun_mutex_);
+    const auto it = sun_states_.find(key);
+    if (it != sun_states_.end() && it->second.model.lock() == model) return it->second.state;
+  }
+  // Computed outside the lock: concurrent first requests may compute it twice, which is
+  // harmless (the states are equal and immutable).
+  auto state = model->prepare_sun(sun);
+  std::lock_guard lock(sun_mutex_);
+  if (sun_states_.size() >= kSunStates) sun_states_.clear();
+  sun_states_[key] = {model, state};
+  return state;
+}
+
+api::ModelState TableStore::default_state(const ModelFactory& factory) const {
+  std::lock_guard lock(mutex_);
+  api::ModelState state;
+  const auto it = entries_.find(entry_key(factory, default_canonical_string()));
+  if (it == entries_.end()) return state;
+  const Entry& e = *it->second;
+  state.status = e.status;
+  state.progress =
+      e.status == api::ModelState::Status::ready ? 1.0 : std::clamp(e.progress.load(), 0.0, 1.0);
+  state.stage = e.stage;
+  state.error = e.error;
+  state.precompute_seconds = e.seconds;
+  state.table_bytes = e.model ? e.model->table_bytes() : 0;
+  state.loaded_from_cache = e.from_cache;
+  return state;
+}
+
+void TableStore::start_default_builds() {
+  std::lock_guard lock(mutex_);
+  for (const ModelFactory& f : factories_)
+    find_or_queue(f, ModelConfig{}, entry_key(f, default_canonical_string()), true);
+}
+
+void TableStore::prebuild(const ModelFactory& factory, const ModelConfig& config) {
+  validate_config(*factory.descriptor, config);
+  std::lock_guard lock(mutex_);
+  find_or_queue(factory, config, entry_key(factory, config), true);
+}
+
+bool TableStore::ready() const {
+  std::lock_guard lock(mutex_);
+  for (const ModelFactory& f : factories_) {
+    const auto it = entries_.find(entry_key(f, default_canonical_string()));
+    if (it == entries_.end() || it->second->status != api::ModelState::Status::ready) return false;
+  }
+  return true;
+}
+
+std::map<std::string, std::size_t> TableStore::table_bytes() const {
+  std::lock_guard lock(mutex_);
+  std::map<std::string, std::size_t> bytes;
+  for (const ModelFactory& f : factories_) bytes[f.descriptor->id] = 0;
+  for (const auto& [key, e] : entries_) {
+    if (e->model) bytes[e->factory->descriptor->id] += e->model->table_bytes();
+  }
+  return bytes;
+}
+
+void TableStore::builder_loop() {
+  while (true) {
+    std::shared_ptr<Entry> entry;
+    {
+      std::unique_lock lock(mutex_);
+      changed_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
+      if (stopping_) return;
+      entry = queue_.front();
+      queue_.pop_front();
+      entry->status = api::ModelState::Status::precomputing;
+    }
+    build(*entry);
+    changed_.notify_all();
+  }
+}
+
+void TableStore::build(Entry& entry) const {
+  const std::string& id = entry.factory->descriptor->id;
+  ObservedCache cache(options_.cache);
+  PrecomputeContext context;
+  context.progress = [this, &entry](double fraction, std::string_view stage) {
+    entry.progress = fraction;
+    std::lock_guard lock(mutex_);
+    entry.stage = std::string(stage);
+  };
+  context.cancel = &stopping_;
+  context.cache = options_.cache ? &cache : nullptr;
+  context.threads = options_.threads_per_build;
+  spdlog::info("tables: building {} ({})", id, entry.key);
+  const auto start = std::chrono::steady_clock::now();
+  std::shared_ptr<const SkyModel> model;
+  std::string error;
+  try {
+    model = entry.factory->create(entry.config, context);
+    if (!model) error = "the factory returned no model";
+  } catch (const PrecomputeCancelled&) {
+    error = "cancelled";
+  } catch (const std::exception& e) {
+    error = e.what();
+  } catch (...) {
+    error = "unknown error";
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const bool from_cache = cache.hits > 0 && cache.misses == 0 && cache.stores == 0;
+  {
+    std::lock_guard lock(mutex_);
+    entry.seconds = seconds;
+    entry.from_cache = from_cache;
+    if (model) {
+      entry.model = std::move(model);
+      entry.status = api::ModelState::Status::ready;
+      entry.progress = 1.0;
+    } else {
+      entry.error = error;
+      entry.status = api::ModelState::Status::failed;
+    }
+    evict_locked();
+  }
+  if (error.empty()) {
+    spdlog::info("tables: {} ready in {:.3f} s ({}, {} bytes)", id, seconds,
+                 from_cache ? "from cache" : "built", entry.model->table_bytes());
+    if (observer_) observer_(id, seconds, from_cache);
+  } else {
+    spdlog::error("tables: {} failed after {:.3f} s: {}", id, seconds, error);
+  }
+}
+
+void TableStore::evict_locked() const {
+  while (true) {
+    std::size_t unpinned = 0;
+    std::shared_ptr<Entry> oldest;
+    for (const auto& [key, e] : entries_) {
+      if (e->pinned || e->status != api::ModelState::Status::ready) continue;
+      ++unpinned;
+      if (!oldest || e->last_used < oldest->last_used) oldest = e;
+    }
+    if (unpinned <= options_.capacity || !oldest) return;
+    entries_.erase(oldest->key);
+  }
+}
+
+}  // namespace clearsky::server
