@@ -7,8 +7,6 @@
 #include "api/error/api_error.h"
 
 namespace clearsky::server {
-namespace {
-
 std::shared_ptr<spdlog::logger> audit_logger() {
   static std::shared_ptr<spdlog::logger> logger = [] {
     if (auto existing = spdlog::get("audit")) return existing;
@@ -16,8 +14,6 @@ std::shared_ptr<spdlog::logger> audit_logger() {
   }();
   return logger;
 }
-
-}  // namespace
 
 bool constant_time_equal(std::string_view expected, std::string_view candidate) {
   // Every byte of expected is visited whatever candidate holds; a length difference is

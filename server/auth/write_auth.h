@@ -7,11 +7,19 @@
 // token itself). Thread-safety: immutable after construction.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 
+namespace spdlog {
+class logger;
+}
+
 namespace clearsky::server {
+
+// The spdlog logger "audit" (created on first use) that records every write.
+std::shared_ptr<spdlog::logger> audit_logger();
 
 // True when a and b are equal, in time independent of their content.
 bool constant_time_equal(std::string_view expected, std::string_view candidate);
