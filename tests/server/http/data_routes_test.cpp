@@ -187,6 +187,10 @@ TEST_F(DataRoutes, JobLifecycle) {
                           "application/json");
   EXPECT_EQ(bad->status, 400);
   EXPECT_EQ(body(bad)["error"]["parameter"], "schedule");
+  // A JSON body sent form-encoded (curl -d) is read as JSON all the same.
+  const auto form = c.Post("/v1/jobs", R"({"name": "form", "schedule": "0 4 * * *", "dataset": "d"})",
+                           "application/x-www-form-urlencoded");
+  EXPECT_EQ(form->status, 201) << form->body;
   EXPECT_EQ(c.Delete(("/v1/jobs/" + id).c_str())->status, 200);
   EXPECT_EQ(c.Get(("/v1/jobs/" + id).c_str())->status, 404);
 }
