@@ -13,6 +13,18 @@
 
 namespace clearsky::api {
 
+int remove_stale_uploads(const std::filesystem::path& folder) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error)) return 0;
+  int removed = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    if (entry.path().filename().string().rfind("upload-", 0) == 0 &&
+        std::filesystem::remove(entry.path(), error))
+      ++removed;
+  }
+  return removed;
+}
+
 UploadSpool::UploadSpool(const std::filesystem::path& folder, std::size_t max_bytes,
                          std::string_view suffix)
     : max_bytes_(max_bytes) {

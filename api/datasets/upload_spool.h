@@ -11,6 +11,10 @@
 
 namespace clearsky::api {
 
+// Removes the spool files a killed process left in folder (at start-up, before any upload);
+// returns how many.
+int remove_stale_uploads(const std::filesystem::path& folder);
+
 class UploadSpool {
  public:
   // Creates the folder if needed and an empty file in it. suffix (e.g. ".7z") helps tools

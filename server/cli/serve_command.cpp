@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <thread>
 
+#include "api/datasets/upload_spool.h"
 #include "models/colour/three_wavelength_rgb.h"
 #include "models/registry.h"
 #include "server/cache/file_table_cache.h"
@@ -83,6 +84,8 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   server::DataServices data;
   data.db_path = db_path;
   data.upload_dir = (db_path.has_parent_path() ? db_path.parent_path() : std::filesystem::path(".")) / "uploads";
+  if (const int stale = api::remove_stale_uploads(data.upload_dir); stale > 0)
+    spdlog::info("removed {} upload files left by an earlier process", stale);
   data.upload_max_bytes = config.payload_max_bytes;
   data.pool = &evaluations;
   data.auth = &auth;

@@ -165,5 +165,20 @@ TEST(DatasetsApi, SameLabelWithOtherContentIs409) {
   EXPECT_EQ(list_datasets(db)[0]["captures"], 1);
 }
 
+TEST(UploadSpool, StaleFilesOfAKilledProcessAreRemovedAtStartUp) {
+  storage::testing::TempDir dir;
+  const auto folder = dir.path / "uploads";
+  {
+    UploadSpool kept(folder, 100);
+    kept.append("abc");
+    // A killed process never runs the destructor: copy the file aside as it would remain.
+    std::filesystem::copy_file(kept.finish(), folder / "upload-left.7z");
+  }
+  std::ofstream(folder / "other.txt") << "not an upload";
+  EXPECT_EQ(remove_stale_uploads(folder), 1);
+  EXPECT_TRUE(std::filesystem::exists(folder / "other.txt"));
+  EXPECT_EQ(remove_stale_uploads(dir.path / "absent"), 0);
+}
+
 }  // namespace
 }  // namespace clearsky::api
