@@ -10,6 +10,7 @@
 #include "api/error/api_error.h"
 #include "api/parse/invalid_parameter.h"
 #include "api/parse/iso8601_time.h"
+#include "api/request/sky_request.h"
 #include "storage/repositories/dataset_repository.h"
 #include "storage/repositories/evaluation_run_repository.h"
 
@@ -46,19 +47,6 @@ bool same_setup(const storage::RunRecord& a, const storage::RunRecord& b) {
          a.min_wavelength_nm == b.min_wavelength_nm && a.max_wavelength_nm == b.max_wavelength_nm;
 }
 
-// The atmosphere parameters by their request names (the query parameters of the sky
-// endpoints).
-bool set_parameter(AtmosphereParameters& a, const std::string& name, double value) {
-  if (name == "alpha") a.angstrom_alpha = value;
-  else if (name == "beta") a.angstrom_beta = value;
-  else if (name == "g") a.mie_phase_g = value;
-  else if (name == "turbidity") a.turbidity = value;
-  else if (name == "albedo") a.ground_albedo = value;
-  else if (name == "mie_single_scattering_albedo") a.mie_single_scattering_albedo = value;
-  else return false;
-  return true;
-}
-
 }  // namespace
 
 std::int64_t parse_id(const std::string& text, const std::string& parameter) {
@@ -81,9 +69,9 @@ ModelConfig parse_evaluation_parameters(const nlohmann::json& parameters) {
     }
     if (!value.is_number())
       throw invalid_parameter(name, "must be a number");
-    if (!set_parameter(config.atmosphere, name, value.get<double>()))
-      throw unknown_parameter(name, "the evaluation parameters (alpha, beta, g, turbidity, "
-                                    "albedo, mie_single_scattering_albedo)");
+    if (!set_atmosphere_parameter(config.atmosphere, name, value.get<double>()))
+      throw unknown_parameter(name, "the evaluation parameters (the atmosphere parameters of "
+                                    "the sky endpoints: alpha, beta, g, turbidity, albedo, ...)");
   }
   try {
     config.atmosphere.validate();
