@@ -157,6 +157,28 @@ TEST_F(DataRoutes, UploadShowEvaluateAndDelete) {
   EXPECT_EQ(c.Get(run_path.c_str())->status, 404);  // runs go with their dataset
 }
 
+TEST_F(DataRoutes, ImportFromAServerSidePath) {
+  CLEARSKY_REQUIRE_SHARED_DATA(kArchive);
+  start(std::string("t0ken"));
+  const std::string archive = (clearsky::testing::shared_data_dir() / kArchive).string();
+  const httplib::Params params{{"name", "local"}, {"path", archive}};
+  auto c = client("t0ken");
+  const auto r = c.Post(("/v1/datasets?" + httplib::detail::params_to_query_str(params)).c_str(),
+                        "", "application/octet-stream");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 201) << r->body;
+  EXPECT_EQ(body(r)["added"].size(), 1u);
+  // Both a path and a body: refused; a missing path: 400 and nothing created.
+  EXPECT_EQ(c.Post(("/v1/datasets?" + httplib::detail::params_to_query_str(params)).c_str(), "x",
+                   "application/octet-stream")
+                ->status,
+            400);
+  EXPECT_EQ(c.Post("/v1/datasets?name=gone&path=/nonexistent/x.7z", "", "application/octet-stream")
+                ->status,
+            400);
+  EXPECT_EQ(body(c.Get("/v1/datasets")).size(), 1u);
+}
+
 TEST_F(DataRoutes, UploadAboveTheLimitIs413AndLeavesNothing) {
   start(std::string("t0ken"), 4096);
   const auto r = client("t0ken").Post("/v1/datasets?name=big", std::string(100000, 'x'),
