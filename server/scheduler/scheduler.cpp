@@ -46,7 +46,16 @@ TickReport Scheduler::tick(std::int64_t now_unix_s) {
       jobs.set_next_run(job.id, next_text);
       continue;
     }
-    const double due_s = api::parse_iso8601_time(*job.next_run_utc, "next_run").unix_time_utc_s;
+    double due_s = 0;
+    try {
+      due_s = api::parse_iso8601_time(*job.next_run_utc, "next_run").unix_time_utc_s;
+    } catch (const std::invalid_argument& e) {
+      // A next run this program cannot read is replaced, not run.
+      spdlog::error("job {} ({}): next run '{}': {}; recomputed", job.id, job.name,
+                    *job.next_run_utc, e.what());
+      jobs.set_next_run(job.id, next_text);
+      continue;
+    }
     if (due_s > static_cast<double>(now_unix_s)) continue;
     {
       std::lock_guard lock(in_flight_->mutex);

@@ -151,6 +151,16 @@ TEST(Scheduler, AJobDueDuringDowntimeRunsOnceAfterRestart) {
   EXPECT_EQ(*f.record(id).next_run_utc, "2026-11-22T12:00:00Z");
 }
 
+TEST(Scheduler, AnUnreadableNextRunIsRecomputedNotRun) {
+  Fixture f;
+  const std::int64_t id = f.job("0 * * * *");
+  storage::JobRepository(f.db).set_next_run(id, std::string("soon"));
+  api::EvaluationPool pool(f.opener, factories());
+  Scheduler scheduler(f.opener, pool, "test");
+  EXPECT_EQ(scheduler.tick(kT0 + 600).started, 0);
+  EXPECT_EQ(*f.record(id).next_run_utc, "2026-11-21T12:00:00Z");
+}
+
 TEST(Scheduler, StartAndStopTheThread) {
   Fixture f;
   api::EvaluationPool pool(f.opener, factories());
