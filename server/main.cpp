@@ -10,7 +10,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("clearsky ") + CLEARSKY_VERSION);
   app.require_subcommand(1);
   clearsky::cli::add_models_command(app);
-  clearsky::cli::add_serve_command(app);
+  clearsky::cli::add_serve_command(app, CLEARSKY_VERSION);
   clearsky::cli::add_sun_command(app);
   clearsky::cli::add_import_command(app);
   clearsky::cli::add_datasets_command(app);

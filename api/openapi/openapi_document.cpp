@@ -1,6 +1,8 @@
 // The OpenAPI document, built once.
 #include "api/openapi/openapi_document.h"
 
+#include "api/openapi/data_paths.h"
+
 #include <string>
 #include <vector>
 
@@ -224,6 +226,7 @@ json build() {
         {"summary", "An EXR image of the sky"}, {"parameters", p}, {"responses", responses(ok)}};
   }
 
+  add_data_paths(paths);
   return {{"openapi", "3.0.3"},
           {"info",
            {{"title", "clearsky"},
@@ -236,7 +239,8 @@ json build() {
              "are errors naming the parameter; NaN is never sent."}}},
           {"paths", paths},
           {"components",
-           {{"schemas",
+           {{"securitySchemes", {{"bearer", {{"type", "http"}, {"scheme", "bearer"}}}}},
+            {"schemas",
              {{"Error",
                {{"type", "object"},
                 {"required", json::array({"error"})},

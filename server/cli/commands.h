@@ -9,7 +9,7 @@
 namespace clearsky::cli {
 
 void add_models_command(CLI::App& app);
-void add_serve_command(CLI::App& app);
+void add_serve_command(CLI::App& app, const std::string& software_version);
 void add_sun_command(CLI::App& app);
 void add_import_command(CLI::App& app);
 void add_datasets_command(CLI::App& app);

@@ -7,21 +7,25 @@
 #include <spdlog/spdlog.h>
 
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <thread>
 
+#include "api/datasets/upload_spool.h"
 #include "models/colour/three_wavelength_rgb.h"
 #include "models/registry.h"
 #include "server/cache/file_table_cache.h"
 #include "server/cli/commands.h"
 #include "server/cli/database_option.h"
 #include "server/http/http_server.h"
+#include "server/scheduler/scheduler.h"
+#include "storage/repositories/evaluation_run_repository.h"
 
 namespace clearsky::cli {
 
 namespace {
 
-void run_server(const server::ServerConfig& config) {
+void run_server(const server::ServerConfig& config, const std::string& software_version) {
   // Signals are taken by one thread with sigwait (a handler may not call into the server).
   sigset_t signals;
   sigemptyset(&signals);
@@ -61,7 +65,37 @@ void run_server(const server::ServerConfig& config) {
     }
   }
 
+  // The data endpoints: runs a crash interrupted are marked failed first, then evaluations go
+  // to their own workers and the scheduler resumes from the jobs table.
+  {
+    storage::Database db = storage::Database::open(config.db_path);
+    const int interrupted = storage::EvaluationRunRepository(db).fail_unfinished(
+        "interrupted: the server stopped during the run");
+    if (interrupted > 0) spdlog::warn("{} evaluation runs were interrupted; marked failed", interrupted);
+  }
+  const std::filesystem::path db_path = config.db_path;
+  const auto open_database = [db_path] { return storage::Database::open(db_path); };
+  api::EvaluationPool evaluations(open_database, registered,
+                                  {config.evaluation_workers, config.evaluation_queue, 1});
+  const server::WriteAuthorizer auth =
+      server::WriteAuthorizer::from_option_or_environment(config.token, std::getenv("CLEARSKY_TOKEN"));
+  if (!auth.writes_enabled())
+    spdlog::warn("no token (--token or CLEARSKY_TOKEN): write endpoints are disabled");
+  server::DataServices data;
+  data.db_path = db_path;
+  data.upload_dir = (db_path.has_parent_path() ? db_path.parent_path() : std::filesystem::path(".")) / "uploads";
+  if (const int stale = api::remove_stale_uploads(data.upload_dir); stale > 0)
+    spdlog::info("removed {} upload files left by an earlier process", stale);
+  data.upload_max_bytes = config.payload_max_bytes;
+  data.pool = &evaluations;
+  data.auth = &auth;
+  data.models = registered;
+  data.software_version = software_version;
+  server::Scheduler scheduler(open_database, evaluations, software_version);
+  scheduler.start();
+
   server::HttpServer http(config, tables, metrics);
+  http.add_data_routes(data);
   const int port = http.bind();
   spdlog::info("clearsky serving on http://{}:{} ({} workers, {} models, cache {}, database {})",
                config.host, port, config.worker_threads(), registered.size(), config.cache_dir,
@@ -94,11 +128,12 @@ void run_server(const server::ServerConfig& config) {
   // The signal thread waits for a signal; after a stop from elsewhere, send it one.
   pthread_kill(signal_thread.native_handle(), SIGTERM);
   signal_thread.join();
+  scheduler.stop();
 }
 
 }  // namespace
 
-void add_serve_command(CLI::App& app) {
+void add_serve_command(CLI::App& app, const std::string& software_version) {
   auto* command = app.add_subcommand("serve", "Serve the HTTP API");
   auto config = std::make_shared<server::ServerConfig>();
   // The configuration file belongs to the top-level command (CLI11 reads it there); the serve
@@ -157,7 +192,20 @@ void add_serve_command(CLI::App& app) {
       ->add_option("--prebuild-three", config->prebuild_three,
                    "Also build the 3-wavelength tables of rgb method=three at start")
       ->capture_default_str();
-  command->callback([config] { run_server(*config); });
+  command
+      ->add_option("--token", config->token,
+                   "Bearer token of the write endpoints (default: CLEARSKY_TOKEN; none: writes "
+                   "disabled)");
+  command
+      ->add_option("--evaluation-workers", config->evaluation_workers,
+                   "Background evaluation threads")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 64u));
+  command
+      ->add_option("--evaluation-queue", config->evaluation_queue,
+                   "Evaluations waiting for a worker (503 beyond)")
+      ->capture_default_str();
+  command->callback([config, software_version] { run_server(*config, software_version); });
 }
 
 }  // namespace clearsky::cli

@@ -22,6 +22,9 @@
 // | ms    | 2000        | how long a request waits for a table build before 503  | | retry_after_s
 // | s     | 5           | Retry-After of a 503                                   | |
 // builder_threads       |       | 1           | concurrent builds of the tables queued at start |
+// | token                 |       | (none)      | bearer token of the write endpoints; none: CLEARSKY_TOKEN, else writes disabled |
+// | evaluation_workers    |       | 1           | background evaluation threads (never HTTP workers) |
+// | evaluation_queue      |       | 16          | evaluations waiting for a worker (503 beyond)          |
 // | prebuild_three        |       | true        | also build each model on the 3-wavelength grid of
 // /v1/rgb?method=three at start (after the defaults) |
 #pragma once
@@ -52,6 +55,9 @@ struct ServerConfig {
   int retry_after_s = 5;
   unsigned builder_threads = 1;
   bool prebuild_three = true;
+  std::string token;
+  unsigned evaluation_workers = 1;
+  std::size_t evaluation_queue = 16;
 
   // The worker count threads resolves to.
   unsigned worker_threads() const;

@@ -71,7 +71,16 @@ std::shared_ptr<spdlog::logger> access_logger() {
 
 }  // namespace
 
-const std::vector<std::pair<std::string, std::string>>& HttpServer::routes() { return kRoutes; }
+const std::vector<std::pair<std::string, std::string>>& HttpServer::routes() {
+  static const std::vector<std::pair<std::string, std::string>> all = [] {
+    auto routes = kRoutes;
+    routes.insert(routes.end(), data_routes().begin(), data_routes().end());
+    return routes;
+  }();
+  return all;
+}
+
+void HttpServer::add_data_routes(const DataServices& services) { install_data_routes(*http_, services); }
 
 HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& metrics)
     : config_(config),

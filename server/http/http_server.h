@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "server/config/server_config.h"
+#include "server/http/data_routes.h"
 #include "server/metrics/metrics.h"
 #include "server/tables/table_store.h"
 
@@ -36,8 +37,11 @@ class HttpServer {
   void stop();
   bool running() const;
 
-  // Every (method, path) served.
+  // Every (method, path) served, the data endpoints (data_routes.h) included.
   static const std::vector<std::pair<std::string, std::string>>& routes();
+
+  // Adds the data endpoints (datasets, evaluations, jobs); services must outlive the server.
+  void add_data_routes(const DataServices& services);
 
  private:
   void install_routes();

@@ -109,6 +109,15 @@ void EvaluationRunRepository::fail(std::int64_t run_id, const std::string& error
   update.run();
 }
 
+int EvaluationRunRepository::fail_unfinished(const std::string& error) {
+  auto update = db_.prepare(
+      "UPDATE evaluation_runs SET status = 'failed', finished_utc = ?, error = ?"
+      " WHERE status = 'running'");
+  update.bind(1, utc_now_iso8601()).bind(2, error);
+  update.run();
+  return db_.changes();
+}
+
 std::optional<RunRecord> EvaluationRunRepository::get(std::int64_t run_id) {
   auto query = db_.prepare(std::string(kRunSelect) + " WHERE id = ?");
   query.bind(1, run_id);

@@ -59,6 +59,9 @@ class EvaluationRunRepository {
   void finish(std::int64_t run_id, double rmse, double precompute_seconds, double evaluate_seconds,
               const std::string& processing_steps, const std::vector<RunCaptureResult>& captures);
   void fail(std::int64_t run_id, const std::string& error);
+  // Marks every run still 'running' as failed with this error (at start-up: runs a crash
+  // interrupted); returns how many.
+  int fail_unfinished(const std::string& error);
   std::optional<RunRecord> get(std::int64_t run_id);
   // Runs of a dataset, newest first, without per-capture results.
   std::vector<RunRecord> list(std::int64_t dataset_id);

@@ -82,6 +82,32 @@ bool JobRepository::record_run(std::int64_t id, const std::string& last_run_utc,
   return db_.changes() > 0;
 }
 
+bool JobRepository::set_next_run(std::int64_t id, const std::optional<std::string>& next_run_utc) {
+  auto statement = db_.prepare("UPDATE jobs SET next_run_utc = ? WHERE id = ?");
+  if (next_run_utc)
+    statement.bind(1, *next_run_utc);
+  else
+    statement.bind_null(1);
+  statement.bind(2, id);
+  statement.run();
+  return db_.changes() > 0;
+}
+
+bool JobRepository::claim_run(std::int64_t id, const std::string& expected_next_run_utc,
+                              const std::string& last_run_utc,
+                              const std::optional<std::string>& next_run_utc) {
+  auto statement = db_.prepare(
+      "UPDATE jobs SET last_run_utc = ?, next_run_utc = ? WHERE id = ? AND next_run_utc = ?");
+  statement.bind(1, last_run_utc);
+  if (next_run_utc)
+    statement.bind(2, *next_run_utc);
+  else
+    statement.bind_null(2);
+  statement.bind(3, id).bind(4, expected_next_run_utc);
+  statement.run();
+  return db_.changes() > 0;
+}
+
 bool JobRepository::remove(std::int64_t id) {
   auto statement = db_.prepare("DELETE FROM jobs WHERE id = ?");
   statement.bind(1, id);

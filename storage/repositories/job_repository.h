@@ -36,6 +36,12 @@ class JobRepository {
   bool set_paused(std::int64_t id, bool paused);
   bool record_run(std::int64_t id, const std::string& last_run_utc,
                   const std::optional<std::string>& next_run_utc);
+  // Sets the next run time only (a job created or resumed).
+  bool set_next_run(std::int64_t id, const std::optional<std::string>& next_run_utc);
+  // Records a run only if next_run_utc still equals expected_next_run_utc (compare-and-set):
+  // of two schedulers seeing the same due run, one claims it. False when not claimed.
+  bool claim_run(std::int64_t id, const std::string& expected_next_run_utc,
+                 const std::string& last_run_utc, const std::optional<std::string>& next_run_utc);
   bool remove(std::int64_t id);
 
  private:

@@ -1,0 +1,136 @@
+// /v1/datasets handlers (datasets_api.h).
+#include "api/datasets/datasets_api.h"
+
+#include <cmath>
+
+#include "api/encode/iso8601_time.h"
+#include "api/error/api_error.h"
+#include "models/core/numeric.h"
+#include "storage/importers/kider_format.h"
+#include "storage/importers/kider_importer.h"
+#include "storage/repositories/capture_repository.h"
+#include "storage/repositories/dataset_repository.h"
+
+namespace clearsky::api {
+namespace {
+
+nlohmann::ordered_json number_or_null(double value) {
+  if (!std::isfinite(value)) return nullptr;
+  return value;
+}
+
+storage::DatasetSummary find_dataset(storage::Database& db, const std::string& name) {
+  auto dataset = storage::DatasetRepository(db).find(name);
+  if (!dataset) throw ApiError(404, "unknown_dataset", "dataset", "dataset: no dataset named '" + name + "'");
+  return *dataset;
+}
+
+nlohmann::ordered_json sample_json(const MeasuredSample& s, bool spectrum) {
+  nlohmann::ordered_json j{{"index", s.index},
+                           {"view_zenith", radians_to_degrees(s.view.zenith_rad)},
+                           {"view_azimuth", radians_to_degrees(s.view.azimuth_rad)},
+                           {"flags", s.quality_flags}};
+  if (spectrum) {
+    j["wavelengths_nm"] = s.radiance.wavelengths_nm();
+    j["radiance"] = s.radiance.values();
+  }
+  return j;
+}
+
+}  // namespace
+
+nlohmann::ordered_json list_datasets(storage::Database& db) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const auto& d : storage::DatasetRepository(db).list())
+    out.push_back({{"name", d.name},
+                   {"format", d.format},
+                   {"created", d.created_utc},
+                   {"captures", d.captures},
+                   {"samples", d.samples}});
+  return out;
+}
+
+nlohmann::ordered_json show_dataset(storage::Database& db, const std::string& name,
+                                    const ShowDatasetOptions& options) {
+  const storage::DatasetSummary dataset = find_dataset(db, name);
+  nlohmann::ordered_json captures = nlohmann::ordered_json::array();
+  bool found = false;
+  for (const storage::StoredCapture& stored : storage::CaptureRepository(db).load(dataset.id)) {
+    const MeasuredCapture& c = stored.capture;
+    if (options.capture && c.label != *options.capture) continue;
+    found = true;
+    nlohmann::ordered_json j{
+        {"label", c.label},
+        {"time", format_iso8601_time(c.unix_time_utc_s, c.utc_offset_minutes)},
+        {"time_utc", format_iso8601_time(c.unix_time_utc_s, 0, true)},
+        {"place",
+         {{"latitude", c.site.latitude_deg},
+          {"longitude", c.site.longitude_deg},
+          {"elevation_m", c.site.elevation_m}}},
+        {"sun_zenith", number_or_null(c.sun_zenith_computed_deg)},
+        {"sun_azimuth", number_or_null(c.sun_azimuth_computed_deg)},
+        {"sun_azimuth_estimated", number_or_null(c.sun_azimuth_estimated_deg)},
+        {"samples", c.samples.size()}};
+    if (options.samples || options.capture) {
+      nlohmann::ordered_json samples = nlohmann::ordered_json::array();
+      for (const MeasuredSample& s : c.samples)
+        samples.push_back(sample_json(s, options.capture.has_value()));
+      j["samples"] = std::move(samples);
+    }
+    captures.push_back(std::move(j));
+  }
+  if (options.capture && !found)
+    throw ApiError(404, "unknown_capture", "capture",
+                   "capture: dataset '" + name + "' has no capture '" + *options.capture + "'");
+  return {{"name", dataset.name},
+          {"format", dataset.format},
+          {"created", dataset.created_utc},
+          {"captures", std::move(captures)}};
+}
+
+nlohmann::ordered_json delete_dataset(storage::Database& db, const std::string& name) {
+  if (!storage::DatasetRepository(db).remove(name))
+    throw ApiError(404, "unknown_dataset", "dataset", "dataset: no dataset named '" + name + "'");
+  return {{"deleted", name}};
+}
+
+nlohmann::ordered_json import_dataset(storage::Database& db, const std::string& name,
+                                      const std::string& format,
+                                      const std::filesystem::path& archive_or_folder) {
+  if (format != "kider")
+    throw invalid_parameter("format", "'" + format + "' is not an import format (known: kider)");
+  if (name.empty()) throw missing_parameter("name", "the dataset to import into");
+  storage::KiderImportRequest request;
+  request.dataset_name = name;
+  request.paths = {archive_or_folder};
+  storage::ImportReport report;
+  try {
+    report = storage::import_kider(db, request);
+  } catch (const storage::KiderFormatError& e) {
+    throw ApiError(400, "invalid_archive", "", e.what());
+  } catch (const storage::SqliteError&) {
+    throw;
+  } catch (const std::invalid_argument& e) {
+    // A label already held with other content, or the dataset's format differs.
+    throw ApiError(409, "conflict", "", e.what());
+  } catch (const std::runtime_error& e) {
+    const std::string message = e.what();
+    if (message.find("different content") != std::string::npos)
+      throw ApiError(409, "conflict", "", message);
+    throw ApiError(400, "invalid_archive", "", message);
+  }
+  if (report.added.empty() && report.unchanged.empty()) {
+    // Nothing readable: the dataset the import created (if new) must not stay behind empty.
+    const auto dataset = storage::DatasetRepository(db).find(name);
+    if (dataset && dataset->captures == 0) storage::DatasetRepository(db).remove(name);
+    throw ApiError(400, "invalid_archive", "",
+                   "the upload holds no Kider capture (.asd.rad.txt files)");
+  }
+  return {{"dataset", report.dataset},
+          {"added", report.added},
+          {"unchanged", report.unchanged},
+          {"samples_added", report.samples_added},
+          {"seconds", report.seconds}};
+}
+
+}  // namespace clearsky::api

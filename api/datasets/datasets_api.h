@@ -1,0 +1,45 @@
+// /v1/datasets, transport-free: list, show, delete and import stored measurement datasets
+// (DESIGN.md "HTTP API v1"). The HTTP layer passes the path's dataset name and the query; the
+// answers are JSON:
+//   list:   [{"name", "format", "created", "captures", "samples"}]
+//   show:   {"name", "format", "created", "captures": [{"label", "time" (ISO, site offset),
+//            "time_utc", "place": {"latitude", "longitude", "elevation_m"}, "sun_zenith",
+//            "sun_azimuth" (computed, SPA without refraction), "sun_azimuth_estimated" (or null),
+//            "samples": N}]}; samples=true adds each capture's samples {"index", "view_zenith",
+//            "view_azimuth" (degrees, clockwise from North), "flags"}, and capture=LABEL keeps one
+//            capture and adds each sample's spectrum {"wavelengths_nm", "radiance"} (W/(m2.sr.nm)).
+//   import: the import report {"dataset", "added", "unchanged", "samples_added", "seconds"}.
+// Errors are ApiError: 404 unknown dataset or capture, 400 bad parameter or archive content,
+// 409 conflicting content. An import is one transaction: a failure leaves nothing behind.
+// Thread-safety: each call uses the given Database from the calling thread only.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "storage/sqlite/database.h"
+
+namespace clearsky::api {
+
+nlohmann::ordered_json list_datasets(storage::Database& db);
+
+struct ShowDatasetOptions {
+  bool samples = false;
+  std::optional<std::string> capture;  // one capture by label, with spectra
+};
+nlohmann::ordered_json show_dataset(storage::Database& db, const std::string& name,
+                                    const ShowDatasetOptions& options = {});
+
+// 404 when absent; returns {"deleted": NAME}.
+nlohmann::ordered_json delete_dataset(storage::Database& db, const std::string& name);
+
+// Imports an archive (.7z, zip, tar: anything libarchive reads) or a folder of Kider
+// .asd.rad.txt files into the named dataset. format must be "kider".
+nlohmann::ordered_json import_dataset(storage::Database& db, const std::string& name,
+                                      const std::string& format,
+                                      const std::filesystem::path& archive_or_folder);
+
+}  // namespace clearsky::api

@@ -1,0 +1,74 @@
+// Upload spooling to a temporary file (upload_spool.h).
+#include "api/datasets/upload_spool.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "api/error/api_error.h"
+
+namespace clearsky::api {
+
+int remove_stale_uploads(const std::filesystem::path& folder) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error)) return 0;
+  int removed = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    if (entry.path().filename().string().rfind("upload-", 0) == 0 &&
+        std::filesystem::remove(entry.path(), error))
+      ++removed;
+  }
+  return removed;
+}
+
+UploadSpool::UploadSpool(const std::filesystem::path& folder, std::size_t max_bytes,
+                         std::string_view suffix)
+    : max_bytes_(max_bytes) {
+  std::filesystem::create_directories(folder);
+  // mkstemps: a unique name created atomically (no race between naming and opening).
+  std::string name = (folder / "upload-XXXXXX").string() + std::string(suffix);
+  const int fd = ::mkstemps(name.data(), static_cast<int>(suffix.size()));
+  if (fd < 0)
+    throw std::runtime_error("cannot create an upload file in " + folder.string() + ": " +
+                             std::strerror(errno));
+  path_ = name;
+  file_ = ::fdopen(fd, "wb");
+  if (file_ == nullptr) {
+    ::close(fd);
+    std::error_code ignored;
+    std::filesystem::remove(path_, ignored);
+    throw std::runtime_error("cannot open upload file " + path_.string());
+  }
+}
+
+UploadSpool::~UploadSpool() {
+  if (file_ != nullptr) std::fclose(file_);
+  std::error_code ignored;
+  std::filesystem::remove(path_, ignored);
+}
+
+void UploadSpool::append(std::string_view chunk) {
+  if (file_ == nullptr) throw std::logic_error("upload spool: append after finish");
+  if (chunk.size() > max_bytes_ - size_)
+    throw too_large("body", "the upload is above the limit of " + std::to_string(max_bytes_) +
+                                " bytes");
+  if (!chunk.empty() && std::fwrite(chunk.data(), 1, chunk.size(), file_) != chunk.size())
+    throw std::runtime_error("cannot write upload file " + path_.string());
+  size_ += chunk.size();
+}
+
+const std::filesystem::path& UploadSpool::finish() {
+  if (file_ != nullptr) {
+    const bool ok = std::fflush(file_) == 0;
+    std::fclose(file_);
+    file_ = nullptr;
+    if (!ok) throw std::runtime_error("cannot write upload file " + path_.string());
+  }
+  return path_;
+}
+
+}  // namespace clearsky::api

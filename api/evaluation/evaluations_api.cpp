@@ -1,0 +1,244 @@
+// /v1/evaluations handlers (evaluations_api.h).
+#include "api/evaluation/evaluations_api.h"
+
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "api/encode/iso8601_time.h"
+#include "api/error/api_error.h"
+#include "api/parse/invalid_parameter.h"
+#include "api/parse/iso8601_time.h"
+#include "api/request/sky_request.h"
+#include "storage/repositories/dataset_repository.h"
+#include "storage/repositories/evaluation_run_repository.h"
+
+namespace clearsky::api {
+namespace {
+
+nlohmann::ordered_json optional_number(const std::optional<double>& value) {
+  if (!value || !std::isfinite(*value)) return nullptr;
+  return *value;
+}
+
+template <typename T>
+nlohmann::ordered_json optional_value(const std::optional<T>& value) {
+  if (!value) return nullptr;
+  return *value;
+}
+
+double time_of(const std::string& iso, const std::string& parameter) {
+  try {
+    return parse_iso8601_time(iso, parameter).unix_time_utc_s;
+  } catch (const InvalidParameter& e) {
+    throw invalid_parameter(e.parameter(), e.message());
+  }
+}
+
+std::map<std::int64_t, std::string> dataset_names(storage::Database& db) {
+  std::map<std::int64_t, std::string> names;
+  for (const auto& d : storage::DatasetRepository(db).list()) names[d.id] = d.name;
+  return names;
+}
+
+bool same_setup(const storage::RunRecord& a, const storage::RunRecord& b) {
+  return a.model_id == b.model_id && a.parameters == b.parameters &&
+         a.min_wavelength_nm == b.min_wavelength_nm && a.max_wavelength_nm == b.max_wavelength_nm;
+}
+
+}  // namespace
+
+std::int64_t parse_id(const std::string& text, const std::string& parameter) {
+  std::int64_t id = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), id);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size() || id <= 0)
+    throw invalid_parameter(parameter, "\"" + text + "\" is not a positive integer id");
+  return id;
+}
+
+ModelConfig parse_evaluation_parameters(const nlohmann::json& parameters) {
+  ModelConfig config;
+  if (parameters.is_null()) return config;
+  if (!parameters.is_object())
+    throw invalid_parameter("parameters", "must be an object of parameter names and numbers");
+  for (const auto& [name, value] : parameters.items()) {
+    if (name == "albedo" && value.is_string() && value.get<std::string>() == "grass") {
+      config.atmosphere.ground_albedo.reset();
+      continue;
+    }
+    if (!value.is_number())
+      throw invalid_parameter(name, "must be a number");
+    if (!set_atmosphere_parameter(config.atmosphere, name, value.get<double>()))
+      throw unknown_parameter(name, "the evaluation parameters (the atmosphere parameters of "
+                                    "the sky endpoints: alpha, beta, g, turbidity, albedo, ...)");
+  }
+  try {
+    config.atmosphere.validate();
+  } catch (const std::invalid_argument& e) {
+    throw from_invalid_argument(e);
+  }
+  return config;
+}
+
+EvaluationRequest parse_evaluation_request(storage::Database& db, const std::string& body,
+                                           std::span<const ModelFactory> available,
+                                           const std::string& software_version) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(body);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw ApiError(400, "invalid_body", "", std::string("the body is not valid JSON: ") + e.what());
+  }
+  if (!j.is_object()) throw ApiError(400, "invalid_body", "", "the body must be a JSON object");
+  for (const auto& [name, value] : j.items()) {
+    if (name != "models" && name != "dataset" && name != "parameters")
+      throw unknown_parameter(name, "POST /v1/evaluations");
+  }
+  EvaluationRequest request;
+  request.software_version = software_version;
+  if (!j.contains("dataset") || !j["dataset"].is_string())
+    throw missing_parameter("dataset", "the name of a stored dataset");
+  request.dataset = j["dataset"].get<std::string>();
+  if (!storage::DatasetRepository(db).find(request.dataset))
+    throw ApiError(404, "unknown_dataset", "dataset",
+                   "dataset: no dataset named '" + request.dataset + "'");
+  const nlohmann::json models = j.value("models", nlohmann::json("all"));
+  if (models.is_string()) {
+    request.models = {models.get<std::string>()};
+  } else if (models.is_array() && !models.empty()) {
+    for (const auto& m : models) {
+      if (!m.is_string()) throw invalid_parameter("models", "model ids must be strings");
+      request.models.push_back(m.get<std::string>());
+    }
+  } else {
+    throw invalid_parameter("models", "\"all\" or a non-empty array of model ids");
+  }
+  try {
+    resolve_models(request.models, available);
+  } catch (const std::invalid_argument& e) {
+    throw ApiError(404, "unknown_model", "models", std::string("models: ") + e.what());
+  }
+  request.config = parse_evaluation_parameters(j.value("parameters", nlohmann::json()));
+  return request;
+}
+
+EvaluationFilter parse_evaluation_filter(
+    const std::vector<std::pair<std::string, std::string>>& query) {
+  EvaluationFilter f;
+  for (const auto& [name, value] : query) {
+    if (name == "model") f.model = value;
+    else if (name == "dataset") f.dataset = value;
+    else if (name == "since") f.since_unix_s = time_of(value, name);
+    else if (name == "until") f.until_unix_s = time_of(value, name);
+    else if (name == "status") {
+      if (value != "running" && value != "succeeded" && value != "failed")
+        throw invalid_parameter(name, "one of running, succeeded, failed");
+      f.status = value;
+    } else if (name == "job") f.job_id = parse_id(value, name);
+    else throw unknown_parameter(name, "GET /v1/evaluations");
+  }
+  return f;
+}
+
+nlohmann::ordered_json list_evaluations(storage::Database& db, const EvaluationFilter& filter) {
+  const auto names = dataset_names(db);
+  if (filter.dataset) {
+    bool known = false;
+    for (const auto& [id, name] : names) known = known || name == *filter.dataset;
+    if (!known)
+      throw ApiError(404, "unknown_dataset", "dataset",
+                     "dataset: no dataset named '" + *filter.dataset + "'");
+  }
+  std::vector<std::pair<storage::RunRecord, std::string>> runs;
+  storage::EvaluationRunRepository repository(db);
+  for (const auto& [dataset_id, name] : names) {
+    if (filter.dataset && name != *filter.dataset) continue;
+    for (storage::RunRecord& run : repository.list(dataset_id)) {
+      if (filter.model && run.model_id != *filter.model) continue;
+      if (filter.status && run.status != *filter.status) continue;
+      if (filter.job_id && run.job_id != filter.job_id) continue;
+      if (filter.since_unix_s || filter.until_unix_s) {
+        const double started = time_of(run.started_utc, "started");
+        if (filter.since_unix_s && started < *filter.since_unix_s) continue;
+        if (filter.until_unix_s && started >= *filter.until_unix_s) continue;
+      }
+      runs.emplace_back(std::move(run), name);
+    }
+  }
+  std::sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) {
+    if (a.first.started_utc != b.first.started_utc) return a.first.started_utc > b.first.started_utc;
+    return a.first.id > b.first.id;
+  });
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const auto& [run, name] : runs)
+    out.push_back({{"id", run.id},
+                   {"dataset", name},
+                   {"model", run.model_id},
+                   {"status", run.status},
+                   {"started", run.started_utc},
+                   {"finished", optional_value(run.finished_utc)},
+                   {"rmse", optional_number(run.rmse)},
+                   {"job", optional_value(run.job_id)}});
+  return out;
+}
+
+nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_id) {
+  storage::EvaluationRunRepository repository(db);
+  const auto run = repository.get(run_id);
+  if (!run)
+    throw ApiError(404, "unknown_evaluation", "id", "id: no evaluation run " + std::to_string(run_id));
+  const auto names = dataset_names(db);
+
+  nlohmann::ordered_json history{{"previous_run", nullptr}, {"previous_rmse", nullptr},
+                                 {"rmse_changed", nullptr}};
+  if (run->status == "succeeded" && run->rmse) {
+    // list() is newest first: the first earlier succeeded run with the same setup.
+    for (const storage::RunRecord& other : repository.list(run->dataset_id)) {
+      if (other.id >= run->id || other.status != "succeeded" || !other.rmse ||
+          !same_setup(other, *run))
+        continue;
+      const double difference = std::abs(*run->rmse - *other.rmse);
+      history = {{"previous_run", other.id},
+                 {"previous_rmse", *other.rmse},
+                 {"rmse_changed", difference > 1e-9 * std::max(1.0, std::abs(*other.rmse))}};
+      break;
+    }
+  }
+
+  nlohmann::ordered_json steps = nlohmann::ordered_json::array();
+  std::istringstream lines(run->processing_steps);
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty()) steps.push_back(line);
+  nlohmann::ordered_json captures = nlohmann::ordered_json::array();
+  for (const storage::RunCaptureResult& c : run->captures)
+    captures.push_back({{"label", c.capture_label},
+                        {"time", format_iso8601_time(c.capture_time_utc_s, c.utc_offset_minutes)},
+                        {"sun_zenith", c.sun_zenith_deg},
+                        {"sun_azimuth", c.sun_azimuth_deg},
+                        {"rmse", c.rmse},
+                        {"values_compared", c.values_compared}});
+  const auto dataset = names.find(run->dataset_id);
+  return {{"id", run->id},
+          {"dataset", dataset == names.end() ? nlohmann::ordered_json(nullptr)
+                                             : nlohmann::ordered_json(dataset->second)},
+          {"model", run->model_id},
+          {"model_version", run->model_version},
+          {"parameters", run->parameters},
+          {"software_version", run->software_version},
+          {"wavelength_range_nm", {run->min_wavelength_nm, run->max_wavelength_nm}},
+          {"job", optional_value(run->job_id)},
+          {"status", run->status},
+          {"error", optional_value(run->error)},
+          {"started", run->started_utc},
+          {"finished", optional_value(run->finished_utc)},
+          {"rmse", optional_number(run->rmse)},
+          {"timings",
+           {{"precompute_seconds", optional_number(run->precompute_seconds)},
+            {"evaluate_seconds", optional_number(run->evaluate_seconds)}}},
+          {"processing_steps", std::move(steps)},
+          {"captures", std::move(captures)},
+          {"history", std::move(history)}};
+}
+
+}  // namespace clearsky::api

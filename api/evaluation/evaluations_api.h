@@ -1,0 +1,60 @@
+// /v1/evaluations, transport-free: the request body of POST (what to run), the list of stored
+// runs with filters, and one run with its per-capture results and its comparison with the
+// history (issue 9). JSON:
+//   POST body: {"models": ["preetham", ...] or "all", "dataset": NAME,
+//               "parameters": {"turbidity": 3, "alpha": 1.3, ...}} (parameters optional; names
+//               as the query parameters of the sky endpoints; applied to every model)
+//   list:  [{"id", "dataset", "model", "status", "started", "finished", "rmse", "job"}], newest
+//          first; filters model, dataset, since, until (ISO 8601, on the start time), status
+//   show:  {"id", "dataset", "model", "model_version", "parameters", "software_version",
+//           "wavelength_range_nm", "job", "status", "error", "started", "finished", "rmse",
+//           "timings": {"precompute_seconds", "evaluate_seconds"}, "processing_steps": [...],
+//           "captures": [{"label", "time", "sun_zenith", "sun_azimuth", "rmse",
+//           "values_compared"}], "history": {"previous_run", "previous_rmse", "rmse_changed"}}
+// "history" compares with the newest earlier succeeded run of the same dataset, model,
+// parameters and wavelength range (rmse_changed: relative difference above 1e-9; null when
+// there is no such run or this run did not succeed). RMSE in mW/(m2.sr.nm), angles in degrees.
+// Errors are ApiError (400 body or parameter, 404 unknown run, dataset or model).
+// Thread-safety: each call uses the given Database from the calling thread only.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "api/evaluation/evaluation_runner.h"
+#include "storage/sqlite/database.h"
+
+namespace clearsky::api {
+
+// Parses and checks a POST body against the models available and the stored datasets (so that
+// a bad request is refused before it is queued).
+EvaluationRequest parse_evaluation_request(storage::Database& db, const std::string& body,
+                                           std::span<const ModelFactory> available,
+                                           const std::string& software_version);
+// The parameters object of a body or a job applied to the default configuration (400 naming
+// the parameter when unknown, not a number or out of range).
+ModelConfig parse_evaluation_parameters(const nlohmann::json& parameters);
+
+struct EvaluationFilter {
+  std::optional<std::string> model;
+  std::optional<std::string> dataset;
+  std::optional<double> since_unix_s;  // started at or after
+  std::optional<double> until_unix_s;  // started before
+  std::optional<std::string> status;
+  std::optional<std::int64_t> job_id;
+};
+// model, dataset, since, until, status from query parameters (400 for others).
+EvaluationFilter parse_evaluation_filter(
+    const std::vector<std::pair<std::string, std::string>>& query);
+
+nlohmann::ordered_json list_evaluations(storage::Database& db, const EvaluationFilter& filter);
+nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_id);
+
+// A run id from a path segment (400 when not a positive integer).
+std::int64_t parse_id(const std::string& text, const std::string& parameter);
+
+}  // namespace clearsky::api

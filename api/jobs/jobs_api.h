@@ -1,0 +1,44 @@
+// /v1/jobs, transport-free: scheduled evaluations (issue 9). A job evaluates models against a
+// stored dataset on a 5-field UTC cron schedule (cron_schedule.h); the scheduler
+// (server/scheduler) runs it. JSON:
+//   create body: {"name", "schedule", "dataset", "models": "all" or [ids], "parameters": {...}}
+//                (parameters as POST /v1/evaluations; optional)
+//   a job:  {"id", "name", "schedule", "dataset", "models": [ids] or "all", "parameters",
+//            "paused", "created", "last_run", "next_run" (ISO 8601 UTC or null),
+//            "last_result": [{"run", "model", "status", "started", "rmse"}] (the newest run of each
+//            model the job evaluated)}
+// Creating computes the next run from now; resuming recomputes it from now (a paused job does
+// not catch up). Errors are ApiError: 400 body, schedule or parameter; 404 unknown job,
+// dataset or model; 409 name taken.
+// Thread-safety: each call uses the given Database from the calling thread only.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "api/evaluation/evaluation_runner.h"
+#include "storage/repositories/job_repository.h"
+#include "storage/sqlite/database.h"
+
+namespace clearsky::api {
+
+nlohmann::ordered_json create_job(storage::Database& db, const std::string& body,
+                                  std::span<const ModelFactory> available, double now_unix_s);
+nlohmann::ordered_json list_jobs(storage::Database& db);
+nlohmann::ordered_json show_job(storage::Database& db, std::int64_t id);
+nlohmann::ordered_json pause_job(storage::Database& db, std::int64_t id);
+nlohmann::ordered_json resume_job(storage::Database& db, std::int64_t id, double now_unix_s);
+nlohmann::ordered_json delete_job(storage::Database& db, std::int64_t id);
+
+// The evaluation a job runs (its dataset by name, models, parameters, job id); throws
+// std::invalid_argument when its dataset is gone or its parameters no longer parse.
+EvaluationRequest job_evaluation_request(storage::Database& db, const storage::JobRecord& job,
+                                         const std::string& software_version);
+
+// Job times as stored: ISO 8601 UTC to the second ("2026-11-21T10:00:00Z").
+std::string job_time_text(std::int64_t unix_s);
+
+}  // namespace clearsky::api

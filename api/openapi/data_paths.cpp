@@ -1,0 +1,146 @@
+// OpenAPI paths of /v1/datasets, /v1/evaluations and /v1/jobs (data_paths.h).
+#include "api/openapi/data_paths.h"
+
+#include <string>
+
+namespace clearsky::api {
+namespace {
+
+using nlohmann::json;
+
+json ok(const std::string& description) {
+  return {{"description", description},
+          {"content", {{"application/json", {{"schema", {{"type", "object"}}}}}}}};
+}
+
+json error(const std::string& description) {
+  return {{"description", description},
+          {"content",
+           {{"application/json", {{"schema", {{"$ref", "#/components/schemas/Error"}}}}}}}};
+}
+
+json query(const std::string& name, const std::string& type, const std::string& description,
+           bool required = false) {
+  return {{"name", name},
+          {"in", "query"},
+          {"required", required},
+          {"description", description},
+          {"schema", {{"type", type}}}};
+}
+
+json in_path(const std::string& name, const std::string& description) {
+  return {{"name", name},
+          {"in", "path"},
+          {"required", true},
+          {"description", description},
+          {"schema", {{"type", "string"}}}};
+}
+
+const json kBearer = json::array({{{"bearer", json::array()}}});
+
+json write(json operation) {
+  operation["security"] = kBearer;
+  operation["responses"]["401"] = error("Missing or wrong bearer token");
+  operation["responses"]["403"] = error("Writes are disabled (no token configured)");
+  return operation;
+}
+
+json json_body(const std::string& description) {
+  return {{"required", true},
+          {"description", description},
+          {"content", {{"application/json", {{"schema", {{"type", "object"}}}}}}}};
+}
+
+}  // namespace
+
+void add_data_paths(json& paths) {
+  paths["/v1/datasets"]["get"] = {
+      {"summary", "Stored measurement datasets with capture and sample counts"},
+      {"responses", {{"200", ok("[{name, format, created, captures, samples}]")}}}};
+  paths["/v1/datasets"]["post"] = write(
+      {{"summary",
+        "Import Kider captures into a dataset, in one transaction: the body is a .7z, zip or "
+        "tar archive of .asd.rad.txt files (streamed to disk, size-limited), or path= names an "
+        "archive or folder on the server"},
+       {"parameters",
+        json::array({query("name", "string", "Dataset name", true),
+                     query("format", "string", "kider (default)"),
+                     query("path", "string", "Server-side archive or folder (no body)")})},
+       {"requestBody",
+        {{"required", false},
+         {"content", {{"application/octet-stream", {{"schema", {{"type", "string"}, {"format", "binary"}}}}}}}}},
+       {"responses",
+        {{"201", ok("{dataset, added, unchanged, samples_added, seconds}")},
+         {"400", error("Not an archive of Kider captures")},
+         {"409", error("A capture label already held with other content")},
+         {"413", error("Body above the upload limit")}}}});
+  paths["/v1/datasets/{name}"]["get"] = {
+      {"summary",
+       "A dataset's captures: time, place, sun angles used; samples=true adds sample "
+       "directions, capture=LABEL one capture with spectra"},
+      {"parameters", json::array({in_path("name", "Dataset name"),
+                                  query("samples", "boolean", "Include samples"),
+                                  query("capture", "string", "One capture by label, with spectra")})},
+      {"responses", {{"200", ok("{name, format, created, captures: [...]}")},
+                     {"404", error("Unknown dataset or capture")}}}};
+  paths["/v1/datasets/{name}"]["delete"] =
+      write({{"summary", "Delete a dataset with its captures and evaluation runs"},
+             {"parameters", json::array({in_path("name", "Dataset name")})},
+             {"responses", {{"200", ok("{deleted}")}, {"404", error("Unknown dataset")}}}});
+
+  paths["/v1/evaluations"]["get"] = {
+      {"summary", "Stored evaluation runs, newest first"},
+      {"parameters",
+       json::array({query("model", "string", "Model id"), query("dataset", "string", "Dataset"),
+                    query("since", "string", "Started at or after (ISO 8601)"),
+                    query("until", "string", "Started before (ISO 8601)"),
+                    query("status", "string", "running, succeeded or failed"),
+                    query("job", "integer", "Runs of a scheduled job")})},
+      {"responses", {{"200", ok("[{id, dataset, model, status, started, finished, rmse, job}]")}}}};
+  paths["/v1/evaluations"]["post"] = write(
+      {{"summary",
+        "Start an evaluation of models against a dataset on the background evaluation workers"},
+       {"requestBody", json_body("{models: [ids] or \"all\", dataset, parameters: {turbidity, "
+                                 "alpha, beta, g, albedo, ...}}")},
+       {"responses",
+        {{"202", ok("{ticket, status, runs, location}")},
+         {"404", error("Unknown dataset or model")},
+         {"503", error("The evaluation queue is full")}}}});
+  paths["/v1/evaluations/{id}"]["get"] = {
+      {"summary",
+       "One run: total and per-capture RMSE (mW/(m2.sr.nm)), timings, parameters, software "
+       "version, and whether the RMSE changed against the last run with the same model and "
+       "parameters"},
+      {"parameters", json::array({in_path("id", "Run id")})},
+      {"responses", {{"200", ok("Run")}, {"404", error("Unknown run")}}}};
+  paths["/v1/evaluations/tickets/{ticket}"]["get"] = {
+      {"summary", "State of a started evaluation: queued, running, succeeded or failed, run ids"},
+      {"parameters", json::array({in_path("ticket", "Ticket from POST /v1/evaluations")})},
+      {"responses", {{"200", ok("{ticket, status, runs, error}")}, {"404", error("Unknown ticket")}}}};
+
+  paths["/v1/jobs"]["get"] = {
+      {"summary", "Scheduled evaluations with their next run time and last result"},
+      {"responses", {{"200", ok("[job]")}}}};
+  paths["/v1/jobs"]["post"] = write(
+      {{"summary", "Schedule an evaluation (5-field cron schedule, UTC)"},
+       {"requestBody",
+        json_body("{name, schedule, dataset, models: [ids] or \"all\", parameters}")},
+       {"responses", {{"201", ok("job")}, {"409", error("Name taken")}}}});
+  paths["/v1/jobs/{id}"]["get"] = {{"summary", "One scheduled evaluation"},
+                                   {"parameters", json::array({in_path("id", "Job id")})},
+                                   {"responses", {{"200", ok("job")}, {"404", error("Unknown job")}}}};
+  paths["/v1/jobs/{id}"]["delete"] =
+      write({{"summary", "Delete a scheduled evaluation (its runs stay)"},
+             {"parameters", json::array({in_path("id", "Job id")})},
+             {"responses", {{"200", ok("{deleted}")}, {"404", error("Unknown job")}}}});
+  paths["/v1/jobs/{id}/pause"]["post"] =
+      write({{"summary", "Pause a scheduled evaluation"},
+             {"parameters", json::array({in_path("id", "Job id")})},
+             {"responses", {{"200", ok("job")}, {"404", error("Unknown job")}}}});
+  paths["/v1/jobs/{id}/resume"]["post"] =
+      write({{"summary", "Resume a scheduled evaluation; its next run is computed from now"},
+             {"parameters", json::array({in_path("id", "Job id")})},
+             {"responses", {{"200", ok("job")}, {"404", error("Unknown job")}}}});
+}
+
+}  // namespace clearsky::api

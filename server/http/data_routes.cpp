@@ -1,0 +1,231 @@
+// /v1/datasets, /v1/evaluations and /v1/jobs over HTTP (data_routes.h).
+#include "server/http/data_routes.h"
+
+#include <httplib.h>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+
+#include "api/datasets/datasets_api.h"
+#include "api/datasets/upload_spool.h"
+#include "api/evaluation/evaluations_api.h"
+#include "api/http/api_types.h"
+#include "api/jobs/jobs_api.h"
+#include "storage/sqlite/database.h"
+
+namespace clearsky::server {
+namespace {
+
+const std::vector<std::pair<std::string, std::string>> kDataRoutes = {
+    {"GET", "/v1/datasets"},
+    {"POST", "/v1/datasets"},
+    {"GET", "/v1/datasets/{name}"},
+    {"DELETE", "/v1/datasets/{name}"},
+    {"GET", "/v1/evaluations"},
+    {"POST", "/v1/evaluations"},
+    {"GET", "/v1/evaluations/{id}"},
+    {"GET", "/v1/evaluations/tickets/{ticket}"},
+    {"GET", "/v1/jobs"},
+    {"POST", "/v1/jobs"},
+    {"GET", "/v1/jobs/{id}"},
+    {"DELETE", "/v1/jobs/{id}"},
+    {"POST", "/v1/jobs/{id}/pause"},
+    {"POST", "/v1/jobs/{id}/resume"},
+};
+
+double now_unix_s() {
+  using namespace std::chrono;
+  return duration<double>(system_clock::now().time_since_epoch()).count();
+}
+
+void send_json(httplib::Response& res, const nlohmann::ordered_json& body, int status = 200) {
+  res.status = status;
+  res.set_content(body.dump(), "application/json");
+}
+
+std::string query_value(const httplib::Request& req, const char* name) {
+  return req.has_param(name) ? req.get_param_value(name) : std::string();
+}
+
+// Refuses query parameters the endpoint does not take (the API's rule for every endpoint). Not
+// applied to JSON bodies: cpp-httplib adds a form-encoded body's fields to the parameters.
+void only_parameters(const httplib::Request& req, std::initializer_list<std::string_view> known,
+                     const std::string& endpoint) {
+  for (const auto& [name, value] : req.params) {
+    bool ok = false;
+    for (std::string_view k : known) ok = ok || name == k;
+    if (!ok) throw api::unknown_parameter(name, endpoint);
+  }
+}
+
+bool flag(const httplib::Request& req, const char* name) {
+  const std::string v = query_value(req, name);
+  if (v.empty() || v == "false" || v == "0") return false;
+  if (v == "true" || v == "1") return true;
+  throw api::invalid_parameter(name, "\"" + v + "\" is not true or false");
+}
+
+storage::Database connect(const DataServices& s) { return storage::Database::open(s.db_path); }
+
+// A write: authorised first, then run; its outcome is logged whatever happens.
+template <typename Action>
+void write(const DataServices& s, const httplib::Request& req, httplib::Response& res,
+           Action&& action) {
+  try {
+    s.auth->authorize(req.method, req.path, req.get_header_value("Authorization"),
+                      req.remote_addr);
+  } catch (const api::ApiError& e) {
+    if (e.status() != 401) throw;
+    const api::ApiResponse r = api::error_response(e);
+    res.status = r.status;
+    res.set_header("WWW-Authenticate", "Bearer");
+    res.set_content(r.body, r.content_type);
+    return;
+  }
+  try {
+    action();
+    audit_logger()->info("write done: {} {} from {} -> {}", req.method, req.path,
+                               req.remote_addr, res.status);
+  } catch (const api::ApiError& e) {
+    audit_logger()->info("write failed: {} {} from {} -> {} {}", req.method, req.path,
+                               req.remote_addr, e.status(), e.code());
+    throw;
+  } catch (...) {
+    audit_logger()->info("write failed: {} {} from {} -> 500", req.method, req.path,
+                               req.remote_addr);
+    throw;
+  }
+}
+
+}  // namespace
+
+const std::vector<std::pair<std::string, std::string>>& data_routes() { return kDataRoutes; }
+
+void install_data_routes(httplib::Server& server, const DataServices& services) {
+  const DataServices* s = &services;
+
+  server.Get("/v1/datasets", [s](const httplib::Request& req, httplib::Response& res) {
+    only_parameters(req, {}, "GET /v1/datasets");
+    storage::Database db = connect(*s);
+    send_json(res, api::list_datasets(db));
+  });
+  server.Get(R"(/v1/datasets/([^/]+))", [s](const httplib::Request& req, httplib::Response& res) {
+    only_parameters(req, {"samples", "capture"}, "GET /v1/datasets/{name}");
+    api::ShowDatasetOptions options;
+    options.samples = flag(req, "samples");
+    if (req.has_param("capture")) options.capture = query_value(req, "capture");
+    storage::Database db = connect(*s);
+    send_json(res, api::show_dataset(db, req.matches[1], options));
+  });
+  server.Delete(R"(/v1/datasets/([^/]+))", [s](const httplib::Request& req, httplib::Response& res) {
+    write(*s, req, res, [&] {
+      only_parameters(req, {}, "DELETE /v1/datasets/{name}");
+      storage::Database db = connect(*s);
+      send_json(res, api::delete_dataset(db, req.matches[1]));
+    });
+  });
+  // The body is the archive, spooled to disk as it arrives; or no body and path=SERVER_PATH
+  // (an archive or folder on the server: the token holder is the administrator).
+  server.Post("/v1/datasets", [s](const httplib::Request& req, httplib::Response& res,
+                                  const httplib::ContentReader& content) {
+    write(*s, req, res, [&] {
+      only_parameters(req, {"name", "format", "path"}, "POST /v1/datasets");
+      const std::string name = query_value(req, "name");
+      if (name.empty()) throw api::missing_parameter("name", "the dataset to import into");
+      const std::string format = req.has_param("format") ? query_value(req, "format") : "kider";
+      std::optional<api::UploadSpool> spool;
+      spool.emplace(s->upload_dir, s->upload_max_bytes);
+      std::exception_ptr failure;
+      const bool read = content([&](const char* data, std::size_t size) {
+        try {
+          spool->append(std::string_view(data, size));
+          return true;
+        } catch (...) {
+          failure = std::current_exception();
+          return false;
+        }
+      });
+      if (failure) std::rethrow_exception(failure);
+      // cpp-httplib stops reading, without calling the receiver, a body above its payload limit.
+      if (!read) {
+        if (req.get_header_value<std::uint64_t>("Content-Length") > s->upload_max_bytes)
+          throw api::too_large("body", "the upload is above the limit of " +
+                                           std::to_string(s->upload_max_bytes) + " bytes");
+        throw api::ApiError(400, "invalid_body", "body", "body: the upload could not be read");
+      }
+      storage::Database db = connect(*s);
+      if (req.has_param("path")) {
+        if (spool->size_bytes() > 0)
+          throw api::conflicting_parameters("path", "an uploaded body");
+        send_json(res, api::import_dataset(db, name, format, query_value(req, "path")), 201);
+        return;
+      }
+      if (spool->size_bytes() == 0)
+        throw api::missing_parameter("body", "the archive (.7z, zip or tar), or path=");
+      send_json(res, api::import_dataset(db, name, format, spool->finish()), 201);
+    });
+  });
+
+  server.Get("/v1/evaluations", [s](const httplib::Request& req, httplib::Response& res) {
+    std::vector<std::pair<std::string, std::string>> query(req.params.begin(), req.params.end());
+    const api::EvaluationFilter filter = api::parse_evaluation_filter(query);
+    storage::Database db = connect(*s);
+    send_json(res, api::list_evaluations(db, filter));
+  });
+  server.Get(R"(/v1/evaluations/(\d+))", [s](const httplib::Request& req, httplib::Response& res) {
+    only_parameters(req, {}, "GET /v1/evaluations/{id}");
+    storage::Database db = connect(*s);
+    send_json(res, api::show_evaluation(db, api::parse_id(req.matches[1], "id")));
+  });
+  server.Get(R"(/v1/evaluations/tickets/([^/]+))",
+             [s](const httplib::Request& req, httplib::Response& res) {
+               const auto ticket = s->pool->ticket(api::parse_id(req.matches[1], "ticket"));
+               if (!ticket)
+                 throw api::ApiError(404, "unknown_ticket", "ticket",
+                                     "ticket: no evaluation ticket " + std::string(req.matches[1]));
+               send_json(res, api::ticket_to_json(*ticket));
+             });
+  server.Post("/v1/evaluations", [s](const httplib::Request& req, httplib::Response& res) {
+    write(*s, req, res, [&] {
+      storage::Database db = connect(*s);
+      const std::int64_t ticket = s->pool->submit(
+          api::parse_evaluation_request(db, req.body, s->models, s->software_version));
+      nlohmann::ordered_json body = api::ticket_to_json(*s->pool->ticket(ticket));
+      body["location"] = "/v1/evaluations/tickets/" + std::to_string(ticket);
+      send_json(res, body, 202);
+    });
+  });
+
+  server.Get("/v1/jobs", [s](const httplib::Request& req, httplib::Response& res) {
+    only_parameters(req, {}, "GET /v1/jobs");
+    storage::Database db = connect(*s);
+    send_json(res, api::list_jobs(db));
+  });
+  server.Get(R"(/v1/jobs/([^/]+))", [s](const httplib::Request& req, httplib::Response& res) {
+    storage::Database db = connect(*s);
+    send_json(res, api::show_job(db, api::parse_id(req.matches[1], "id")));
+  });
+  server.Post("/v1/jobs", [s](const httplib::Request& req, httplib::Response& res) {
+    write(*s, req, res, [&] {
+      storage::Database db = connect(*s);
+      send_json(res, api::create_job(db, req.body, s->models, now_unix_s()), 201);
+    });
+  });
+  server.Delete(R"(/v1/jobs/([^/]+))", [s](const httplib::Request& req, httplib::Response& res) {
+    write(*s, req, res, [&] {
+      storage::Database db = connect(*s);
+      send_json(res, api::delete_job(db, api::parse_id(req.matches[1], "id")));
+    });
+  });
+  server.Post(R"(/v1/jobs/([^/]+)/(pause|resume))",
+              [s](const httplib::Request& req, httplib::Response& res) {
+                write(*s, req, res, [&] {
+                  storage::Database db = connect(*s);
+                  const std::int64_t id = api::parse_id(req.matches[1], "id");
+                  send_json(res, req.matches[2] == "pause" ? api::pause_job(db, id)
+                                                           : api::resume_job(db, id, now_unix_s()));
+                });
+              });
+}
+
+}  // namespace clearsky::server

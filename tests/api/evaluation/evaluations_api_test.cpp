@@ -1,0 +1,245 @@
+// Tests of /v1/evaluations without a socket (api/evaluation/evaluations_api.h,
+// evaluation_pool.h): request checks before queueing, background runs on the bounded pool
+// (each worker with its own connection to a database file), listing with filters, one run
+// with per-capture RMSE and the history comparison; test models whose RMSE is known by hand.
+#include "api/evaluation/evaluations_api.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include "api/error/api_error.h"
+#include "api/evaluation/evaluation_pool.h"
+#include "storage/repositories/capture_repository.h"
+#include "storage/repositories/dataset_repository.h"
+#include "storage/schema/migrations.h"
+#include "tests/models/evaluation/function_model.h"
+#include "tests/storage/temp_dir.h"
+
+namespace clearsky::api {
+namespace {
+
+double sky(const ViewDirection& v, double nm) {
+  return 0.05 + 0.02 * std::sin(v.zenith_rad) * std::cos(v.azimuth_rad - 120.0 * kDegree) +
+         1e-5 * (nm - 500);
+}
+
+ModelDescriptor with_id(const std::string& id) {
+  ModelDescriptor d = testing::test_descriptor();
+  d.id = id;
+  return d;
+}
+const ModelDescriptor& exact_d() {
+  static const ModelDescriptor d = with_id("exact");
+  return d;
+}
+const ModelDescriptor& offset_d() {
+  static const ModelDescriptor d = with_id("offset");
+  return d;
+}
+const ModelDescriptor& slow_d() {
+  static const ModelDescriptor d = with_id("slow");
+  return d;
+}
+
+// The offset model's error follows the turbidity parameter (1 mW per unit), so a changed
+// parameter changes the RMSE by a known amount.
+const std::vector<ModelFactory>& factories() {
+  static const std::vector<ModelFactory> f = {
+      {&exact_d(),
+       [](const ModelConfig& c, const PrecomputeContext&) -> std::shared_ptr<const SkyModel> {
+         return std::make_shared<testing::FunctionModel>(sky, c, exact_d());
+       }},
+      {&offset_d(),
+       [](const ModelConfig& c, const PrecomputeContext&) -> std::shared_ptr<const SkyModel> {
+         const double offset = 1e-3 * c.atmosphere.turbidity;
+         return std::make_shared<testing::FunctionModel>(
+             [offset](const ViewDirection& v, double nm) { return sky(v, nm) + offset; }, c,
+             offset_d());
+       }},
+      {&slow_d(),
+       [](const ModelConfig& c, const PrecomputeContext&) -> std::shared_ptr<const SkyModel> {
+         std::this_thread::sleep_for(std::chrono::milliseconds(300));
+         return std::make_shared<testing::FunctionModel>(sky, c, slow_d());
+       }},
+  };
+  return f;
+}
+
+struct Fixture {
+  storage::testing::TempDir dir;
+  std::filesystem::path file = dir.path / "db.sqlite";
+  storage::Database db = storage::open_database(file);
+  Fixture() {
+    const auto dataset = storage::DatasetRepository(db).find_or_create("synthetic", "kider2014");
+    for (int i = 0; i < 2; ++i) {
+      MeasuredCapture c = testing::synthetic_capture(sky, 40.0 + i, 125.0);
+      c.label = "capture " + std::to_string(i);
+      c.unix_time_utc_s += 900.0 * i;
+      storage::CaptureRepository(db).insert(dataset, c, "hash" + std::to_string(i), "test");
+    }
+  }
+  EvaluationPool::OpenDatabase opener() const {
+    return [path = file] { return storage::open_database(path); };
+  }
+};
+
+int status_of(const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const ApiError& e) {
+    return e.status();
+  }
+  return 0;
+}
+
+TEST(EvaluationsApi, RequestIsCheckedBeforeQueueing) {
+  Fixture f;
+  const auto parse = [&](const std::string& body) {
+    return parse_evaluation_request(f.db, body, factories(), "t");
+  };
+  const EvaluationRequest r = parse(R"({"models": ["offset"], "dataset": "synthetic",
+                                        "parameters": {"turbidity": 4, "alpha": 1.0}})");
+  EXPECT_EQ(r.models, std::vector<std::string>{"offset"});
+  EXPECT_DOUBLE_EQ(r.config.atmosphere.turbidity, 4.0);
+  EXPECT_DOUBLE_EQ(r.config.atmosphere.angstrom_alpha, 1.0);
+  EXPECT_EQ(parse(R"({"dataset": "synthetic"})").models, std::vector<std::string>{"all"});
+  EXPECT_EQ(status_of([&] { parse("{"); }), 400);
+  EXPECT_EQ(status_of([&] { parse(R"({"models": "all"})"); }), 400);
+  EXPECT_EQ(status_of([&] { parse(R"({"dataset": "nope"})"); }), 404);
+  EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "models": ["nishita2042"]})"); }), 404);
+  EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "models": []})"); }), 400);
+  EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "colour": 1})"); }), 400);
+  EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "parameters": {"turbidity": "x"}})"); }),
+            400);
+  EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "parameters": {"beta": -1}})"); }), 400);
+  EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "parameters": {"sparkle": 1}})"); }), 400);
+}
+
+TEST(EvaluationsApi, BackgroundRunsAreStoredListedAndComparedWithHistory) {
+  Fixture f;
+  EvaluationPool pool(f.opener(), factories(), {1, 4, 1});
+  const auto submit = [&](const std::string& body) {
+    return pool.submit(parse_evaluation_request(f.db, body, factories(), "9.9"));
+  };
+  const std::int64_t first = submit(R"({"models": ["offset", "exact"], "dataset": "synthetic"})");
+  const std::int64_t second = submit(R"({"models": ["offset"], "dataset": "synthetic"})");
+  const std::int64_t third =
+      submit(R"({"models": ["offset"], "dataset": "synthetic", "parameters": {"turbidity": 3}})");
+  const std::int64_t fourth =
+      submit(R"({"models": ["offset"], "dataset": "synthetic", "parameters": {"turbidity": 4}})");
+  pool.wait_idle();
+  for (std::int64_t t : {first, second, third, fourth}) ASSERT_EQ(pool.ticket(t)->status, "succeeded");
+  ASSERT_EQ(pool.ticket(first)->run_ids.size(), 2u);
+
+  // The default turbidity 2.53: RMSE 2.53 mW/(m2.sr.nm).
+  const auto run = show_evaluation(f.db, pool.ticket(first)->run_ids[0]);
+  EXPECT_EQ(run["model"], "offset");
+  EXPECT_EQ(run["dataset"], "synthetic");
+  EXPECT_EQ(run["status"], "succeeded");
+  EXPECT_EQ(run["software_version"], "9.9");
+  EXPECT_NEAR(run["rmse"].get<double>(), 2.53, 1e-9);
+  ASSERT_EQ(run["captures"].size(), 2u);
+  EXPECT_EQ(run["captures"][1]["label"], "capture 1");
+  EXPECT_DOUBLE_EQ(run["captures"][1]["sun_zenith"].get<double>(), 41.0);
+  EXPECT_NEAR(run["captures"][0]["rmse"].get<double>(), 2.53, 1e-9);
+  EXPECT_EQ(run["captures"][0]["values_compared"], 81 * 31);
+  EXPECT_TRUE(run["timings"]["precompute_seconds"].is_number());
+  EXPECT_EQ(run["parameters"], ModelConfig{}.canonical_string());
+  EXPECT_TRUE(run["history"]["previous_run"].is_null());
+
+  // Same model and parameters: unchanged against the first run.
+  const auto again = show_evaluation(f.db, pool.ticket(second)->run_ids[0]);
+  EXPECT_EQ(again["history"]["previous_run"], run["id"]);
+  EXPECT_EQ(again["history"]["rmse_changed"], false);
+  // Turbidity 3: other parameters, so no history; turbidity 4 compares with... nothing either.
+  const auto t3 = show_evaluation(f.db, pool.ticket(third)->run_ids[0]);
+  EXPECT_NEAR(t3["rmse"].get<double>(), 3.0, 1e-9);
+  EXPECT_TRUE(t3["history"]["previous_run"].is_null());
+
+  // Lists, newest first, with filters.
+  EXPECT_EQ(list_evaluations(f.db, {}).size(), 5u);
+  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter({{"model", "exact"}})).size(), 1u);
+  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter({{"model", "offset"}, {"dataset", "synthetic"}})).size(),
+            4u);
+  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter({{"since", "2000-01-01T00:00:00Z"}})).size(), 5u);
+  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter({{"until", "2000-01-01T00:00:00Z"}})).size(), 0u);
+  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter({{"status", "failed"}})).size(), 0u);
+  const auto newest = list_evaluations(f.db, {})[0];
+  EXPECT_EQ(newest["id"], pool.ticket(fourth)->run_ids[0]);
+  EXPECT_NEAR(newest["rmse"].get<double>(), 4.0, 1e-9);
+  EXPECT_EQ(status_of([&] { parse_evaluation_filter({{"since", "yesterday"}}); }), 400);
+  EXPECT_EQ(status_of([&] { parse_evaluation_filter({{"colour", "red"}}); }), 400);
+  EXPECT_EQ(status_of([&] { list_evaluations(f.db, parse_evaluation_filter({{"dataset", "x"}})); }), 404);
+  EXPECT_EQ(status_of([&] { show_evaluation(f.db, 999); }), 404);
+  EXPECT_EQ(status_of([&] { parse_id("12a", "id"); }), 400);
+}
+
+TEST(EvaluationsApi, RmseChangeAgainstHistoryIsReported) {
+  Fixture f;
+  EvaluationPool pool(f.opener(), factories(), {1, 4, 1});
+  const std::string body = R"({"models": ["exact"], "dataset": "synthetic"})";
+  const std::int64_t before = pool.submit(parse_evaluation_request(f.db, body, factories(), "1"));
+  pool.wait_idle();
+  // The measurements change (a capture re-imported with brighter spectra): the same model and
+  // parameters now give another RMSE.
+  {
+    storage::Transaction t(f.db);
+    f.db.execute("DELETE FROM captures WHERE label = 'capture 1'");
+    MeasuredCapture c = testing::synthetic_capture(
+        [](const ViewDirection& v, double nm) { return sky(v, nm) + 0.002; }, 41.0, 125.0);
+    c.label = "capture 1";
+    storage::CaptureRepository(f.db).insert(storage::DatasetRepository(f.db).find("synthetic")->id,
+                                            c, "hash-new", "test");
+    t.commit();
+  }
+  const std::int64_t after = pool.submit(parse_evaluation_request(f.db, body, factories(), "1"));
+  pool.wait_idle();
+  const auto run = show_evaluation(f.db, pool.ticket(after)->run_ids[0]);
+  EXPECT_EQ(run["history"]["previous_run"], pool.ticket(before)->run_ids[0]);
+  EXPECT_NEAR(run["history"]["previous_rmse"].get<double>(), 0.0, 1e-9);
+  // Per capture 0 and 2; total sqrt((0 + 4) / 2).
+  EXPECT_NEAR(run["rmse"].get<double>(), std::sqrt(2.0), 1e-9);
+  EXPECT_EQ(run["history"]["rmse_changed"], true);
+}
+
+TEST(EvaluationPool, FullQueueIs503AndWorkersAreBounded) {
+  Fixture f;
+  EvaluationPool pool(f.opener(), factories(), {1, 1, 1});
+  const std::string body = R"({"models": ["slow"], "dataset": "synthetic"})";
+  const std::int64_t a = pool.submit(parse_evaluation_request(f.db, body, factories(), "1"));
+  // Wait until the single worker holds the first one, then fill the one queue slot.
+  for (int i = 0; i < 200 && pool.ticket(a)->status == "queued"; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  const std::int64_t b = pool.submit(parse_evaluation_request(f.db, body, factories(), "1"));
+  EXPECT_EQ(pool.ticket(b)->status, "queued");
+  EXPECT_EQ(status_of([&] { pool.submit(parse_evaluation_request(f.db, body, factories(), "1")); }),
+            503);
+  pool.wait_idle();
+  EXPECT_EQ(pool.ticket(b)->status, "succeeded");
+  // One worker: the two runs did not overlap.
+  const auto first = show_evaluation(f.db, pool.ticket(a)->run_ids[0]);
+  const auto second = show_evaluation(f.db, pool.ticket(b)->run_ids[0]);
+  EXPECT_LE(first["finished"].get<std::string>(), second["started"].get<std::string>());
+}
+
+TEST(EvaluationPool, FailedRunIsReportedOnTheTicket) {
+  Fixture f;
+  EvaluationPool pool(f.opener(), factories(), {1, 4, 1});
+  EvaluationRequest r = parse_evaluation_request(f.db, R"({"models": ["exact"], "dataset": "synthetic"})",
+                                                 factories(), "1");
+  f.db.execute("DELETE FROM captures");
+  std::atomic<bool> called{false};
+  const std::int64_t t = pool.submit(r, [&](const TicketState& s) { called = s.status == "failed"; });
+  pool.wait_idle();
+  EXPECT_TRUE(called);
+  EXPECT_EQ(pool.ticket(t)->status, "failed");
+  EXPECT_NE(pool.ticket(t)->error.find("no captures"), std::string::npos);
+  EXPECT_EQ(ticket_to_json(*pool.ticket(t))["status"], "failed");
+}
+
+}  // namespace
+}  // namespace clearsky::api
