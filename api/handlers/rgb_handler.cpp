@@ -4,6 +4,10 @@
 // paper's 3-wavelength method (section "Spectrum sampling"): the model built on the points
 // 440, 550, 680 nm and c = k_c L(lambda_c) (models/colour/three_wavelength_rgb.h).
 // RGB values are radiometric (XYZ with Y in W/(m2.sr)); luminance is 683 Y.
+#include <algorithm>
+#include <limits>
+#include <string>
+
 #include "api/colour/xyz_weights.h"
 #include "api/handlers/handlers.h"
 #include "api/handlers/sky_radiance_query.h"
@@ -69,6 +73,27 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
                          {"altitude_m", viewpoint.altitude_m},
                          {"colour_space", "linear sRGB (D65), radiometric: Y in W/(m2.sr)"},
                          {"samples", std::move(samples)}};
+  if (method == "spectral") {
+    // A model with a narrower range than the grid (Hosek: 320..720 nm) contributes nothing
+    // beyond it; say so instead of presenting a partial integral as the full CIE colour.
+    const WavelengthGrid& grid = m.model->wavelengths();
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    bool partial = false;
+    for (std::size_t w = 0; w < grid.size(); ++w) {
+      if (!m.model->answers_wavelength(w)) {
+        partial = true;
+        continue;
+      }
+      lo = std::min(lo, grid.lower_edge_nm(w));
+      hi = std::max(hi, grid.upper_edge_nm(w));
+    }
+    body["integrated_range_nm"] = {grid.lower_edge_nm(0), grid.upper_edge_nm(grid.size() - 1)};
+    if (partial) {
+      body["integrated_range_nm"] = {lo, hi};
+      body["warning"] = "the model answers only part of the grid; the CIE integral covers [" + std::to_string(lo) +
+                        ", " + std::to_string(hi) + "] nm (missing light counts as zero)";
+    }
+  }
   ApiResponse response = json_response(body);
   response.model_id = factory.descriptor->id;
   return response;
