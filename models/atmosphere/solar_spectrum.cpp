@@ -31,6 +31,12 @@ double mean_of_rows(double lo_nm, double hi_nm) {
 }  // namespace
 
 double solar_spectrum_at_point_nm(double wavelength_nm) {
+  // Inside the paper's grid, the study's rule for tabulated inputs: linear interpolation of the
+  // 40-bin table, each bin value standing at its bin's start (IMPLEMENTATION-NOTES "Evaluation").
+  const auto& bins = ReferenceSpectra::get().solar_irradiance_40_bins;
+  if (wavelength_nm >= bins.min_nm() && wavelength_nm <= bins.max_nm()) {
+    return bins.at(wavelength_nm, OutOfRange::error);
+  }
   const double half = 0.5 * kPointSolarWindowNm;
   return mean_of_rows(wavelength_nm - half, wavelength_nm + half);
 }

@@ -1,8 +1,10 @@
 // The extraterrestrial solar spectral irradiance (W/(m2.nm)) on a wavelength grid, as the
 // 2016 study used it: averaged over each bin of a bin grid (for the paper's 40 bins this is
-// exactly models/data/spectra/solar_irradiance_40bins.csv), and for a point wavelength the
-// average over the paper's bin width (11.75 nm) centred on it, so that point samples do not
-// land on individual Fraunhofer lines. Source: ASTM G-173-03 extraterrestrial column.
+// exactly models/data/spectra/solar_irradiance_40bins.csv, the mean of the ASTM rows in each
+// bin); for a point wavelength inside 360..818.25 nm, linear interpolation of that 40-bin
+// table (the study's rule for tabulated inputs), elsewhere the mean of the ASTM rows within the
+// paper's bin width centred on it, so that a point never lands on a single Fraunhofer line.
+// Source: ASTM G-173-03 extraterrestrial column.
 #pragma once
 
 #include "models/spectral/spectrum.h"
