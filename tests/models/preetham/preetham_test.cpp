@@ -1,6 +1,7 @@
 // Physics and contract tests of the Preetham model (models/preetham): the paper's zenith
 // luminance, the luminance carried by the reconstructed spectrum, symmetry, positivity at
 // the horizon, refusal of what it cannot answer, and the sky irradiance quadrature.
+#include "tests/support/model_queries.h"
 #include "models/preetham/preetham.h"
 
 #include <gtest/gtest.h>
@@ -16,6 +17,10 @@
 namespace clearsky {
 namespace {
 
+using testing::radiance;
+using testing::reference_sky_irradiance;
+using testing::sun_at;
+
 std::shared_ptr<const SkyModel> make_preetham(double turbidity = 2.53,
                                               WavelengthGrid grid = WavelengthGrid::paper_bins()) {
   ModelConfig config;
@@ -24,41 +29,8 @@ std::shared_ptr<const SkyModel> make_preetham(double turbidity = 2.53,
   return preetham_factory().create(config, {});
 }
 
-SunPosition sun_at(double zenith_deg, double azimuth_deg = 135.0) {
-  return {degrees_to_radians(zenith_deg), degrees_to_radians(azimuth_deg)};
-}
 
-Spectrum radiance(const SkyModel& model, const SunState& sun, double zenith_deg,
-                  double azimuth_deg) {
-  const std::vector<ViewDirection> views = {
-      {degrees_to_radians(zenith_deg), degrees_to_radians(azimuth_deg)}};
-  SpectralBatch batch;
-  model.sky_radiance(sun, {}, views, batch);
-  EXPECT_EQ(batch.status[0], SampleStatus::ok);
-  return Spectrum(std::vector<double>(batch.spectrum(0).begin(), batch.spectrum(0).end()));
-}
 
-// Sky irradiance on a horizontal plane by an independent fine rule: Gauss-Legendre in
-// cos(theta) x midpoint in azimuth, zenith_nodes x azimuth_nodes directions.
-Spectrum reference_sky_irradiance(const SkyModel& model, const SunState& sun, int zenith_nodes,
-                                  int azimuth_nodes) {
-  std::vector<ViewDirection> views;
-  std::vector<double> weights;
-  for (const auto& [mu, w] : gauss_legendre(zenith_nodes, 0.0, 1.0)) {
-    for (int j = 0; j < azimuth_nodes; ++j) {
-      views.push_back({std::acos(mu), 2.0 * kPi * (j + 0.5) / azimuth_nodes});
-      weights.push_back(w * mu * 2.0 * kPi / azimuth_nodes);
-    }
-  }
-  SpectralBatch batch;
-  model.sky_radiance(sun, {}, views, batch);
-  Spectrum sum(model.wavelengths().size(), 0.0);
-  for (std::size_t i = 0; i < views.size(); ++i) {
-    EXPECT_EQ(batch.status[i], SampleStatus::ok);
-    for (std::size_t w = 0; w < sum.size(); ++w) sum[w] += weights[i] * batch.spectrum(i)[w];
-  }
-  return sum;
-}
 
 // Sky irradiance on a tilted plane by an independent fine rule: 120 x 240 directions over
 // the sky (Gauss-Legendre in cos(theta) x midpoint in azimuth), weight max(0, d . n).
