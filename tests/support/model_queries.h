@@ -1,6 +1,6 @@
 // Small query helpers shared by the model tests: one view's radiance, a sun position in
-// degrees, and the horizontal sky irradiance by an independent fine rule (Gauss-Legendre in
-// cos(theta) x midpoint in azimuth) to check a model's own irradiance quadrature against.
+// degrees, and the sky irradiance on horizontal and tilted planes by independent fine rules
+// (Gauss-Legendre in cos(theta) x midpoint in azimuth) to check a model's own quadrature.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -41,6 +41,31 @@ inline Spectrum reference_sky_irradiance(const SkyModel& model, const SunState& 
   Spectrum sum(model.wavelengths().size(), 0.0);
   for (std::size_t i = 0; i < views.size(); ++i) {
     EXPECT_EQ(batch.status[i], SampleStatus::ok);
+    for (std::size_t w = 0; w < sum.size(); ++w) sum[w] += weights[i] * batch.spectrum(i)[w];
+  }
+  return sum;
+}
+
+// Sky irradiance on a tilted plane by an independent fine rule: 120 x 240 directions over the
+// sky (Gauss-Legendre in cos(theta) x midpoint in azimuth), weight max(0, d . n).
+inline Spectrum reference_tilted_irradiance(const SkyModel& model, const SunState& sun,
+                                            const PlaneOrientation& plane) {
+  const Vec3 n = SkyDirection{plane.tilt_rad, plane.azimuth_rad}.unit_vector();
+  std::vector<ViewDirection> views;
+  std::vector<double> weights;
+  for (const auto& [mu, w] : gauss_legendre(120, 0.0, 1.0)) {
+    for (int j = 0; j < 240; ++j) {
+      const ViewDirection v{std::acos(mu), 2.0 * kPi * (j + 0.5) / 240};
+      const double c = dot(v.unit_vector(), n);
+      if (c <= 0.0) continue;
+      views.push_back(v);
+      weights.push_back(w * c * 2.0 * kPi / 240);
+    }
+  }
+  SpectralBatch batch;
+  model.sky_radiance(sun, {}, views, batch);
+  Spectrum sum(model.wavelengths().size(), 0.0);
+  for (std::size_t i = 0; i < views.size(); ++i) {
     for (std::size_t w = 0; w < sum.size(); ++w) sum[w] += weights[i] * batch.spectrum(i)[w];
   }
   return sum;

@@ -19,6 +19,7 @@ namespace {
 
 using testing::radiance;
 using testing::reference_sky_irradiance;
+using testing::reference_tilted_irradiance;
 using testing::sun_at;
 
 std::shared_ptr<const SkyModel> make_preetham(double turbidity = 2.53,
@@ -32,30 +33,6 @@ std::shared_ptr<const SkyModel> make_preetham(double turbidity = 2.53,
 
 
 
-// Sky irradiance on a tilted plane by an independent fine rule: 120 x 240 directions over
-// the sky (Gauss-Legendre in cos(theta) x midpoint in azimuth), weight max(0, d . n).
-Spectrum reference_tilted_irradiance(const SkyModel& model, const SunState& sun,
-                                     const PlaneOrientation& plane) {
-  const Vec3 n = SkyDirection{plane.tilt_rad, plane.azimuth_rad}.unit_vector();
-  std::vector<ViewDirection> views;
-  std::vector<double> weights;
-  for (const auto& [mu, w] : gauss_legendre(120, 0.0, 1.0)) {
-    for (int j = 0; j < 240; ++j) {
-      const ViewDirection v{std::acos(mu), 2.0 * kPi * (j + 0.5) / 240};
-      const double c = dot(v.unit_vector(), n);
-      if (c <= 0.0) continue;
-      views.push_back(v);
-      weights.push_back(w * c * 2.0 * kPi / 240);
-    }
-  }
-  SpectralBatch batch;
-  model.sky_radiance(sun, {}, views, batch);
-  Spectrum sum(model.wavelengths().size(), 0.0);
-  for (std::size_t i = 0; i < views.size(); ++i) {
-    for (std::size_t w = 0; w < sum.size(); ++w) sum[w] += weights[i] * batch.spectrum(i)[w];
-  }
-  return sum;
-}
 
 TEST(Preetham, DescriptorDeclaresParametersAndLimits) {
   const ModelDescriptor& d = preetham_descriptor();
