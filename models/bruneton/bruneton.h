@@ -37,7 +37,9 @@ class BrunetonModel : public SkyModel {
                                                      const ModelConfig& config,
                                                      const PrecomputeContext& context);
 
-  const ModelDescriptor& descriptor() const override { return *descriptor_; }
+  // The descriptor it was created with, its capabilities.max_sun_zenith_deg set to what the
+  // tables cover (option max_sun_zenith_deg).
+  const ModelDescriptor& descriptor() const override { return descriptor_; }
   std::size_t table_bytes() const override { return tables_.bytes(); }
   const bruneton::Tables& tables() const { return tables_; }
   // Whether the tables came from the cache, and the wall time to obtain them (s).
@@ -59,7 +61,8 @@ class BrunetonModel : public SkyModel {
   // in-scattered radiance between observer and point (all orders) and the transmittance to the
   // point. The ground's own radiance is not included.
   ScatteringAlongRay compute_aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
-                                                const ViewDirection& view, double distance_m) const override;
+                                                const ViewDirection& view,
+                                                double distance_m) const override;
   void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
                             std::span<const ViewDirection> views,
                             SpectralBatch& out) const override;
@@ -81,7 +84,7 @@ class BrunetonModel : public SkyModel {
   // the ground), attenuated, added to out.
   void add_ground(double r, double mu, double mu_s, double nu, float* out) const;
 
-  const ModelDescriptor* descriptor_;
+  ModelDescriptor descriptor_;
   bruneton::Tables tables_;
   std::vector<float> solar_;  // padded
   std::vector<float> albedo_over_pi_;
