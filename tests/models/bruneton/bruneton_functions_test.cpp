@@ -122,7 +122,7 @@ TEST(BrunetonFunctions, ExtendedSunRangeMapping) {
     EXPECT_NEAR(radians_to_degrees(s.max_sun_zenith_rad()), max_deg, 1e-9);
     EXPECT_GT(s.offset, 0.0);
     EXPECT_LT(s.offset, kPi / (2.0 * kMuSAngle) - 1.0);
-    EXPECT_EQ(s.offset < 0.26, max_deg > 101.39) << max_deg;
+    EXPECT_EQ(s.offset<0.26, max_deg> 101.39) << max_deg;
     for (int n : {8, 32}) {
       EXPECT_NEAR(texel_mu_s(0, n, s), mu_min, 1e-12) << max_deg;
       EXPECT_NEAR(texel_mu_s(n - 1, n, s), 1.0, 1e-12) << max_deg;

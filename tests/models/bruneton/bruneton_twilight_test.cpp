@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -172,7 +171,142 @@ TEST(BrunetonTwilight, SunSweepTo110DegreesIsContinuous) {
   RecordProperty("largest_step_over_local_scale", std::to_string(largest_local));
   RecordProperty("largest_step_over_local_scale_at_90_and_101_39",
                  std::to_string(largest_at_limits));
-  std::printf("DIAG %g %g %g\n", largest_day, largest_local, largest_at_limits);
+}
+
+// The view zenith from 89.9 to 90.1 degrees in 0.01 degree steps (towards the sun, across,
+// away), for suns from 30 to 110 degrees zenith, from 1 km and 10 km (where 90 degrees is
+// above the geometric horizon) and from the ground. Aloft, no step exceeds 4% relative
+// (measured 1.6%). From the ground the view below 90 degrees sees the grass at the
+// observer's feet: the sky side and the ground side are each continuous (steps under 5%,
+// measured 2.1%), and the ground side is the grass radiance albedo / pi (E_sun mu_s + E_sky)
+// plus the light scattered within the lowest 10 m layer (under 3%, measured 1.7%), with
+// E_sky from the irradiance table, whose range now reaches the sun at 110 degrees.
+TEST(BrunetonTwilight, ContinuousAcrossTheHorizon) {
+  const BrunetonModel& m = twilight_model();
+  double largest_aloft = 0.0, largest_ground_side = 0.0, largest_grass_excess = 0.0;
+  for (double sun_zenith : {30.0, 80.0, 90.0, 95.0, 100.0, 105.0, 110.0}) {
+    for (double altitude : {0.0, 1000.0, 10e3}) {
+      for (double azimuth : {0.0, kPi / 2.0, kPi}) {
+        std::vector<ViewDirection> views;
+        for (int i = -10; i <= 10; ++i)
+          views.push_back({degrees_to_radians(90.0 + 0.01 * i), azimuth});
+        const SpectralBatch out = radiance(m, sun_zenith, altitude, views);
+        for (std::size_t w = 0; w < 3; ++w) {
+          for (std::size_t i = 0; i < views.size(); ++i) {
+            ASSERT_EQ(out.status[i], SampleStatus::ok);
+            const double l = out.spectrum(i)[w];
+            ASSERT_TRUE(std::isfinite(l) && l > 0.0) << sun_zenith << " " << altitude;
+            if (i == 0) continue;
+            const double step = relative_step(l, out.spectrum(i - 1)[w]);
+            const auto where = ::testing::Message()
+                               << "sun " << sun_zenith << " altitude " << altitude << " azimuth "
+                               << azimuth << " view " << i << " wavelength " << w;
+            if (altitude > 0.0) {
+              largest_aloft = std::max(largest_aloft, step);
+              EXPECT_LT(step, 0.04) << where;
+            } else if (i != 11) {  // 90.00 (sky) -> 90.01 (the grass)
+              largest_ground_side = std::max(largest_ground_side, step);
+              EXPECT_LT(step, 0.05) << where;
+            }
+          }
+        }
+      }
+    }
+    // The grass at the observer's feet.
+    const auto sun = m.prepare_sun({degrees_to_radians(sun_zenith), 0.0});
+    const SpectralSample direct = m.sun_irradiance(*sun, {0.0});
+    const SpectralSample sky = m.sky_irradiance(*sun, {0.0});
+    const SpectralBatch grass = radiance(m, sun_zenith, 0.0, {{degrees_to_radians(90.01), 2.0}});
+    const double mu_s = std::max(std::cos(degrees_to_radians(sun_zenith)), 0.0);
+    for (std::size_t w = 0; w < 3; ++w) {
+      const double expected =
+          m.atmosphere().ground_albedo[w] / kPi * (direct.value[w] * mu_s + sky.value[w]);
+      ASSERT_GT(expected, 0.0) << sun_zenith;
+      const double excess = grass.spectrum(0)[w] / expected - 1.0;
+      largest_grass_excess = std::max(largest_grass_excess, excess);
+      EXPECT_GT(excess, -1e-6) << sun_zenith << " " << w;
+      EXPECT_LT(excess, 0.03) << sun_zenith << " " << w;
+    }
+  }
+  RecordProperty("largest_relative_step_aloft", std::to_string(largest_aloft));
+  RecordProperty("largest_relative_step_ground_observer", std::to_string(largest_ground_side));
+  RecordProperty("largest_grass_excess", std::to_string(largest_grass_excess));
+}
+
+// Single scattering (orders = 1) with the sun 10 to 20 degrees below the horizon against
+// the direct numerical integration (single_scattering_reference, taken to the 2008 code's
+// ray-length limit Rt + 1 km as the tables are). Compared: the light of the sunward sky (views
+// 0.2 to 7.4 degrees above the geometric horizon, 0, 17 and 34 degrees of azimuth from the
+// sun), summed, wherever the sunlit part of the rays lies within the atmosphere: the sun at
+// 100 degrees from 0, 5, 20 and 40 km, at 105 from 20 and 40 km, at 108 and 110 from 40 km.
+// The tables overestimate twilight: there the light falls by orders of magnitude between
+// neighbouring texels, and linear interpolation of such values lands above them, most of all
+// in nu, the view-sun angle (the sunlit part of a ray depends exponentially on its azimuth
+// from the sun). With 32 nu slices (used here; the paper's 8 give up to 4x at 680 nm) the sum
+// is measured +9..+85% at 680 nm, +9..+62% at 440 nm for the sun up to 105 degrees and
+// +293% / +459% at 440 nm for 108 / 110 degrees; asserted within 0.95..2x, 0.95..2x and
+// 0.95..8x. Where no sunlit part lies within the atmosphere (the sun at 108 and 110 degrees
+// from 0 and 5 km), the tables are dark too: under 1e-3 of the light at 100 degrees (measured
+// 4e-6).
+TEST(BrunetonTwilight, SingleScatteringMatchesDirectIntegrationBelowTheHorizon) {
+  ModelConfig config;
+  config.wavelengths = WavelengthGrid::points({440.0, 680.0});
+  config.options["scattering_orders"] = 1;
+  config.options["table_r_size"] = 16;
+  config.options["table_mu_size"] = 64;
+  config.options["table_nu_size"] = 32;
+  config.options["max_sun_zenith_deg"] = 110.0;
+  const auto model = make(config);
+  AtmosphereParameters to_limit = model->atmosphere().parameters;
+  to_limit.top_radius_m = model->tables().geometry.limit_m;
+  const AtmosphereSpectra reference_atmosphere =
+      AtmosphereSpectra::build(to_limit, model->atmosphere().grid);
+  const double rg = model->tables().geometry.bottom_m;
+  // Sums over the sunward fan: table, reference.
+  auto fan = [&](double sun_zenith, double altitude, std::size_t w) {
+    const double h = horizon_zenith_deg(*model, altitude);
+    const SunPosition sun{degrees_to_radians(sun_zenith), 0.0};
+    double table = 0.0, reference = 0.0;
+    for (double azimuth : {0.0, 0.3, 0.6}) {
+      for (double below = 0.2; below <= 7.5; below += 0.6) {
+        const ViewDirection view{degrees_to_radians(h - below), azimuth};
+        table += radiance(*model, sun_zenith, altitude, {view}).spectrum(0)[w];
+        reference += single_scattering_reference(reference_atmosphere,
+                                                 RaySunGeometry::from(rg, {altitude}, view, sun))
+                         .radiance[w];
+      }
+    }
+    return std::pair<double, double>{table, reference};
+  };
+  struct Case {
+    double sun_zenith, altitude;
+  };
+  for (const Case c :
+       {Case{100.0, 0.0}, Case{100.0, 5e3}, Case{100.0, 20e3}, Case{100.0, 40e3}, Case{105.0, 20e3},
+        Case{105.0, 40e3}, Case{108.0, 40e3}, Case{110.0, 40e3}}) {
+    for (std::size_t w = 0; w < 2; ++w) {
+      const auto [table, reference] = fan(c.sun_zenith, c.altitude, w);
+      ASSERT_GT(reference, 0.0) << c.sun_zenith << " " << c.altitude;
+      const double ratio = table / reference;
+      const double limit = (w == 0 && c.sun_zenith > 105.0) ? 8.0 : 2.0;
+      RecordProperty("ratio_sun_" + std::to_string(static_cast<int>(c.sun_zenith)) + "_km_" +
+                         std::to_string(static_cast<int>(c.altitude / 1e3)) + "_w" +
+                         std::to_string(w),
+                     std::to_string(ratio));
+      EXPECT_GT(ratio, 0.95) << c.sun_zenith << " " << c.altitude << " " << w;
+      EXPECT_LT(ratio, limit) << c.sun_zenith << " " << c.altitude << " " << w;
+    }
+  }
+  for (double altitude : {0.0, 5e3}) {
+    for (std::size_t w = 0; w < 2; ++w) {
+      const double lit = fan(100.0, altitude, w).second;
+      for (double sun_zenith : {108.0, 110.0}) {
+        const auto [table, reference] = fan(sun_zenith, altitude, w);
+        EXPECT_EQ(reference, 0.0) << sun_zenith << " " << altitude;
+        EXPECT_LT(table, 1e-3 * lit) << sun_zenith << " " << altitude << " " << w;
+      }
+    }
+  }
 }
 
 }  // namespace
