@@ -146,10 +146,14 @@ ShowEvaluationOptions parse_show_evaluation_options(
   ShowEvaluationOptions options;
   for (const auto& [name, value] : query) {
     if (name == "samples") {
-      if (value == "spectra") options.samples = SampleDetail::spectra;
-      else if (value == "true" || value == "1") options.samples = SampleDetail::summary;
-      else if (value == "false" || value == "0" || value.empty()) options.samples = SampleDetail::none;
-      else throw invalid_parameter(name, "\"" + value + "\" is not true, false or spectra");
+      if (value == "spectra")
+        options.samples = SampleDetail::spectra;
+      else if (value == "true" || value == "1")
+        options.samples = SampleDetail::summary;
+      else if (value == "false" || value == "0" || value.empty())
+        options.samples = SampleDetail::none;
+      else
+        throw invalid_parameter(name, "\"" + value + "\" is not true, false or spectra");
     } else if (name == "capture") {
       options.capture = value;
     } else {

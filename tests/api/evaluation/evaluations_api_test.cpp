@@ -256,11 +256,13 @@ TEST(EvaluationsApi, PerSampleErrorsOnRequest) {
   EXPECT_EQ(spectra["captures"][1]["samples"][40]["rmse"],
             summary["captures"][1]["samples"][40]["rmse"]);
 
-  const auto one = show_evaluation(f.db, id, options({{"samples", "true"}, {"capture", "capture 1"}}));
+  const auto one =
+      show_evaluation(f.db, id, options({{"samples", "true"}, {"capture", "capture 1"}}));
   ASSERT_EQ(one["captures"].size(), 1u);
   EXPECT_EQ(one["captures"][0]["label"], "capture 1");
   EXPECT_EQ(one["captures"][0]["samples"], summary["captures"][1]["samples"]);
-  EXPECT_EQ(status_of([&] { show_evaluation(f.db, id, options({{"capture", "capture 9"}})); }), 404);
+  EXPECT_EQ(status_of([&] { show_evaluation(f.db, id, options({{"capture", "capture 9"}})); }),
+            404);
   EXPECT_EQ(status_of([&] { options({{"samples", "maybe"}}); }), 400);
   EXPECT_EQ(status_of([&] { options({{"sample", "true"}}); }), 400);
 
