@@ -70,8 +70,12 @@ TEST(Preetham, RefusesWhereTheFitTurnsNegativeUnlessAskedToClamp) {
       // Only near the horizon.
       EXPECT_GT(views[i].zenith_rad, degrees_to_radians(60.0));
     }
-    if (sun_zenith <= 60.0) EXPECT_EQ(outside, 0) << sun_zenith;
-    if (sun_zenith >= 88.0) EXPECT_GT(outside, 0) << sun_zenith;
+    if (sun_zenith <= 60.0) {
+      EXPECT_EQ(outside, 0) << sun_zenith;
+    }
+    if (sun_zenith >= 88.0) {
+      EXPECT_GT(outside, 0) << sun_zenith;
+    }
     const SpectralSample e = model->sky_irradiance(*sun, {});
     const SpectralSample e_clamped = clamped->sky_irradiance(*sun, {});
     ASSERT_EQ(e.status, SampleStatus::ok);
