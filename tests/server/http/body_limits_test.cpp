@@ -1,0 +1,91 @@
+// The two body limits through the real server (server/http/request_body.h, data_routes.h):
+// dataset uploads have their own limit (max_upload_bytes) while every other route keeps the
+// small payload limit; above either the answer is 413 in the project's error format and the
+// client, still sending, reads it (the body is drained, not cut), whether the size is declared
+// (Content-Length) or only found on arrival (chunked).
+#include <gtest/gtest.h>
+
+#include "tests/server/http/data_server_fixture.h"
+
+namespace clearsky::server {
+namespace {
+
+constexpr std::size_t kPayload = 64u << 10;
+constexpr std::size_t kUpload = 4u << 20;
+
+class BodyLimits : public testing::DataServerFixture {
+ protected:
+  void SetUp() override { start(std::string("t0ken"), kPayload, kUpload); }
+  static void expect_too_large(const httplib::Result& r) {
+    ASSERT_TRUE(r) << httplib::to_string(r.error());
+    EXPECT_EQ(r->status, 413);
+    const auto error = nlohmann::json::parse(r->body)["error"];
+    EXPECT_EQ(error["code"], "too_large");
+    EXPECT_EQ(error["parameter"], "body");
+  }
+};
+
+TEST_F(BodyLimits, QueryAndWriteRoutesKeepThePayloadLimit) {
+  auto c = client("t0ken");
+  // One byte above the limit, then far above it (but under the upload limit).
+  expect_too_large(c.Post("/v1/radiance", std::string(kPayload + 1, ' '), "application/json"));
+  expect_too_large(c.Post("/v1/rgb", std::string(2u << 20, ' '), "application/json"));
+  expect_too_large(c.Post("/v1/jobs", std::string(1u << 20, ' '), "application/json"));
+  expect_too_large(c.Post("/v1/evaluations", std::string(kPayload + 10, ' '), "application/json"));
+  // At the limit the body is read (and is not a valid request: 400, not 413).
+  const auto at_limit = c.Post("/v1/jobs", std::string(kPayload, ' '), "application/json");
+  ASSERT_TRUE(at_limit);
+  EXPECT_EQ(at_limit->status, 400);
+  // The same connection still serves (keep-alive survives a drained 413).
+  EXPECT_EQ(c.Get("/v1/datasets")->status, 200);
+}
+
+TEST_F(BodyLimits, ChunkedBodiesAreLimitedOnArrival) {
+  auto c = client("t0ken");
+  const std::string chunk(16u << 10, ' ');
+  const auto r = c.Post(
+      "/v1/radiance",
+      [&](std::size_t, httplib::DataSink& sink) {
+        for (int i = 0; i < 16; ++i) sink.write(chunk.data(), chunk.size());  // 256 KiB
+        sink.done();
+        return true;
+      },
+      "application/json");
+  expect_too_large(r);
+}
+
+TEST_F(BodyLimits, AGetBodyAboveThePayloadLimitIsRefused) {
+  httplib::Client c("127.0.0.1", port);
+  httplib::Request req;
+  req.method = "GET";
+  req.path = "/v1/datasets";
+  req.body = std::string(kPayload + 100, 'x');
+  req.set_header("Content-Type", "text/plain");
+  // Sent whole before the answer is read (the server refuses it unread and closes).
+  const auto r = c.send(req);
+  if (!r) GTEST_SKIP() << "the connection was reset before the answer: " << httplib::to_string(r.error());
+  expect_too_large(r);
+}
+
+TEST_F(BodyLimits, UploadsHaveTheirOwnLimit) {
+  auto c = client("t0ken");
+  // Above the payload limit, below the upload limit: accepted, then imported (it is not an
+  // archive, so the import fails; nothing stays behind).
+  const auto accepted = c.Post("/v1/datasets?name=big", std::string(1u << 20, 'x'),
+                               "application/octet-stream");
+  ASSERT_TRUE(accepted);
+  ASSERT_EQ(accepted->status, 202) << accepted->body;
+  const auto state = finished_import(accepted);
+  EXPECT_EQ(state["status"], "failed");
+  EXPECT_EQ(state["error"]["code"], "invalid_archive");
+  EXPECT_EQ(state["upload_bytes"], 1u << 20);
+  // Above the upload limit: 413 whether declared or found on arrival.
+  expect_too_large(c.Post("/v1/datasets?name=huge", std::string(kUpload + 1, 'x'),
+                          "application/octet-stream"));
+  EXPECT_EQ(client().Get("/v1/datasets")->body, "[]");
+  EXPECT_EQ(body(client().Get("/v1/imports")).size(), 1u);  // the 413s started no import
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path / "uploads"));
+}
+
+}  // namespace
+}  // namespace clearsky::server
