@@ -6,6 +6,7 @@
 #include <pthread.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
@@ -25,6 +26,18 @@
 namespace clearsky::cli {
 
 namespace {
+
+// The registered models, or those named (--models), in registry order.
+std::vector<ModelFactory> served_models(const std::vector<std::string>& ids) {
+  const auto all = registered_models();
+  if (ids.empty()) return {all.begin(), all.end()};
+  for (const std::string& id : ids)
+    if (find_model(id) == nullptr) throw CLI::ValidationError("--models", "no model " + id);
+  std::vector<ModelFactory> chosen;
+  for (const ModelFactory& f : all)
+    if (std::find(ids.begin(), ids.end(), f.descriptor->id) != ids.end()) chosen.push_back(f);
+  return chosen;
+}
 
 void run_server(const server::ServerConfig& config, const std::string& software_version) {
   // Signals are taken by one thread with sigwait (a handler may not call into the server).
@@ -47,8 +60,8 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   options.retry_after_s = config.retry_after_s;
   options.builder_threads = config.builder_threads;
   options.cache = &cache;
-  const auto registered = registered_models();
-  server::TableStore tables({registered.begin(), registered.end()}, options);
+  const std::vector<ModelFactory> registered = served_models(config.models);
+  server::TableStore tables(registered, options);
   tables.set_build_observer([&metrics](const std::string& id, double seconds, bool from_cache) {
     metrics.observe_build(id, seconds, from_cache);
   });
@@ -162,6 +175,8 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
   add_database_option(*command, config->db_path);
   command->add_option("--cache-dir", config->cache_dir, "Disk cache of model tables")
       ->capture_default_str();
+  command->add_option("--models", config->models, "Serve only these models (default: all)")
+      ->delimiter(',');
   command
       ->add_option("--threads", config->threads,
                    "HTTP worker threads (0: 32 per core, at least 64)")

@@ -23,6 +23,7 @@
 // | s     | 5           | Retry-After of a 503                                   | |
 // builder_threads       |       | 1           | concurrent builds of the tables queued at start |
 // | token                 |       | (none)      | bearer token of the write endpoints; none: CLEARSKY_TOKEN, else writes disabled |
+// | models                |       | (all)       | serve only these model ids (tables, queries, evaluations) |
 // | max_upload_bytes      | byte  | 1 GiB       | dataset upload limit (POST /v1/datasets; 413 beyond); the other routes keep payload_max_bytes |
 // | import_workers        |       | 1           | background import threads (never HTTP workers) |
 // | import_queue          |       | 8           | imports waiting for a worker (503 beyond) |
@@ -34,6 +35,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace clearsky::server {
 
@@ -42,6 +44,7 @@ struct ServerConfig {
   int port = 8080;
   std::string db_path = "var/clearsky.db";
   std::string cache_dir = "var/cache";
+  std::vector<std::string> models;  // empty: every registered model
   unsigned threads = 0;
   std::size_t max_queued = 256;
   int listen_backlog = 1024;

@@ -34,7 +34,8 @@ std::string bytes_of(const std::filesystem::path& path) {
   return out.str();
 }
 
-// `clearsky serve` as a child process on a free port, its log in a file.
+// `clearsky serve` as a child process on a free port, its log in a file; one analytic model,
+// so that no table precomputation competes with the import.
 class ServeProcess {
  public:
   ServeProcess(const std::filesystem::path& dir, const std::filesystem::path& db) {
@@ -48,7 +49,7 @@ class ServeProcess {
       ::dup2(fd, 2);
       ::execl(binary.c_str(), "clearsky", "serve", "--host", "127.0.0.1", "--port", "0", "--db",
               db.c_str(), "--cache-dir", cache.c_str(), "--token", kToken, "--prebuild-three",
-              "false", static_cast<char*>(nullptr));
+              "false", "--models", "preetham", static_cast<char*>(nullptr));
       ::_exit(127);
     }
     // The port is in the start-up line of the log.
