@@ -182,6 +182,8 @@ void install_data_routes(httplib::Server& server, const DataServices& services,
         what.upload_bytes = static_cast<std::int64_t>(spool->size_bytes());
         source = spool->finish();
       }
+      if (s->imports == nullptr)
+        throw api::ApiError(503, "imports_unavailable", "", "this server runs no import workers");
       storage::Database db = connect(*s);
       const std::int64_t id = s->imports->submit(db, what, source, std::move(spool));
       res.set_header("Location", api::import_location(id));

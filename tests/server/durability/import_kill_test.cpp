@@ -54,7 +54,8 @@ class ServeProcess {
     }
     // The port is in the start-up line of the log.
     const std::string marker = "serving on http://127.0.0.1:";
-    for (int i = 0; i < 1000 && port_ == 0; ++i) {
+    const auto deadline = std::chrono::steady_clock::now() + 30s;
+    while (port_ == 0 && std::chrono::steady_clock::now() < deadline) {
       std::this_thread::sleep_for(10ms);
       const std::string text = bytes_of(log);
       const auto at = text.find(marker);
@@ -128,7 +129,9 @@ TEST(ImportDurability, ServerKilledDuringAnImportRestartsWithNothingPartial) {
     ASSERT_TRUE(accepted) << httplib::to_string(accepted.error());
     ASSERT_EQ(accepted->status, 202) << accepted->body;
     location = accepted->get_header_value("Location");
-    for (int i = 0; i < 3000; ++i) {
+    // Generous deadlines: sanitizer builds and parallel test runs are several times slower.
+    const auto deadline = std::chrono::steady_clock::now() + 60s;
+    while (std::chrono::steady_clock::now() < deadline) {
       at_kill = get_json(c, location);
       const auto& p = at_kill["progress"];
       if (at_kill["status"] == "running" && p.is_object() &&
@@ -159,7 +162,8 @@ TEST(ImportDurability, ServerKilledDuringAnImportRestartsWithNothingPartial) {
   ASSERT_TRUE(again);
   ASSERT_EQ(again->status, 202) << again->body;
   nlohmann::json done;
-  for (int i = 0; i < 3000; ++i) {
+  const auto deadline = std::chrono::steady_clock::now() + 180s;
+  while (std::chrono::steady_clock::now() < deadline) {
     done = get_json(c, again->get_header_value("Location"));
     if (done["status"] == "succeeded" || done["status"] == "failed") break;
     std::this_thread::sleep_for(10ms);
