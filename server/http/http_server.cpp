@@ -59,6 +59,32 @@ api::ApiRequest to_api_request(const httplib::Request& req) {
   return r;
 }
 
+// Whether path is one of the served POST routes; "{name}" segments match any segment.
+bool is_post_route(const std::string& path) {
+  const auto segments = [](std::string_view text) {
+    std::vector<std::string_view> parts;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+      const std::size_t end = std::min(text.find('/', start), text.size());
+      parts.push_back(text.substr(start, end - start));
+      start = end + 1;
+    }
+    return parts;
+  };
+  const auto requested = segments(path);
+  for (const auto& [method, route] : HttpServer::routes()) {
+    if (method != "POST") continue;
+    const auto pattern = segments(route);
+    if (pattern.size() != requested.size()) continue;
+    bool match = true;
+    for (std::size_t i = 0; i < pattern.size() && match; ++i)
+      match = pattern[i] == requested[i] || (pattern[i].size() > 2 && pattern[i].front() == '{' &&
+                                             !requested[i].empty());
+    if (match) return true;
+  }
+  return false;
+}
+
 std::shared_ptr<spdlog::logger> access_logger() {
   static std::shared_ptr<spdlog::logger> logger = [] {
     auto existing = spdlog::get("access");
@@ -142,15 +168,18 @@ void HttpServer::install_routes() {
   httplib::Server& s = *http_;
   const api::Limits limits{config_.max_views, config_.max_wavelengths, config_.max_skydome_size};
 
-  // Bodies of methods other than POST (which no route reads) are refused above the payload
-  // limit before they are read: cpp-httplib would buffer them whole up to the upload limit.
-  // The connection is closed, since the body is left unread. POST bodies are limited where they
-  // are read (read_limited_body; the upload route's spool).
+  // Bodies that no route reads (other methods, unknown POST paths) are refused above the
+  // payload limit before they are read: cpp-httplib would buffer them whole up to the upload
+  // limit. The connection is closed, since the body is left unread. The POST routes limit
+  // their bodies where they read them (read_limited_body; the upload route's spool).
   s.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
     current_request = {Clock::now(), {}};
-    if (req.method == "POST") return httplib::Server::HandlerResponse::Unhandled;
-    const bool chunked = req.get_header_value("Transfer-Encoding").find("chunked") != std::string::npos;
-    if (chunked || req.get_header_value<std::uint64_t>("Content-Length") > config_.payload_max_bytes) {
+    if (req.method == "POST" && is_post_route(req.path))
+      return httplib::Server::HandlerResponse::Unhandled;
+    const bool chunked =
+        req.get_header_value("Transfer-Encoding").find("chunked") != std::string::npos;
+    if (chunked ||
+        req.get_header_value<std::uint64_t>("Content-Length") > config_.payload_max_bytes) {
       send(res, api::error_response(api::too_large(
                     "body", "the request body is above the limit of " +
                                 std::to_string(config_.payload_max_bytes) + " bytes")));
