@@ -72,11 +72,8 @@ nlohmann::ordered_json list_imports(storage::Database& db, const ImportPool* poo
     }
   }
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
-  for (const storage::ImportRecord& r : storage::ImportRepository(db).list()) {
-    if (status && r.status != *status) continue;
-    if (dataset && r.what.dataset != *dataset) continue;
+  for (const storage::ImportRecord& r : storage::ImportRepository(db).list(100, status, dataset))
     out.push_back(import_to_json(r, pool ? pool->live_progress(r.id) : std::nullopt));
-  }
   return out;
 }
 

@@ -32,8 +32,8 @@ std::string import_location(std::int64_t id);
 nlohmann::ordered_json import_to_json(const storage::ImportRecord& record,
                                       const std::optional<storage::ImportProgress>& live = {});
 
-// Newest first; filters status and dataset from the query (400 for other parameters). pool
-// may be null (no live progress).
+// The 100 newest, newest first; filters status and dataset from the query (400 for other
+// parameters). pool may be null (no live progress).
 nlohmann::ordered_json list_imports(storage::Database& db, const ImportPool* pool,
                                     const std::vector<std::pair<std::string, std::string>>& query);
 // 404 unknown_import when absent.

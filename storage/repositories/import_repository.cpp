@@ -134,9 +134,21 @@ std::optional<ImportRecord> ImportRepository::get(std::int64_t id) {
   return read_import(statement);
 }
 
-std::vector<ImportRecord> ImportRepository::list(std::int64_t limit) {
-  auto statement = db_.prepare(std::string(kImportSelect) + " ORDER BY id DESC LIMIT ?");
-  statement.bind(1, limit);
+std::vector<ImportRecord> ImportRepository::list(std::int64_t limit,
+                                                const std::optional<std::string>& status,
+                                                const std::optional<std::string>& dataset) {
+  auto statement = db_.prepare(std::string(kImportSelect) +
+                               " WHERE (?1 IS NULL OR status = ?1) AND (?2 IS NULL OR dataset = ?2)"
+                               " ORDER BY id DESC LIMIT ?3");
+  if (status)
+    statement.bind(1, *status);
+  else
+    statement.bind_null(1);
+  if (dataset)
+    statement.bind(2, *dataset);
+  else
+    statement.bind_null(2);
+  statement.bind(3, limit);
   std::vector<ImportRecord> out;
   while (statement.step()) out.push_back(read_import(statement));
   return out;

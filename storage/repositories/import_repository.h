@@ -48,8 +48,10 @@ class ImportRepository {
   // them and their spool files are gone); returns how many.
   int fail_unfinished(const std::string& error_code, const std::string& error);
   std::optional<ImportRecord> get(std::int64_t id);
-  // Newest first; at most limit rows.
-  std::vector<ImportRecord> list(std::int64_t limit = 100);
+  // Newest first; at most limit rows; only those with the given status and dataset when set.
+  std::vector<ImportRecord> list(std::int64_t limit = 100,
+                                 const std::optional<std::string>& status = {},
+                                 const std::optional<std::string>& dataset = {});
 
  private:
   Database& db_;

@@ -93,6 +93,9 @@ TEST(ImportRepository, FailedKeepsTheErrorAndStartUpFailsUnfinished) {
   EXPECT_FALSE(list[0].what.upload_bytes);
   EXPECT_EQ(list[2].id, failed);
   EXPECT_EQ(imports.list(1).size(), 1u);
+  EXPECT_EQ(imports.list(100, "failed").size(), 3u);
+  EXPECT_EQ(imports.list(100, "failed", "b").at(0).id, running);
+  EXPECT_TRUE(imports.list(100, "running").empty());
   EXPECT_FALSE(imports.get(99));
 }
 
