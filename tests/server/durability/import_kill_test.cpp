@@ -150,6 +150,7 @@ TEST(ImportDurability, ServerKilledDuringAnImportRestartsWithNothingPartial) {
   ServeProcess server(dir.path, db);
   ASSERT_GT(server.port(), 0) << "the server did not restart";
   auto c = server.client();
+  ASSERT_EQ(get_json(c, "/v1/models")["models"].size(), 1u);  // --models preetham
   EXPECT_EQ(get_json(c, "/v1/datasets"), nlohmann::json::array());
   const nlohmann::json interrupted = get_json(c, location);
   EXPECT_EQ(interrupted["status"], "failed") << interrupted.dump();
