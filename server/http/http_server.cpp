@@ -189,6 +189,19 @@ void HttpServer::install_routes() {
     return httplib::Server::HandlerResponse::Unhandled;
   });
 
+  // A client that asks before sending its body (Expect: 100-continue, as curl does above
+  // 1 MB) learns of a body above the limit of its route at once and never sends it.
+  s.set_expect_100_continue_handler([this](const httplib::Request& req, httplib::Response& res) {
+    const bool upload = req.method == "POST" && req.path == "/v1/datasets";
+    const std::size_t limit = upload ? config_.max_upload_bytes : config_.payload_max_bytes;
+    if (req.get_header_value<std::uint64_t>("Content-Length") <= limit) return 100;
+    current_request = {Clock::now(), {}};
+    send(res, api::error_response(api::too_large(
+                  "body", std::string(upload ? "the upload" : "the request body") +
+                              " is above the limit of " + std::to_string(limit) + " bytes")));
+    return res.status;
+  });
+
   // The one exception handler: typed API errors keep their status; anything else is a 500
   // whose details go to the log, not to the client.
   s.set_exception_handler([](const httplib::Request& req, httplib::Response& res,

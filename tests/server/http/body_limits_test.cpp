@@ -2,8 +2,13 @@
 // dataset uploads have their own limit (max_upload_bytes) while every other route keeps the
 // small payload limit; above either the answer is 413 in the project's error format and the
 // client, still sending, reads it (the body is drained, not cut), whether the size is declared
-// (Content-Length) or only found on arrival (chunked).
+// (Content-Length) or only found on arrival (chunked); a client asking first (Expect:
+// 100-continue) is told before it sends the body.
+#include <arpa/inet.h>
 #include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include "tests/server/http/data_server_fixture.h"
 
@@ -95,6 +100,50 @@ TEST_F(BodyLimits, UploadsHaveTheirOwnLimit) {
   EXPECT_EQ(client().Get("/v1/datasets")->body, "[]");
   EXPECT_EQ(body(client().Get("/v1/imports")).size(), 1u);  // the 413s started no import
   EXPECT_TRUE(std::filesystem::is_empty(dir.path / "uploads"));
+}
+
+// The request head alone, with Expect: 100-continue; returns what the server answers before
+// any body byte is sent.
+std::string ask_before_sending(int port, const std::string& head) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(static_cast<std::uint16_t>(port));
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  std::string answer;
+  if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0 &&
+      ::send(fd, head.data(), head.size(), 0) == static_cast<ssize_t>(head.size())) {
+    timeval timeout{10, 0};
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
+    char buffer[4096];
+    // Up to the end of the headers of the first answer (and its small body if it came along).
+    while (answer.find("\r\n\r\n") == std::string::npos) {
+      const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
+      if (n <= 0) break;
+      answer.append(buffer, static_cast<std::size_t>(n));
+    }
+  }
+  ::close(fd);
+  return answer;
+}
+
+TEST_F(BodyLimits, ExpectContinueIsAnsweredByTheLimitOfTheRoute) {
+  const auto head = [](const std::string& target, std::size_t length) {
+    return "POST " + target +
+           " HTTP/1.1\r\nHost: 127.0.0.1\r\nAuthorization: Bearer t0ken\r\n"
+           "Content-Type: application/octet-stream\r\nContent-Length: " +
+           std::to_string(length) + "\r\nExpect: 100-continue\r\n\r\n";
+  };
+  // Above the payload limit on a query route, above the upload limit on the upload route: 413
+  // before the body is sent.
+  const auto answer = [this, &head](const std::string& target, std::size_t length) {
+    return ask_before_sending(port, head(target, length)).substr(0, 12);
+  };
+  EXPECT_EQ(answer("/v1/radiance", kPayload + 1), "HTTP/1.1 413");
+  EXPECT_EQ(answer("/v1/datasets?name=d", kUpload + 1), "HTTP/1.1 413");
+  // Within the limits: go on.
+  EXPECT_EQ(answer("/v1/radiance", kPayload), "HTTP/1.1 100");
+  EXPECT_EQ(answer("/v1/datasets?name=d", kPayload + 1), "HTTP/1.1 100");
 }
 
 }  // namespace
