@@ -1,6 +1,7 @@
 // Evaluation results and datasets as JSON (evaluation_json.h).
 #include "api/encode/evaluation_json.h"
 
+#include <charconv>
 #include <cmath>
 #include <stdexcept>
 
@@ -22,22 +23,56 @@ nlohmann::ordered_json number(double value) {
 
 }  // namespace
 
-nlohmann::ordered_json evaluation_to_json(const EvaluationReport& report) {
+nlohmann::ordered_json float_to_json(float value) {
+  if (!std::isfinite(value)) throw std::runtime_error("evaluation result: non-finite sample value");
+  char text[32];
+  const auto written = std::to_chars(text, text + sizeof text, value);
+  double shortest = 0;
+  std::from_chars(text, written.ptr, shortest);
+  return shortest;
+}
+
+nlohmann::ordered_json samples_to_json(const storage::SampleErrorTable& samples,
+                                       SampleDetail detail) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  if (detail == SampleDetail::none) return out;
+  for (std::size_t s = 0; s < samples.samples.size(); ++s) {
+    const storage::StoredSampleError& e = samples.samples[s];
+    nlohmann::ordered_json sample = {{"index", e.index},
+                                     {"view_zenith", float_to_json(e.view_zenith_deg)},
+                                     {"view_azimuth", float_to_json(e.view_azimuth_deg)},
+                                     {"rmse", finite(e.rmse, "sample RMSE")},
+                                     {"bias", finite(e.bias, "sample bias")}};
+    if (detail == SampleDetail::spectra) {
+      nlohmann::ordered_json errors = nlohmann::ordered_json::array();
+      for (float v : samples.errors_of(s)) errors.push_back(float_to_json(v));
+      sample["errors"] = std::move(errors);
+    }
+    out.push_back(std::move(sample));
+  }
+  return out;
+}
+
+nlohmann::ordered_json evaluation_to_json(const EvaluationReport& report, SampleDetail samples) {
   nlohmann::ordered_json models = nlohmann::ordered_json::array();
   for (const ModelRun& run : report.models) {
     const EvaluationResult& r = run.result;
     nlohmann::ordered_json captures = nlohmann::ordered_json::array();
     for (const CaptureEvaluation& c : r.captures) {
-      captures.push_back({{"time", c.time_iso},
-                          {"sun_zenith", finite(c.sun_zenith_deg, "sun zenith")},
-                          {"sun_azimuth", finite(c.sun_azimuth_deg, "sun azimuth")},
-                          {"rmse", finite(c.rmse, "capture RMSE")}});
+      nlohmann::ordered_json capture = {{"time", c.time_iso},
+                                        {"sun_zenith", finite(c.sun_zenith_deg, "sun zenith")},
+                                        {"sun_azimuth", finite(c.sun_azimuth_deg, "sun azimuth")},
+                                        {"rmse", finite(c.rmse, "capture RMSE")}};
+      if (samples != SampleDetail::none)
+        capture["samples"] = samples_to_json(stored_sample_errors(c), samples);
+      captures.push_back(std::move(capture));
     }
-    models.push_back({{"model", r.model_id},
-                      {"rmse", finite(r.rmse, "RMSE")},
-                      {"captures", std::move(captures)},
-                      {"precompute_seconds", finite(r.precompute_seconds, "precompute time")},
-                      {"evaluate_seconds", finite(r.evaluate_seconds, "evaluate time")}});
+    nlohmann::ordered_json model = {{"model", r.model_id}, {"rmse", finite(r.rmse, "RMSE")}};
+    if (samples == SampleDetail::spectra) model["wavelengths_nm"] = r.wavelengths_nm;
+    model["captures"] = std::move(captures);
+    model["precompute_seconds"] = finite(r.precompute_seconds, "precompute time");
+    model["evaluate_seconds"] = finite(r.evaluate_seconds, "evaluate time");
+    models.push_back(std::move(model));
   }
   return {
       {"dataset", report.dataset},

@@ -12,6 +12,19 @@
 
 namespace clearsky::api {
 
+storage::SampleErrorTable stored_sample_errors(const CaptureEvaluation& capture) {
+  storage::SampleErrorTable table;
+  const std::size_t n = capture.samples.size();
+  table.wavelength_count =
+      static_cast<std::uint32_t>(n == 0 ? 0 : capture.sample_errors.size() / n);
+  table.samples.reserve(n);
+  for (const SampleEvaluation& s : capture.samples)
+    table.samples.push_back({s.index, static_cast<float>(s.view_zenith_deg),
+                             static_cast<float>(s.view_azimuth_deg), s.rmse, s.bias});
+  table.errors.assign(capture.sample_errors.begin(), capture.sample_errors.end());
+  return table;
+}
+
 std::vector<const ModelFactory*> resolve_models(const std::vector<std::string>& requested,
                                                 std::span<const ModelFactory> available) {
   std::vector<const ModelFactory*> factories;
@@ -103,10 +116,11 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
         r.sun_azimuth_deg = c.sun_azimuth_deg;
         r.rmse = c.rmse;
         r.values_compared = static_cast<std::int64_t>(c.values_compared);
-        per_capture.push_back(r);
+        r.samples = stored_sample_errors(c);
+        per_capture.push_back(std::move(r));
       }
       runs.finish(run_id, result.rmse, result.precompute_seconds, result.evaluate_seconds, steps,
-                  per_capture);
+                  per_capture, result.wavelengths_nm);
       report.models.push_back({run_id, std::move(result)});
     } catch (const std::exception& e) {
       runs.fail(run_id, e.what());

@@ -14,6 +14,7 @@
 
 #include "models/core/sky_model.h"
 #include "models/evaluation/evaluate_model.h"
+#include "storage/repositories/sample_errors_blob.h"
 #include "storage/sqlite/database.h"
 
 namespace clearsky::api {
@@ -38,6 +39,10 @@ struct EvaluationReport {
   double max_wavelength_nm = 720;
   std::vector<ModelRun> models;  // in the order requested
 };
+
+// A capture's per-sample errors as they are stored with the run (sample_errors_blob.h): what
+// both the CLI's JSON and the API's answer are made of, so that the two agree to the bit.
+storage::SampleErrorTable stored_sample_errors(const CaptureEvaluation& capture);
 
 // The factories named by a --models value: "all" (every one of `available`) or ids; throws
 // std::invalid_argument naming unknown ids (before anything is computed).

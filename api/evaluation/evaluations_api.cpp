@@ -141,6 +141,28 @@ EvaluationFilter parse_evaluation_filter(
   return f;
 }
 
+ShowEvaluationOptions parse_show_evaluation_options(
+    const std::vector<std::pair<std::string, std::string>>& query) {
+  ShowEvaluationOptions options;
+  for (const auto& [name, value] : query) {
+    if (name == "samples") {
+      if (value == "spectra")
+        options.samples = SampleDetail::spectra;
+      else if (value == "true" || value == "1")
+        options.samples = SampleDetail::summary;
+      else if (value == "false" || value == "0" || value.empty())
+        options.samples = SampleDetail::none;
+      else
+        throw invalid_parameter(name, "\"" + value + "\" is not true, false or spectra");
+    } else if (name == "capture") {
+      options.capture = value;
+    } else {
+      throw unknown_parameter(name, "GET /v1/evaluations/{id}");
+    }
+  }
+  return options;
+}
+
 nlohmann::ordered_json list_evaluations(storage::Database& db, const EvaluationFilter& filter) {
   const auto names = dataset_names(db);
   if (filter.dataset) {
@@ -183,9 +205,10 @@ nlohmann::ordered_json list_evaluations(storage::Database& db, const EvaluationF
   return out;
 }
 
-nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_id) {
+nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_id,
+                                       const ShowEvaluationOptions& options) {
   storage::EvaluationRunRepository repository(db);
-  const auto run = repository.get(run_id);
+  const auto run = repository.get(run_id, options.samples != SampleDetail::none);
   if (!run)
     throw ApiError(404, "unknown_evaluation", "id", "id: no evaluation run " + std::to_string(run_id));
   const auto names = dataset_names(db);
@@ -211,34 +234,49 @@ nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_i
   for (std::string line; std::getline(lines, line);)
     if (!line.empty()) steps.push_back(line);
   nlohmann::ordered_json captures = nlohmann::ordered_json::array();
-  for (const storage::RunCaptureResult& c : run->captures)
-    captures.push_back({{"label", c.capture_label},
-                        {"time", format_iso8601_time(c.capture_time_utc_s, c.utc_offset_minutes)},
-                        {"sun_zenith", c.sun_zenith_deg},
-                        {"sun_azimuth", c.sun_azimuth_deg},
-                        {"rmse", c.rmse},
-                        {"values_compared", c.values_compared}});
+  for (const storage::RunCaptureResult& c : run->captures) {
+    if (options.capture && c.capture_label != *options.capture) continue;
+    nlohmann::ordered_json capture = {
+        {"label", c.capture_label},
+        {"time", format_iso8601_time(c.capture_time_utc_s, c.utc_offset_minutes)},
+        {"sun_zenith", c.sun_zenith_deg},
+        {"sun_azimuth", c.sun_azimuth_deg},
+        {"rmse", c.rmse},
+        {"values_compared", c.values_compared}};
+    if (options.samples != SampleDetail::none)
+      capture["samples"] = c.samples ? samples_to_json(*c.samples, options.samples)
+                                     : nlohmann::ordered_json(nullptr);
+    captures.push_back(std::move(capture));
+  }
+  if (options.capture && captures.empty())
+    throw ApiError(404, "unknown_capture", "capture",
+                   "capture: run " + std::to_string(run_id) + " has no capture '" +
+                       *options.capture + "'");
   const auto dataset = names.find(run->dataset_id);
-  return {{"id", run->id},
-          {"dataset", dataset == names.end() ? nlohmann::ordered_json(nullptr)
-                                             : nlohmann::ordered_json(dataset->second)},
-          {"model", run->model_id},
-          {"model_version", run->model_version},
-          {"parameters", run->parameters},
-          {"software_version", run->software_version},
-          {"wavelength_range_nm", {run->min_wavelength_nm, run->max_wavelength_nm}},
-          {"job", optional_value(run->job_id)},
-          {"status", run->status},
-          {"error", optional_value(run->error)},
-          {"started", run->started_utc},
-          {"finished", optional_value(run->finished_utc)},
-          {"rmse", optional_number(run->rmse)},
-          {"timings",
-           {{"precompute_seconds", optional_number(run->precompute_seconds)},
-            {"evaluate_seconds", optional_number(run->evaluate_seconds)}}},
-          {"processing_steps", std::move(steps)},
-          {"captures", std::move(captures)},
-          {"history", std::move(history)}};
+  nlohmann::ordered_json out = {
+      {"id", run->id},
+      {"dataset", dataset == names.end() ? nlohmann::ordered_json(nullptr)
+                                         : nlohmann::ordered_json(dataset->second)},
+      {"model", run->model_id},
+      {"model_version", run->model_version},
+      {"parameters", run->parameters},
+      {"software_version", run->software_version},
+      {"wavelength_range_nm", {run->min_wavelength_nm, run->max_wavelength_nm}}};
+  if (options.samples == SampleDetail::spectra)
+    out["wavelengths_nm"] =
+        run->wavelengths_nm ? nlohmann::ordered_json(*run->wavelengths_nm) : nullptr;
+  out["job"] = optional_value(run->job_id);
+  out["status"] = run->status;
+  out["error"] = optional_value(run->error);
+  out["started"] = run->started_utc;
+  out["finished"] = optional_value(run->finished_utc);
+  out["rmse"] = optional_number(run->rmse);
+  out["timings"] = {{"precompute_seconds", optional_number(run->precompute_seconds)},
+                    {"evaluate_seconds", optional_number(run->evaluate_seconds)}};
+  out["processing_steps"] = std::move(steps);
+  out["captures"] = std::move(captures);
+  out["history"] = std::move(history);
+  return out;
 }
 
 }  // namespace clearsky::api

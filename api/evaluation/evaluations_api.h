@@ -11,6 +11,12 @@
 //           "timings": {"precompute_seconds", "evaluate_seconds"}, "processing_steps": [...],
 //           "captures": [{"label", "time", "sun_zenith", "sun_azimuth", "rmse",
 //           "values_compared"}], "history": {"previous_run", "previous_rmse", "rmse_changed"}}
+//          samples=true adds to each capture "samples": [{"index", "view_zenith", "view_azimuth",
+//          "rmse", "bias"}] (null for runs stored before per-sample errors were kept, schema
+//          version 1); samples=spectra also adds each sample's "errors" (model - measured) and
+//          the run's "wavelengths_nm" after "wavelength_range_nm" (null likewise); capture=LABEL
+//          keeps that capture only (404 when the run has none of that label). Without samples
+//          the answer is as before (api/encode/evaluation_json.h for the sample values).
 // "history" compares with the newest earlier succeeded run of the same dataset, model,
 // parameters and wavelength range (rmse_changed: relative difference above 1e-9; null when
 // there is no such run or this run did not succeed). RMSE in mW/(m2.sr.nm), angles in degrees.
@@ -25,6 +31,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "api/encode/evaluation_json.h"
 #include "api/evaluation/evaluation_runner.h"
 #include "storage/sqlite/database.h"
 
@@ -51,8 +58,17 @@ struct EvaluationFilter {
 EvaluationFilter parse_evaluation_filter(
     const std::vector<std::pair<std::string, std::string>>& query);
 
+struct ShowEvaluationOptions {
+  SampleDetail samples = SampleDetail::none;
+  std::optional<std::string> capture;  // one capture by label
+};
+// samples (true, false, spectra) and capture from query parameters (400 for others).
+ShowEvaluationOptions parse_show_evaluation_options(
+    const std::vector<std::pair<std::string, std::string>>& query);
+
 nlohmann::ordered_json list_evaluations(storage::Database& db, const EvaluationFilter& filter);
-nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_id);
+nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_id,
+                                       const ShowEvaluationOptions& options = {});
 
 // A run id from a path segment (400 when not a positive integer).
 std::int64_t parse_id(const std::string& text, const std::string& parameter);

@@ -127,13 +127,29 @@ void add_data_paths(json& paths) {
         {{"202", ok("{ticket, status, runs, location}")},
          {"404", error("Unknown dataset or model")},
          {"503", error("The evaluation queue is full")}}}});
+  json samples = query("samples", "string",
+                       "true: each capture adds \"samples\": [{index, view_zenith, view_azimuth, "
+                       "rmse, bias}] (degrees, azimuth clockwise from North; RMSE over the run's "
+                       "wavelengths and bias = mean of model - measured, mW/(m2.sr.nm)); "
+                       "spectra: each sample also adds \"errors\" (model - measured at each of "
+                       "the run's \"wavelengths_nm\", added after wavelength_range_nm); false "
+                       "(default): neither. For runs stored before per-sample errors were kept, "
+                       "\"samples\" and \"wavelengths_nm\" are null");
+  samples["schema"]["enum"] = json::array({"false", "true", "spectra"});
   paths["/v1/evaluations/{id}"]["get"] = {
       {"summary",
-       "One run: total and per-capture RMSE (mW/(m2.sr.nm)), timings, parameters, software "
-       "version, and whether the RMSE changed against the last run with the same model and "
-       "parameters"},
-      {"parameters", json::array({in_path("id", "Run id")})},
-      {"responses", {{"200", ok("Run")}, {"404", error("Unknown run")}}}};
+       "One run: total and per-capture RMSE (mW/(m2.sr.nm)), per-sample errors on request, "
+       "timings, parameters, software version, and whether the RMSE changed against the last "
+       "run with the same model and parameters"},
+      {"parameters",
+       json::array({in_path("id", "Run id"), samples,
+                    query("capture", "string", "Only the capture with this label")})},
+      {"responses",
+       {{"200", ok("Run: {id, dataset, model, ..., wavelength_range_nm, [wavelengths_nm], "
+                   "rmse, timings, captures: [{label, time, sun_zenith, sun_azimuth, rmse, "
+                   "values_compared, [samples]}], history}")},
+        {"400", error("Unknown parameter or samples value")},
+        {"404", error("Unknown run, or no capture of that label in the run")}}}};
   paths["/v1/evaluations/tickets/{ticket}"]["get"] = {
       {"summary", "State of a started evaluation: queued, running, succeeded or failed, run ids"},
       {"parameters", json::array({in_path("ticket", "Ticket from POST /v1/evaluations")})},

@@ -32,6 +32,12 @@ ParameterSpec integer_option(std::string name, std::string description, double v
   return p;
 }
 
+// The 2008 code's range: mu_s clamped to -0.1975 before lookup (101.39 degrees). A function,
+// not a constant, so that descriptors built during static initialisation see its value.
+double default_max_sun_zenith_deg() {
+  return radians_to_degrees(bruneton::SunRange::legacy().max_sun_zenith_rad());
+}
+
 ParameterSpec atmosphere_parameter(std::string name, std::string description, double value,
                                    double min, double max) {
   ParameterSpec p;
@@ -91,7 +97,8 @@ const ModelDescriptor& bruneton_descriptor() {
         "scattering and "
         "the irradiance, as the 2016 study ran it on 40 wavelengths (the original used 3). O(1) "
         "queries from the "
-        "ground to space, aerial perspective, sun up to 101.39 degrees zenith.";
+        "ground to space, aerial perspective, sun up to 101.39 degrees zenith (up to 120 with "
+        "the option max_sun_zenith_deg, which widens the tables' sun axis).";
     m.parameters = {
         integer_option("scattering_orders",
                        "orders of scattering precomputed (1: single scattering)", 4, 1, 10),
@@ -102,6 +109,19 @@ const ModelDescriptor& bruneton_descriptor() {
                        2, 128),
         integer_option("table_nu_size", "4D tables: number of view-sun angle cosines (RES_NU)", 8,
                        2, 64),
+        [] {
+          ParameterSpec p;
+          p.name = "max_sun_zenith_deg";
+          p.unit = "deg";
+          p.description =
+              "largest sun zenith angle the tables cover; the default (acos(-0.1975)) is the "
+              "2008 code's sun mapping, any other value spreads the same number of sun texels "
+              "(table_mu_s_size) from the zenith to that angle";
+          p.default_value = default_max_sun_zenith_deg();
+          p.min_value = 95.0;
+          p.max_value = 120.0;
+          return p;
+        }(),
         atmosphere_parameter("alpha", "Angstrom exponent of the aerosols", 0.8, 0.0, 4.0),
         atmosphere_parameter("beta", "Angstrom turbidity (aerosol optical depth at 1 um)", 0.04,
                              0.0, 2.0),
@@ -114,7 +134,7 @@ const ModelDescriptor& bruneton_descriptor() {
     m.capabilities.view_from_space = true;
     m.capabilities.view_below_horizon = true;
     m.capabilities.aerial_perspective = true;
-    m.capabilities.max_sun_zenith_deg = radians_to_degrees(bruneton::max_sun_zenith_rad());
+    m.capabilities.max_sun_zenith_deg = default_max_sun_zenith_deg();
     m.capabilities.scattering_orders = 4;
     m.capabilities.per_sun_precomputation = false;
     return m;
@@ -138,6 +158,11 @@ bruneton::Resolution BrunetonModel::resolution(const ModelDescriptor& descriptor
   res.mu_s = static_cast<int>(option_or_default(descriptor, config, "table_mu_s_size"));
   res.nu = static_cast<int>(option_or_default(descriptor, config, "table_nu_size"));
   if (res.mu % 2 != 0) throw std::invalid_argument("table_mu_size: must be even");
+  const double max_sun_zenith_deg = option_or_default(descriptor, config, "max_sun_zenith_deg");
+  // Within rounding of the default: the 2008 mapping, so that an explicit default shares its
+  // tables.
+  if (std::abs(max_sun_zenith_deg - default_max_sun_zenith_deg()) > 1e-9)
+    res.sun = bruneton::SunRange::up_to(degrees_to_radians(max_sun_zenith_deg));
   return res;
 }
 
@@ -150,6 +175,11 @@ std::string BrunetonModel::table_description(const ModelConfig& config) {
       << ";atmosphere=" << config.atmosphere.canonical_string()
       << ";grid=" << config.wavelengths.canonical_string() << ";orders=" << res.orders
       << ";r=" << res.r << ";mu=" << res.mu << ";mu_s=" << res.mu_s << ";nu=" << res.nu;
+  // Only an extended sun range is written, so that the default keys of the 2008 mapping stay.
+  if (res.sun.extended) {
+    out.precision(17);
+    out << ";mu_s_min=" << res.sun.lookup_min_mu_s;
+  }
   return out.str();
 }
 
@@ -166,7 +196,7 @@ std::shared_ptr<const BrunetonModel> BrunetonModel::create(const ModelDescriptor
 
 BrunetonModel::BrunetonModel(const ModelDescriptor& descriptor, ModelConfig config,
                              const PrecomputeContext& context)
-    : SkyModel(std::move(config)), descriptor_(&descriptor) {
+    : SkyModel(std::move(config)), descriptor_(descriptor) {
   const auto start = std::chrono::steady_clock::now();
   const bruneton::Resolution res = resolution(descriptor, this->config());
   const std::string description = table_description(this->config());
@@ -174,7 +204,7 @@ BrunetonModel::BrunetonModel(const ModelDescriptor& descriptor, ModelConfig conf
   std::optional<bruneton::Tables> cached;
   if (context.cache != nullptr) {
     if (std::optional<std::string> blob = context.cache->load(key)) {
-      cached = bruneton::deserialise_tables(*blob, description);
+      cached = bruneton::deserialise_tables(*blob, description, res.sun);
     }
   }
   if (cached) {
@@ -185,6 +215,8 @@ BrunetonModel::BrunetonModel(const ModelDescriptor& descriptor, ModelConfig conf
     if (context.cache != nullptr)
       context.cache->store(key, bruneton::serialise_tables(tables_, description));
   }
+  descriptor_.capabilities.max_sun_zenith_deg =
+      radians_to_degrees(tables_.resolution.sun.max_sun_zenith_rad());
   solar_ = padded(atmosphere().solar_irradiance_w_m2_nm, tables_.stride);
   albedo_over_pi_ = padded(atmosphere().ground_albedo * (1.0 / kPi), tables_.stride);
   precompute_seconds_ =
@@ -240,7 +272,8 @@ void BrunetonModel::compute_sky_radiance(const SunState& sun, const Viewpoint& v
   const double r_lookup = std::max(r, g.bottom_m);
   const bruneton::Axis r_axis = bruneton::r_axis_4d(r_lookup, tables_.resolution, g);
   const bruneton::Axis mu_s_axis = bruneton::texture_axis(
-      bruneton::u_mu_s(mu_s, tables_.resolution.mu_s), tables_.resolution.mu_s);
+      bruneton::u_mu_s(mu_s, tables_.resolution.mu_s, tables_.resolution.sun),
+      tables_.resolution.mu_s);
   const double mu_horizon = bruneton::horizon_mu(r_lookup, g);
   for (std::size_t i = 0; i < views.size(); ++i) {
     const double mu = std::cos(views[i].zenith_rad);

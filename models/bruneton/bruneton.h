@@ -3,19 +3,22 @@
 // of scattering precomputed into 4D tables over (r, mu, mu_s, nu), then O(1) queries from the
 // ground to space, with aerial perspective and the sun below the horizon.
 //
-// | parameter           | unit | default | range      | meaning |
-// |---------------------|------|---------|------------|---------------------------------------------|
-// | scattering_orders   | -    | 4       | [1, 10]    | orders of scattering precomputed | |
-// table_r_size        | -    | 32      | [2, 128]   | 4D tables: altitudes (RES_R) | |
-// table_mu_size       | -    | 128     | [4, 512]   | 4D tables: view zenith cosines (RES_MU,
-// even)| | table_mu_s_size     | -    | 32      | [2, 128]   | 4D tables: sun zenith cosines
-// (RES_MU_S)     | | table_nu_size       | -    | 8       | [2, 64]    | 4D tables: view-sun angle
-// cosines (RES_NU)   | plus the shared atmosphere (alpha, beta, g, albedo; AtmosphereParameters).
+// | parameter          | unit | default | range    | meaning                                  |
+// |--------------------|------|---------|----------|------------------------------------------|
+// | scattering_orders  | -    | 4       | 1..10    | orders of scattering precomputed         |
+// | table_r_size       | -    | 32      | 2..128   | 4D tables: altitudes (RES_R)             |
+// | table_mu_size      | -    | 128     | 4..512   | 4D tables: view zenith cosines (even)    |
+// | table_mu_s_size    | -    | 32      | 2..128   | 4D tables: sun zenith cosines (RES_MU_S) |
+// | table_nu_size      | -    | 8       | 2..64    | 4D tables: view-sun cosines (RES_NU)     |
+// | max_sun_zenith_deg | deg  | 101.39  | 95..120  | sun range of the 4D and irradiance tables|
+// plus the shared atmosphere (alpha, beta, g, albedo; AtmosphereParameters).
 //
-// Limits: the tables hold mu_s >= -0.1975, so the sun is answered up to 101.39 degrees zenith
-// (11.39 degrees below the horizon); beyond, the lookup would silently repeat that value, so
-// the descriptor refuses it. Observer altitudes 0 .. 1e8 m; above the top of the atmosphere
-// the view ray is moved to where it enters the atmosphere.
+// Limits: by default the tables hold mu_s >= -0.1975 (the 2008 code), so the sun is answered up
+// to 101.39 degrees zenith; max_sun_zenith_deg (up to 120) spreads the same sun texels over a
+// wider range (README "Twilight"). Beyond the range the lookup would silently repeat the edge
+// value, so the model refuses it (its descriptor's capabilities.max_sun_zenith_deg follows the
+// option). Observer altitudes 0 .. 1e8 m; above the top of the atmosphere the view ray is moved
+// to where it enters the atmosphere.
 //
 // Thread-safety: immutable after construction; all queries are const and thread-safe.
 #pragma once
@@ -37,7 +40,9 @@ class BrunetonModel : public SkyModel {
                                                      const ModelConfig& config,
                                                      const PrecomputeContext& context);
 
-  const ModelDescriptor& descriptor() const override { return *descriptor_; }
+  // The descriptor it was created with, its capabilities.max_sun_zenith_deg set to what the
+  // tables cover (option max_sun_zenith_deg).
+  const ModelDescriptor& descriptor() const override { return descriptor_; }
   std::size_t table_bytes() const override { return tables_.bytes(); }
   const bruneton::Tables& tables() const { return tables_; }
   // Whether the tables came from the cache, and the wall time to obtain them (s).
@@ -59,7 +64,8 @@ class BrunetonModel : public SkyModel {
   // in-scattered radiance between observer and point (all orders) and the transmittance to the
   // point. The ground's own radiance is not included.
   ScatteringAlongRay compute_aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
-                                                const ViewDirection& view, double distance_m) const override;
+                                                const ViewDirection& view,
+                                                double distance_m) const override;
   void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
                             std::span<const ViewDirection> views,
                             SpectralBatch& out) const override;
@@ -81,7 +87,7 @@ class BrunetonModel : public SkyModel {
   // the ground), attenuated, added to out.
   void add_ground(double r, double mu, double mu_s, double nu, float* out) const;
 
-  const ModelDescriptor* descriptor_;
+  ModelDescriptor descriptor_;
   bruneton::Tables tables_;
   std::vector<float> solar_;  // padded
   std::vector<float> albedo_over_pi_;

@@ -20,6 +20,31 @@
 
 namespace clearsky::bruneton {
 
+// The range of sun zenith cosines the tables cover (the 4D tables' mu_s axis and the
+// irradiance table's), paper section 4 "parameterization" and the 2008 code's mu_s mapping:
+//   mu_s(x) = tan((2 x - 1 + c) a) / tan((1 + c) a),  x = i / (RES_MU_S - 1) in [0, 1], a = 1.1,
+// dense near the horizon. The 2008 code (and the study) use c = 0.26: x = 0 holds mu_s = -0.1979,
+// lookups clamp mu_s to -0.1975 (the sun up to 101.39 degrees zenith), and the irradiance table
+// spans mu_s in [-0.2, 1]. The extended range (max_sun_zenith_deg) solves c so that x = 0 holds
+// mu_s_min = cos(max sun zenith) exactly; lookups clamp to mu_s_min and the irradiance table
+// spans [mu_s_min, 1]. c falls from 0.26 as the range grows (0.185 for 110 degrees, 0.124 for
+// 120), which spreads the texels over the wider range: their spacing at the horizon grows from
+// 0.0133 (32 texels) to 0.0194 (110 degrees) and 0.0247 (120 degrees).
+struct SunRange {
+  double offset = 0.26;                     // c
+  double tan_scale = std::tan(1.26 * 1.1);  // tan((1 + c) a), the 2008 literals for the default
+  double lookup_min_mu_s = -0.1975;         // mu_s is clamped to this before a 4D lookup
+  double irradiance_min_mu_s = -0.2;        // irradiance table: mu_s at texel 0
+  double irradiance_span = 1.2;             // 1 - irradiance_min_mu_s
+  bool extended = false;                    // false: the 2008 mapping (the default)
+
+  // The 2008 mapping, bit for bit.
+  static SunRange legacy() { return SunRange{}; }
+  // The sun up to max_sun_zenith_rad (in (pi / 2, pi)), with the 4D tables' first texel there.
+  static SunRange up_to(double max_sun_zenith_rad);
+  double max_sun_zenith_rad() const { return std::acos(lookup_min_mu_s); }
+};
+
 // Table resolutions and integration sample counts (defaults: the 2008 code and the study).
 struct Resolution {
   int transmittance_mu = 256;  // TRANSMITTANCE_W
@@ -36,6 +61,7 @@ struct Resolution {
   int irradiance_samples =
       32;          // irradiance: irradiance_samples/2 zeniths x 2 irradiance_samples azimuths
   int orders = 4;  // scattering orders (1 = single scattering only)
+  SunRange sun;    // the mu_s range of the 4D and irradiance tables
 
   long long texels_4d() const { return 1LL * r * mu * mu_s * nu; }
 };
@@ -122,14 +148,19 @@ inline double transmittance_u_r(double r, const ShellGeometry& g) {
 }
 
 // --- Irradiance table --------------------------------------------------------------------
-// Texel (i, j) holds mu_s = -0.2 + 1.2 i / (W - 1), r = Rg + j / (H - 1) (Rt - Rg), but is
-// read at u = (mu_s + 0.2) / 1.2 with texture semantics: the original code's half-texel
-// mismatch, kept because the study's numbers include it.
-inline double irradiance_texel_mu_s(int i, int width) { return -0.2 + 1.2 * i / (width - 1.0); }
+// Texel (i, j) holds mu_s = m + (1 - m) i / (W - 1) (m = -0.2 in the 2008 code, SunRange),
+// r = Rg + j / (H - 1) (Rt - Rg), but is read at u = (mu_s - m) / (1 - m) with texture
+// semantics: the original code's half-texel mismatch, kept because the study's numbers
+// include it.
+inline double irradiance_texel_mu_s(int i, int width, const SunRange& s) {
+  return s.irradiance_min_mu_s + s.irradiance_span * i / (width - 1.0);
+}
 inline double irradiance_texel_r(int j, int height, const ShellGeometry& g) {
   return g.bottom_m + j / (height - 1.0) * (g.top_m - g.bottom_m);
 }
-inline double irradiance_u_mu_s(double mu_s) { return (mu_s + 0.2) / 1.2; }
+inline double irradiance_u_mu_s(double mu_s, const SunRange& s) {
+  return (mu_s - s.irradiance_min_mu_s) / s.irradiance_span;
+}
 inline double irradiance_u_r(double r, const ShellGeometry& g) {
   return (r - g.bottom_m) / (g.top_m - g.bottom_m);
 }
@@ -170,21 +201,43 @@ inline double texel_mu(int j, int res_mu, const Layer& l, const ShellGeometry& g
   return std::min((g.top_m * g.top_m - l.r * l.r - d * d) / (2.0 * l.r * d), 1.0);
 }
 
-// The 2008 code's "better" mu_s mapping: mu_s = tan((2 x - 1 + 0.26) 1.1) / tan(1.26 1.1).
+// The 2008 code's "better" mu_s mapping, generalised by SunRange:
+// mu_s = tan((2 x - 1 + c) 1.1) / tan((1 + c) 1.1).
 inline constexpr double kMuSAngle = 1.1;
-inline constexpr double kMinLookupMuS = -0.1975;  // mu_s is clamped to this before lookup
-inline double texel_mu_s(int i, int res_mu_s) {
+inline constexpr double kMinLookupMuS = -0.1975;  // the 2008 code's clamp before lookup
+inline double texel_mu_s(int i, int res_mu_s, const SunRange& s) {
   const double x = i / (res_mu_s - 1.0);
-  return std::tan((2.0 * x - 1.0 + 0.26) * kMuSAngle) / std::tan(1.26 * kMuSAngle);
+  return std::tan((2.0 * x - 1.0 + s.offset) * kMuSAngle) / s.tan_scale;
 }
 // nu linear over the slices.
 inline double texel_nu(int k, int res_nu) { return -1.0 + 2.0 * k / (res_nu - 1.0); }
 
-inline double u_mu_s(double mu_s, int res_mu_s) {
-  return 0.5 / res_mu_s +
-         (std::atan(std::max(mu_s, kMinLookupMuS) * std::tan(1.26 * kMuSAngle)) / kMuSAngle +
-          (1.0 - 0.26)) *
-             0.5 * (1.0 - 1.0 / res_mu_s);
+inline double u_mu_s(double mu_s, int res_mu_s, const SunRange& s) {
+  return 0.5 / res_mu_s + (std::atan(std::max(mu_s, s.lookup_min_mu_s) * s.tan_scale) / kMuSAngle +
+                           (1.0 - s.offset)) *
+                              0.5 * (1.0 - 1.0 / res_mu_s);
+}
+
+inline SunRange SunRange::up_to(double max_sun_zenith_rad) {
+  const double target = std::cos(max_sun_zenith_rad);
+  // mu_s(0) = tan((c - 1) a) / tan((1 + c) a) rises monotonically from -1 at c = 0 to 0 at
+  // c = pi / (2 a) - 1, where tan((1 + c) a) diverges: bisection for mu_s(0) = target.
+  auto first_texel = [](double c) {
+    return std::tan((c - 1.0) * kMuSAngle) / std::tan((1.0 + c) * kMuSAngle);
+  };
+  double lo = 0.0, hi = kPi / (2.0 * kMuSAngle) - 1.0;
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (first_texel(mid) < target ? lo : hi) = mid;
+  }
+  SunRange s;
+  s.offset = 0.5 * (lo + hi);
+  s.tan_scale = std::tan((1.0 + s.offset) * kMuSAngle);
+  s.lookup_min_mu_s = target;
+  s.irradiance_min_mu_s = target;
+  s.irradiance_span = 1.0 - target;
+  s.extended = true;
+  return s;
 }
 
 // Where (r, mu, mu_s, nu) falls in a 4D table (the 2008 code's texture4D).
@@ -235,10 +288,7 @@ inline Axis nu_axis_4d(double nu, const Resolution& res) {
 inline Coord4 coordinates_4d(double r, double mu, double mu_s, double nu, const Resolution& res,
                              const ShellGeometry& g) {
   return {r_axis_4d(r, res, g), mu_axis_4d(r, mu, res, g),
-          texture_axis(u_mu_s(mu_s, res.mu_s), res.mu_s), nu_axis_4d(nu, res)};
+          texture_axis(u_mu_s(mu_s, res.mu_s, res.sun), res.mu_s), nu_axis_4d(nu, res)};
 }
-
-// The largest sun zenith angle the tables cover: mu_s is clamped to -0.1975 before lookup.
-inline double max_sun_zenith_rad() { return std::acos(kMinLookupMuS); }
 
 }  // namespace clearsky::bruneton

@@ -135,7 +135,8 @@ std::string serialise_tables(const Tables& tables, std::string_view description)
   return std::move(w.str());
 }
 
-std::optional<Tables> deserialise_tables(std::string_view bytes, std::string_view description) {
+std::optional<Tables> deserialise_tables(std::string_view bytes, std::string_view description,
+                                         const SunRange& sun) {
   if (bytes.size() < sizeof(kMagic) + 8 + sizeof(std::uint64_t)) return std::nullopt;
   // The checksum first: nothing of a corrupt blob is interpreted.
   const std::string_view body = bytes.substr(0, bytes.size() - sizeof(std::uint64_t));
@@ -165,6 +166,7 @@ std::optional<Tables> deserialise_tables(std::string_view bytes, std::string_vie
     if (!r.value(v) || v <= 0 || v > 100000) return std::nullopt;
     *resolution_fields(t.resolution, i) = v;
   }
+  t.resolution.sun = sun;
   const Resolution& res = t.resolution;
   if (res.texels_4d() > (1LL << 28)) return std::nullopt;
   if (!r.value(t.geometry.bottom_m) || !r.value(t.geometry.top_m) || !r.value(t.geometry.limit_m))

@@ -116,7 +116,8 @@ void Tables::transmittance_between(double r, double mu, double d, float* out) co
 }
 
 void Tables::irradiance(double r, double mu_s, float* out) const {
-  lookup_2d(sky_irradiance, irradiance_u_mu_s(mu_s), irradiance_u_r(r, geometry), out);
+  lookup_2d(sky_irradiance, irradiance_u_mu_s(mu_s, resolution.sun), irradiance_u_r(r, geometry),
+            out);
 }
 
 void Tables::scattering(double r, double mu, double mu_s, double nu, double mie_g,
@@ -233,7 +234,7 @@ struct Builder {
     for (int j = 0; j < res.irradiance_r; ++j) {
       const double r = irradiance_texel_r(j, res.irradiance_r, g);
       for (int i = 0; i < res.irradiance_mu_s; ++i) {
-        const double mu_s = irradiance_texel_mu_s(i, res.irradiance_mu_s);
+        const double mu_s = irradiance_texel_mu_s(i, res.irradiance_mu_s, res.sun);
         float* out = e.texel(i, j);
         t.transmittance_to_top(r, mu_s, out);
         const float cosine = static_cast<float>(std::max(mu_s, 0.0));
@@ -295,7 +296,7 @@ struct Builder {
       for (int knu = 0; knu < res.nu; ++knu) {
         const double nu = texel_nu(knu, res.nu);
         for (int ms = 0; ms < res.mu_s; ++ms) {
-          const double mu_s = texel_mu_s(ms, res.mu_s);
+          const double mu_s = texel_mu_s(ms, res.mu_s, res.sun);
           float* acc_r = out_r.data() + (static_cast<std::size_t>(knu) * res.mu_s + ms) * stride;
           float* acc_m = out_m.data() + (static_cast<std::size_t>(knu) * res.mu_s + ms) * stride;
           for (int i = 0; i <= n; ++i) {
@@ -481,7 +482,7 @@ struct Builder {
           // Light reflected by the ground point seen in direction w (Lambertian, delta E of
           // the previous order at the ground, for the sun at gnormal . s).
           const double mu_ground = (r * mu_s + d_ground[i] * nu1) / g.bottom_m;
-          const Axis e = texture_axis(irradiance_u_mu_s(mu_ground), n_e);
+          const Axis e = texture_axis(irradiance_u_mu_s(mu_ground, res.sun), n_e);
           const std::size_t c0 = static_cast<std::size_t>(i) * n_e + e.i0;
           const std::size_t c1 = static_cast<std::size_t>(i) * n_e + e.i1;
           g_r[c0] += (1.0 - e.f) * pr;
@@ -508,7 +509,7 @@ struct Builder {
     const int n_nu = res.nu;
     const double dtheta = kPi / n_theta;
     const double dphi = kPi / n_theta;
-    const double mu_s = std::clamp(texel_mu_s(ms, res.mu_s), -1.0, 1.0);
+    const double mu_s = std::clamp(texel_mu_s(ms, res.mu_s, res.sun), -1.0, 1.0);
     std::vector<float> profile_a, profile_b;
     build_profiles(source, r, mu_s, cos_t, profile_a, profile_b);
     const std::size_t n_dir = static_cast<std::size_t>(n_theta) * n_phi;
@@ -617,7 +618,7 @@ struct Builder {
                const int i = static_cast<int>(texel % res.irradiance_mu_s);
                const int j = static_cast<int>(texel / res.irradiance_mu_s);
                const double r = irradiance_texel_r(j, res.irradiance_r, g);
-               const double mu_s = irradiance_texel_mu_s(i, res.irradiance_mu_s);
+               const double mu_s = irradiance_texel_mu_s(i, res.irradiance_mu_s, res.sun);
                const double sx = std::sqrt(1.0 - mu_s * mu_s);
                std::vector<float> profile_a, profile_b;
                build_profiles(source, r, mu_s, cos_t, profile_a, profile_b);
@@ -679,12 +680,12 @@ struct Builder {
         const double nu = texel_nu(knu, res.nu);
         const Axis nu_axis = nu_axis_4d(nu, res);
         for (int ms = 0; ms < res.mu_s; ++ms) {
-          const double mu_s = texel_mu_s(ms, res.mu_s);
+          const double mu_s = texel_mu_s(ms, res.mu_s, res.sun);
           float* acc = values.data() + (static_cast<std::size_t>(knu) * res.mu_s + ms) * stride;
           for (int i = 0; i <= n; ++i) {
             const double mu_s_i = (nu * s.t[i] + mu_s * r) / radius[i];
-            const Coord4 c{r_axis[i], mu_axis[i], texture_axis(u_mu_s(mu_s_i, res.mu_s), res.mu_s),
-                           nu_axis};
+            const Coord4 c{r_axis[i], mu_axis[i],
+                           texture_axis(u_mu_s(mu_s_i, res.mu_s, res.sun), res.mu_s), nu_axis};
             list.clear();
             gather_4d(j_table, c, 1.0, list);
             list.sum(stride, sample.data());

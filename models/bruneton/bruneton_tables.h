@@ -169,7 +169,9 @@ Tables precompute_tables(const AtmosphereSpectra& spectra, const Resolution& res
 inline constexpr std::uint32_t kTableFormatVersion = 1;
 std::string serialise_tables(const Tables& tables, std::string_view description);
 // Nothing unless bytes is a complete, uncorrupted blob of this format version built for
-// exactly this description.
-std::optional<Tables> deserialise_tables(std::string_view bytes, std::string_view description);
+// exactly this description. The sun range is not in the blob (the default blob layout predates
+// it): the description names it, and the caller passes the one the description names.
+std::optional<Tables> deserialise_tables(std::string_view bytes, std::string_view description,
+                                         const SunRange& sun = SunRange::legacy());
 
 }  // namespace clearsky::bruneton

@@ -12,6 +12,7 @@ std::string_view to_string(SampleStatus s) {
     case SampleStatus::wavelength_out_of_range: return "wavelength_out_of_range";
     case SampleStatus::invalid_input: return "invalid_input";
     case SampleStatus::numerical_failure: return "numerical_failure";
+    case SampleStatus::outside_fit_domain: return "outside_fit_domain";
   }
   return "unknown";
 }
@@ -30,6 +31,9 @@ std::string_view describe(SampleStatus s) {
     case SampleStatus::invalid_input: return "an angle or altitude is not a finite number in its range";
     case SampleStatus::numerical_failure:
       return "the model produced a non-finite or negative value; no number is returned";
+    case SampleStatus::outside_fit_domain:
+      return "the model's fitted formula gives negative radiance in this direction (a low sun, outside "
+             "the skies it was fitted to); the option clamp_negative_fit=1 returns 0 there instead";
   }
   return "unknown";
 }

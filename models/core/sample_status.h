@@ -15,6 +15,7 @@ enum class SampleStatus : std::uint8_t {
   wavelength_out_of_range,          // a requested wavelength outside the model's range
   invalid_input,                    // NaN or out-of-domain angles
   numerical_failure,                // the model produced NaN, infinity or negative radiance
+  outside_fit_domain,               // a fitted model's formula turns negative here (no number)
 };
 
 std::string_view to_string(SampleStatus status);

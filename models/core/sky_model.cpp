@@ -228,11 +228,11 @@ ScatteringAlongRay SkyModel::compute_aerial_perspective(const SunState&, const V
 Spectrum SkyModel::compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
                                           const PlaneOrientation& plane) const {
   if (descriptor().capabilities.view_below_horizon) return sky_irradiance_by_quadrature(sun, viewpoint, plane);
-  // Ground-view models: the sky a plane sees is a lune (sky_plane_quadrature.h). Horizontal:
-  // 24 x 48 directions, within 0.01% of a 200 x 400 rule; tilted: 32 x 32, within 0.4% of a
-  // fine rule up to a tilt of 150 degrees (measured on Preetham and Hosek, tests/models/*).
-  if (plane.tilt_rad < 1e-9) return sky_irradiance_on_plane(*this, sun, viewpoint, plane, 24, 48);
-  return sky_irradiance_on_plane(*this, sun, viewpoint, plane, 32, 32);
+  // Ground-view models: the sky a plane sees is a lune (sky_plane_quadrature.h).
+  return ground_view_sky_irradiance(
+      wavelengths().size(),
+      [&](std::span<const ViewDirection> views, SpectralBatch& out) { sky_radiance(sun, viewpoint, views, out); },
+      plane);
 }
 
 Spectrum SkyModel::sky_irradiance_by_quadrature(const SunState& sun, const Viewpoint& viewpoint,

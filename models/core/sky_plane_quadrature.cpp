@@ -39,20 +39,37 @@ WeightedDirections sky_plane_quadrature(const PlaneOrientation& plane, int first
   return rule;
 }
 
+Spectrum sky_irradiance_on_plane(std::size_t n_wavelengths, const SkyRadianceBatch& radiance,
+                                 const PlaneOrientation& plane, int first_nodes, int second_nodes) {
+  const WeightedDirections rule = sky_plane_quadrature(plane, first_nodes, second_nodes);
+  Spectrum irradiance(n_wavelengths, 0.0);
+  if (rule.views.empty()) return irradiance;
+  SpectralBatch batch;
+  batch.resize(rule.views.size(), n_wavelengths);
+  radiance(rule.views, batch);
+  for (std::size_t i = 0; i < rule.views.size(); ++i) {
+    if (batch.status[i] != SampleStatus::ok) continue;
+    const auto l = batch.spectrum(i);
+    for (std::size_t w = 0; w < n_wavelengths; ++w) irradiance[w] += rule.weights[i] * l[w];
+  }
+  return irradiance;
+}
+
 Spectrum sky_irradiance_on_plane(const SkyModel& model, const SunState& sun,
                                  const Viewpoint& viewpoint, const PlaneOrientation& plane,
                                  int first_nodes, int second_nodes) {
-  const WeightedDirections rule = sky_plane_quadrature(plane, first_nodes, second_nodes);
-  Spectrum irradiance(model.wavelengths().size(), 0.0);
-  if (rule.views.empty()) return irradiance;
-  SpectralBatch radiance;
-  model.sky_radiance(sun, viewpoint, rule.views, radiance);
-  for (std::size_t i = 0; i < rule.views.size(); ++i) {
-    if (radiance.status[i] != SampleStatus::ok) continue;
-    const auto l = radiance.spectrum(i);
-    for (std::size_t w = 0; w < irradiance.size(); ++w) irradiance[w] += rule.weights[i] * l[w];
-  }
-  return irradiance;
+  return sky_irradiance_on_plane(
+      model.wavelengths().size(),
+      [&](std::span<const ViewDirection> views, SpectralBatch& out) {
+        model.sky_radiance(sun, viewpoint, views, out);
+      },
+      plane, first_nodes, second_nodes);
+}
+
+Spectrum ground_view_sky_irradiance(std::size_t n_wavelengths, const SkyRadianceBatch& radiance,
+                                    const PlaneOrientation& plane) {
+  if (plane.tilt_rad < 1e-9) return sky_irradiance_on_plane(n_wavelengths, radiance, plane, 24, 48);
+  return sky_irradiance_on_plane(n_wavelengths, radiance, plane, 32, 32);
 }
 
 }  // namespace clearsky

@@ -54,20 +54,37 @@ CaptureEvaluation evaluate_capture(const SkyModel& model, const MeasuredCapture&
   model.sky_radiance(*sun_state, Viewpoint{options.viewer_altitude_m}, views, radiance);
 
   const WavelengthGrid& grid = model.wavelengths();
+  const std::size_t n_samples = capture.samples.size();
+  const double n_compared = static_cast<double>(compared.size());
+  result.samples.resize(n_samples);
+  result.sample_errors.resize(n_samples * compared.size());
   double sum_squares = 0;
-  for (std::size_t s = 0; s < capture.samples.size(); ++s) {
+  for (std::size_t s = 0; s < n_samples; ++s) {
     if (radiance.status[s] != SampleStatus::ok)
       throw std::runtime_error(model.descriptor().id + " cannot answer capture " + capture.label +
                                " sample " + std::to_string(capture.samples[s].index) + ": " +
                                std::string(describe(radiance.status[s])));
     const auto values = radiance.spectrum(s);
-    for (std::size_t i : compared) {
+    double* errors = result.sample_errors.data() + s * compared.size();
+    double sample_squares = 0;
+    double sample_sum = 0;
+    for (std::size_t k = 0; k < compared.size(); ++k) {
+      const std::size_t i = compared[k];
       const double measured = capture.samples[s].radiance.at(grid[i], OutOfRange::error);
       const double difference = values[i] - measured;
-      sum_squares += difference * difference;
+      sample_squares += difference * difference;
+      sample_sum += difference;
+      errors[k] = 1000.0 * difference;  // W -> mW
     }
+    sum_squares += sample_squares;
+    SampleEvaluation& sample = result.samples[s];
+    sample.index = capture.samples[s].index;
+    sample.view_zenith_deg = radians_to_degrees(capture.samples[s].view.zenith_rad);
+    sample.view_azimuth_deg = radians_to_degrees(capture.samples[s].view.azimuth_rad);
+    sample.rmse = 1000.0 * std::sqrt(sample_squares / n_compared);
+    sample.bias = 1000.0 * sample_sum / n_compared;
   }
-  result.values_compared = capture.samples.size() * compared.size();
+  result.values_compared = n_samples * compared.size();
   // W/(m2.sr.nm) -> mW/(m2.sr.nm).
   result.rmse = 1000.0 * std::sqrt(sum_squares / static_cast<double>(result.values_compared));
   return result;

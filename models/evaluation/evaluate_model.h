@@ -5,6 +5,10 @@
 // spectra read by linear interpolation at those wavelengths; the model is queried at viewer
 // altitude 0 with the capture's computed sun zenith and estimated sun azimuth. Total: the root
 // of the mean of the per-capture squared RMSE. RMSE in mW/(m2.sr.nm).
+// Per sample (direction) the result keeps the RMSE over the compared wavelengths, the mean
+// signed error (bias) and the signed error at each compared wavelength, all model minus
+// measurement: every sample compares the same wavelengths, so the capture's RMSE is the root of
+// the mean of its samples' squared RMSE (what lets a user see where on the sky a model errs).
 // Captures must be prepared first (capture_preparation.h): repaired and with sun positions.
 #pragma once
 
@@ -28,6 +32,15 @@ struct EvaluationOptions {
   unsigned capture_threads = 0;  // captures evaluated in parallel; 0: all cores
 };
 
+// One measured direction of a capture (the Kider sample), errors in mW/(m2.sr.nm).
+struct SampleEvaluation {
+  int index = 0;  // the instrument's scan index (Kider: 0..80)
+  double view_zenith_deg = 0;
+  double view_azimuth_deg = 0;  // clockwise from North
+  double rmse = 0;              // over the compared wavelengths
+  double bias = 0;              // mean of model - measured over the compared wavelengths
+};
+
 struct CaptureEvaluation {
   std::string label;
   std::string time_iso;  // local time with offset
@@ -36,6 +49,13 @@ struct CaptureEvaluation {
   double sun_azimuth_deg = 0;  // as given to the model (clockwise from North)
   double rmse = 0;             // mW/(m2.sr.nm)
   std::size_t values_compared = 0;
+  std::vector<SampleEvaluation> samples;  // in the capture's order
+  // Model - measured, mW/(m2.sr.nm): samples.size() rows of EvaluationResult::wavelengths_nm.
+  std::vector<double> sample_errors;
+  std::span<const double> errors_of(std::size_t sample) const {
+    const std::size_t n = samples.empty() ? 0 : sample_errors.size() / samples.size();
+    return std::span<const double>(sample_errors).subspan(sample * n, n);
+  }
 };
 
 struct EvaluationResult {

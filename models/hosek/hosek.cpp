@@ -1,4 +1,6 @@
 // Hosek-Wilkie: descriptor, per-sun state (cooked distributions) and the model queries.
+#include "models/core/fit_domain.h"
+#include "models/core/sky_plane_quadrature.h"
 #include "models/hosek/hosek.h"
 
 #include <algorithm>
@@ -54,6 +56,10 @@ ModelDescriptor make_descriptor() {
           "1: cook the 11 fitted bands once each (albedo at the band's wavelength) and interpolate "
           "their radiances; 0: the study's one state per grid wavelength",
           0.0, 0.0, 1.0, true, false},
+      ParameterSpec{kClampNegativeFitOption, "",
+                    "1: where the fit turns negative (the sun within a few degrees of the horizon, views near "
+                    "the horizon) answer 0 there; 0: refuse those samples (status outside_fit_domain)",
+                    0.0, 0.0, 1.0, true, false},
   };
   ModelCapabilities& c = d.capabilities;
   c.min_altitude_m = 0.0;
@@ -127,6 +133,7 @@ std::shared_ptr<const SkyModel> HosekModel::create(const ModelConfig& config,
 
 HosekModel::HosekModel(const ModelConfig& config) : SkyModel(config) {
   native_bands_ = option_or_default(hosek_descriptor(), config, "native_bands") != 0.0;
+  clamp_negative_fit_ = option_or_default(hosek_descriptor(), config, kClampNegativeFitOption) != 0.0;
   const auto& tables = hosek::Tables::get();
   const auto& grass = ReferenceSpectra::get().grass_albedo;
   std::array<double, hosek::kBandCount> disc_solid_angle{};
@@ -204,6 +211,21 @@ std::shared_ptr<const SunState> HosekModel::compute_sun_state(const SunPosition&
 void HosekModel::compute_sky_radiance(const SunState& sun, const Viewpoint&,
                                       std::span<const ViewDirection> views,
                                       SpectralBatch& out) const {
+  fit_radiance(sun, clamp_negative_fit_, views, out);
+}
+
+Spectrum HosekModel::compute_sky_irradiance(const SunState& sun, const Viewpoint&,
+                                            const PlaneOrientation& plane) const {
+  // The views of the quadrature are above the horizon and the sun was checked by the caller;
+  // the integral takes the fit clamped at no light (fit_domain.h).
+  return ground_view_sky_irradiance(
+      wavelengths().size(),
+      [&](std::span<const ViewDirection> views, SpectralBatch& out) { fit_radiance(sun, true, views, out); },
+      plane);
+}
+
+void HosekModel::fit_radiance(const SunState& sun, bool clamp_negative,
+                              std::span<const ViewDirection> views, SpectralBatch& out) const {
   const HosekSunState& state = as_hosek_state(sun);
   const Vec3 sun_direction = state.sun().unit_vector();
   const std::size_t n = state.size();
@@ -236,9 +258,8 @@ void HosekModel::compute_sky_radiance(const SunState& sun, const Viewpoint&,
       spectrum[contribution.wavelength] += contribution.weight * f[contribution.term];
     }
     // The fit dips below zero at the horizon when the sun is within a few degrees of it (its
-    // constant term C is negative there and the zenith term sqrt(cos theta) vanishes): no
-    // light is the physical limit.
-    for (double& value : spectrum) value = std::max(value, 0.0);
+    // constant term C is negative there and the zenith term sqrt(cos theta) vanishes).
+    out.status[i] = apply_fit_domain(spectrum, clamp_negative);
   }
 }
 

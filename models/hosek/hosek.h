@@ -6,6 +6,8 @@
 // | turbidity    | -    | 2.53    | [1, 10] | atmospheric turbidity (shared atmosphere parameter) |
 // | albedo       | -    | grass   | [0, 1]  | ground albedo; grass: Feister and Grewe, per lambda |
 // | native_bands | -    | 0       | {0, 1}  | 1: evaluate the 11 fitted bands and interpolate     |
+// | clamp_negative_fit | - | 0   | {0, 1}  | 1: 0 where the fit turns negative; 0: refuse those |
+//                                            samples (outside_fit_domain, fit_domain.h)
 //
 // Sky radiance at grid wavelength lambda (320..720 nm; other wavelengths are reported as out
 // of range): the authors' linear interpolation between the two fitted bands around lambda,
@@ -54,9 +56,16 @@ class HosekModel final : public SkyModel {
                             std::span<const ViewDirection> views,
                             SpectralBatch& out) const override;
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
+  // The lune quadrature of the fit clamped at zero (fit_domain.h), whatever clamp_negative_fit.
+  Spectrum compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
+                                  const PlaneOrientation& plane) const override;
 
  private:
   explicit HosekModel(const ModelConfig& config);
+  // The spectra of views above the horizon; a spectrum that turns negative is refused
+  // (outside_fit_domain) or, with clamp_negative, clamped to 0.
+  void fit_radiance(const SunState& sun, bool clamp_negative, std::span<const ViewDirection> views,
+                    SpectralBatch& out) const;
 
   // Per grid wavelength: its bracketing bands and interpolation weight, and the factors that
   // move the fit's solar spectrum to the study's.
@@ -71,6 +80,7 @@ class HosekModel final : public SkyModel {
   std::vector<WavelengthTerms> terms_;
   std::array<double, hosek::kBandCount> band_albedo_{};
   bool native_bands_ = false;
+  bool clamp_negative_fit_ = false;
 };
 
 }  // namespace clearsky

@@ -8,6 +8,8 @@
 
 #include "models/colour/colour_spaces.h"
 #include "models/colour/daylight_spectrum.h"
+#include "models/core/fit_domain.h"
+#include "models/core/sky_plane_quadrature.h"
 
 namespace clearsky {
 namespace {
@@ -36,6 +38,10 @@ ModelDescriptor make_descriptor() {
   d.parameters = {
       ParameterSpec{"turbidity", "", "atmospheric turbidity (the study: 2.53)", 2.53, 2.0, 10.0,
                     false, true},
+      ParameterSpec{kClampNegativeFitOption, "",
+                    "1: where the fitted spectrum turns negative (a low sun, views near the horizon towards "
+                    "it) answer 0 there; 0: refuse those samples (status outside_fit_domain)",
+                    0.0, 0.0, 1.0, true, false},
   };
   ModelCapabilities& c = d.capabilities;
   c.min_altitude_m = 0.0;
@@ -122,7 +128,9 @@ std::shared_ptr<const SkyModel> PreethamModel::create(const ModelConfig& config,
   return std::shared_ptr<const SkyModel>(new PreethamModel(config));
 }
 
-PreethamModel::PreethamModel(const ModelConfig& config) : SkyModel(config) {
+PreethamModel::PreethamModel(const ModelConfig& config)
+    : SkyModel(config),
+      clamp_negative_fit_(option_or_default(preetham_descriptor(), config, kClampNegativeFitOption) != 0.0) {
   // The basis on the query grid, and its Y where the study integrates it: its 40 bins.
   const auto basis = [](const WavelengthGrid& grid) {
     const Spectrum s0 = daylight_relative_spectrum({0.0, 0.0}, grid);
@@ -151,7 +159,7 @@ PreethamModel::LuminanceChromaticity PreethamModel::luminance_chromaticity(
   return evaluate(state, std::cos(view.zenith_rad), cos_angle_between(view, state.sun()));
 }
 
-void PreethamModel::compute_sky_radiance(const SunState& sun, const Viewpoint&,
+void PreethamModel::fit_radiance(const SunState& sun, bool clamp_negative,
                                          std::span<const ViewDirection> views,
                                          SpectralBatch& out) const {
   const PreethamSunState& state = as_preetham_state(sun);
@@ -166,12 +174,29 @@ void PreethamModel::compute_sky_radiance(const SunState& sun, const Viewpoint&,
         v.luminance_cd_m2 / (kMaxLuminousEfficacy * (y_s0_ + m.m1 * y_s1_ + m.m2 * y_s2_));
     auto spectrum = out.spectrum(i);
     // For a low sun, views near the horizon towards it get chromaticities far from the
-    // daylight locus, where the basis combination turns negative at the short wavelengths:
-    // clamped to no light, the physical limit.
-    for (std::size_t w = 0; w < n; ++w)
-      spectrum[w] = std::max(k * (s0_[w] + m.m1 * s1_[w] + m.m2 * s2_[w]), 0.0);
+    // daylight locus, where the basis combination turns negative at the short wavelengths
+    // (fit_domain.h).
+    for (std::size_t w = 0; w < n; ++w) spectrum[w] = k * (s0_[w] + m.m1 * s1_[w] + m.m2 * s2_[w]);
+    out.status[i] = apply_fit_domain(spectrum, clamp_negative);
   }
 }
+
+void PreethamModel::compute_sky_radiance(const SunState& sun, const Viewpoint&,
+                                         std::span<const ViewDirection> views,
+                                         SpectralBatch& out) const {
+  fit_radiance(sun, clamp_negative_fit_, views, out);
+}
+
+Spectrum PreethamModel::compute_sky_irradiance(const SunState& sun, const Viewpoint&,
+                                               const PlaneOrientation& plane) const {
+  // The views of the quadrature are above the horizon and the sun was checked by the caller;
+  // the integral takes the fit clamped at no light (fit_domain.h).
+  return ground_view_sky_irradiance(
+      wavelengths().size(),
+      [&](std::span<const ViewDirection> views, SpectralBatch& out) { fit_radiance(sun, true, views, out); },
+      plane);
+}
+
 
 Spectrum PreethamModel::compute_sun_irradiance(const SunState& sun, const Viewpoint&) const {
   Spectrum irradiance = atmosphere().solar_irradiance_w_m2_nm;

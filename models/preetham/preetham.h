@@ -10,6 +10,8 @@
 // |-----------|------|---------|---------|------------------------------------------------------|
 // | turbidity | -    | 2.53    | [2, 10] | atmospheric turbidity (below 2 the zenith luminance  |
 // |           |      |         |         | of a high sun turns negative)                        |
+// | clamp_negative_fit | - | 0 | {0, 1} | 1: 0 where the fitted spectrum turns negative; 0:   |
+// |           |      |         |         | refuse those samples (outside_fit_domain)            |
 //
 // The model ignores the extraterrestrial spectrum, the ground albedo and the aerosol
 // parameters (all built into the fit), as the study did. Sun irradiance: the study's
@@ -49,9 +51,18 @@ class PreethamModel final : public SkyModel {
                             std::span<const ViewDirection> views,
                             SpectralBatch& out) const override;
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
+  // The lune quadrature of the fit clamped at zero (fit_domain.h), whatever clamp_negative_fit.
+  Spectrum compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
+                                  const PlaneOrientation& plane) const override;
 
  private:
   explicit PreethamModel(const ModelConfig& config);
+  // The spectra of views above the horizon; a spectrum that turns negative is refused
+  // (outside_fit_domain) or, with clamp_negative, clamped to 0.
+  void fit_radiance(const SunState& sun, bool clamp_negative, std::span<const ViewDirection> views,
+                    SpectralBatch& out) const;
+
+  bool clamp_negative_fit_ = false;
 
   // The daylight basis on wavelengths() and its radiometric Y over the study's 40 bins.
   Spectrum s0_, s1_, s2_;

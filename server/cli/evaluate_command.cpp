@@ -1,5 +1,8 @@
-// `clearsky evaluate --dataset NAME [--models all|a,b] [--json] [--db PATH]`: the paper's RMSE
-// of models against a stored dataset; every run is stored (api/evaluation/evaluation_runner.h).
+// `clearsky evaluate --dataset NAME [--models all|a,b] [--json] [--samples[=spectra]]
+// [--db PATH]`: the paper's RMSE of models against a stored dataset; every run is stored with
+// its per-sample errors (api/evaluation/evaluation_runner.h). --samples adds each capture's
+// per-sample RMSE and bias (=spectra: and errors per wavelength) as GET
+// /v1/evaluations/{id}?samples=... does (api/encode/evaluation_json.h).
 #include <iomanip>
 #include <iostream>
 
@@ -18,6 +21,7 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
     std::vector<std::string> models{"all"};
     std::string db = kDefaultDatabasePath;
     bool json = false;
+    std::string samples = "false";
   };
   auto options = std::make_shared<Options>();
   command->add_option("--dataset", options->dataset, "Dataset name")->required();
@@ -26,6 +30,10 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
       ->capture_default_str();
   add_database_option(*command, options->db);
   command->add_flag("--json", options->json, "Print the results as JSON (DESIGN.md CLI contract)");
+  command->add_flag("--samples{true}", options->samples,
+                    "Per-sample RMSE and bias of each capture; --samples=spectra also the "
+                    "errors per wavelength (model - measured, mW/(m2.sr.nm))")
+      ->check(CLI::IsMember({"true", "false", "spectra"}));
   command->callback([options, software_version] {
     storage::Database db = open_cli_database(options->db);
     api::EvaluationRequest request;
@@ -33,8 +41,11 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
     request.models = options->models;
     request.software_version = software_version;
     const api::EvaluationReport report = api::run_evaluation(db, request);
+    const api::SampleDetail samples = options->samples == "spectra" ? api::SampleDetail::spectra
+                                      : options->samples == "true"  ? api::SampleDetail::summary
+                                                                    : api::SampleDetail::none;
     if (options->json) {
-      std::cout << api::evaluation_to_json(report).dump(2) << '\n';
+      std::cout << api::evaluation_to_json(report, samples).dump(2) << '\n';
       return;
     }
     std::cout << std::fixed << std::setprecision(2);
@@ -43,9 +54,16 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
       std::cout << r.model_id << ": RMSE " << r.rmse << " mW/(m2.sr.nm) over " << r.captures.size()
                 << " captures (run " << run.run_id << ", precompute " << r.precompute_seconds
                 << " s, evaluate " << r.evaluate_seconds << " s)\n";
-      for (const CaptureEvaluation& c : r.captures)
+      for (const CaptureEvaluation& c : r.captures) {
         std::cout << "  " << c.time_iso << "  sun " << c.sun_zenith_deg << " / "
                   << c.sun_azimuth_deg << " deg  RMSE " << c.rmse << '\n';
+        if (samples == api::SampleDetail::none) continue;
+        for (const SampleEvaluation& s : c.samples)
+          std::cout << "    sample " << std::setw(2) << s.index << "  view " << std::setw(6)
+                    << s.view_zenith_deg << " / " << std::setw(6) << s.view_azimuth_deg
+                    << " deg  RMSE " << std::setw(8) << s.rmse << "  bias " << std::setw(8)
+                    << s.bias << '\n';
+      }
     }
   });
 }

@@ -209,9 +209,10 @@ void install_data_routes(httplib::Server& server, const DataServices& services,
     send_json(res, api::list_evaluations(db, filter));
   });
   server.Get(R"(/v1/evaluations/(\d+))", [s](const httplib::Request& req, httplib::Response& res) {
-    only_parameters(req, {}, "GET /v1/evaluations/{id}");
+    std::vector<std::pair<std::string, std::string>> query(req.params.begin(), req.params.end());
+    const api::ShowEvaluationOptions options = api::parse_show_evaluation_options(query);
     storage::Database db = connect(*s);
-    send_json(res, api::show_evaluation(db, api::parse_id(req.matches[1], "id")));
+    send_json(res, api::show_evaluation(db, api::parse_id(req.matches[1], "id"), options));
   });
   server.Get(R"(/v1/evaluations/tickets/([^/]+))",
              [s](const httplib::Request& req, httplib::Response& res) {

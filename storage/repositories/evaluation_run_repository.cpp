@@ -2,7 +2,12 @@
 // (evaluation_run_repository.h).
 #include "storage/repositories/evaluation_run_repository.h"
 
+#include <stdexcept>
+#include <string_view>
+
+#include "models/core/content_hash.h"
 #include "storage/repositories/utc_clock.h"
+#include "storage/sqlite/blob.h"
 
 namespace clearsky::storage {
 namespace {
@@ -12,7 +17,7 @@ constexpr const char* kRunSelect =
     "min_wavelength_nm,"
     " max_wavelength_nm, started_utc, finished_utc, status, error, rmse, precompute_seconds, "
     "evaluate_seconds,"
-    " processing_steps FROM evaluation_runs";
+    " processing_steps, wavelengths_nm FROM evaluation_runs";
 
 std::optional<double> optional_double(const Statement& row, int column) {
   if (row.is_null(column)) return std::nullopt;
@@ -43,7 +48,24 @@ RunRecord read_run(const Statement& row) {
   r.precompute_seconds = optional_double(row, 14);
   r.evaluate_seconds = optional_double(row, 15);
   r.processing_steps = row.column_text(16);
+  if (!row.is_null(17)) r.wavelengths_nm = decode_doubles(row.column_blob(17));
   return r;
+}
+
+// The id of a stored blob with these bytes, stored now if there is none: repeated identical
+// runs share one copy.
+std::int64_t store_sample_errors(Database& db, const std::vector<std::byte>& bytes) {
+  const auto hash = static_cast<std::int64_t>(
+      fnv1a_64(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())));
+  auto find = db.prepare(
+      "SELECT id FROM evaluation_sample_errors WHERE content_hash = ? AND data = ?");
+  find.bind(1, hash).bind_blob(2, bytes);
+  if (find.step()) return find.column_int64(0);
+  auto insert =
+      db.prepare("INSERT INTO evaluation_sample_errors (content_hash, data) VALUES (?, ?)");
+  insert.bind(1, hash).bind_blob(2, bytes);
+  insert.run();
+  return db.last_insert_rowid();
 }
 
 }  // namespace
@@ -72,13 +94,22 @@ std::int64_t EvaluationRunRepository::start(const NewRun& run) {
 
 void EvaluationRunRepository::finish(std::int64_t run_id, double rmse, double precompute_seconds,
                                      double evaluate_seconds, const std::string& processing_steps,
-                                     const std::vector<RunCaptureResult>& captures) {
+                                     const std::vector<RunCaptureResult>& captures,
+                                     std::span<const double> wavelengths_nm) {
+  for (const RunCaptureResult& c : captures)
+    if (c.samples && c.samples->wavelength_count != wavelengths_nm.size())
+      throw std::invalid_argument("run " + std::to_string(run_id) + ": sample errors of " +
+                                  std::to_string(c.samples->wavelength_count) +
+                                  " wavelengths, run of " +
+                                  std::to_string(wavelengths_nm.size()));
   Transaction transaction(db_);
   auto insert = db_.prepare(
       "INSERT INTO evaluation_capture_results (run_id, capture_id, sun_zenith_deg, "
       "sun_azimuth_deg, rmse,"
-      " values_compared) VALUES (?, ?, ?, ?, ?, ?)");
+      " values_compared, sample_errors_id) VALUES (?, ?, ?, ?, ?, ?, ?)");
   for (const RunCaptureResult& c : captures) {
+    const std::int64_t samples_id =
+        c.samples ? store_sample_errors(db_, encode_sample_errors(*c.samples)) : 0;
     insert.reset();
     insert.bind(1, run_id)
         .bind(2, c.capture_id)
@@ -86,18 +117,26 @@ void EvaluationRunRepository::finish(std::int64_t run_id, double rmse, double pr
         .bind(4, c.sun_azimuth_deg)
         .bind(5, c.rmse)
         .bind(6, c.values_compared);
+    if (c.samples)
+      insert.bind(7, samples_id);
+    else
+      insert.bind_null(7);
     insert.run();
   }
   auto update = db_.prepare(
       "UPDATE evaluation_runs SET status = 'succeeded', finished_utc = ?, rmse = ?, "
       "precompute_seconds = ?,"
-      " evaluate_seconds = ?, processing_steps = ? WHERE id = ?");
+      " evaluate_seconds = ?, processing_steps = ?, wavelengths_nm = ? WHERE id = ?");
   update.bind(1, utc_now_iso8601())
       .bind(2, rmse)
       .bind(3, precompute_seconds)
       .bind(4, evaluate_seconds)
-      .bind(5, processing_steps)
-      .bind(6, run_id);
+      .bind(5, processing_steps);
+  if (wavelengths_nm.empty())
+    update.bind_null(6);
+  else
+    update.bind_blob(6, encode_doubles(wavelengths_nm));
+  update.bind(7, run_id);
   update.run();
   transaction.commit();
 }
@@ -118,23 +157,31 @@ int EvaluationRunRepository::fail_unfinished(const std::string& error) {
   return db_.changes();
 }
 
-std::optional<RunRecord> EvaluationRunRepository::get(std::int64_t run_id) {
+std::optional<RunRecord> EvaluationRunRepository::get(std::int64_t run_id, bool with_samples) {
   auto query = db_.prepare(std::string(kRunSelect) + " WHERE id = ?");
   query.bind(1, run_id);
   if (!query.step()) return std::nullopt;
   RunRecord run = read_run(query);
   auto results = db_.prepare(
-      "SELECT r.capture_id, c.label, c.time_utc_s, c.utc_offset_minutes, r.sun_zenith_deg, "
-      "r.sun_azimuth_deg,"
-      " r.rmse, r.values_compared FROM evaluation_capture_results r JOIN captures c ON "
-      "r.capture_id = c.id"
+      std::string("SELECT r.capture_id, c.label, c.time_utc_s, c.utc_offset_minutes, "
+                  "r.sun_zenith_deg, r.sun_azimuth_deg, r.rmse, r.values_compared, ") +
+      (with_samples ? "e.data" : "NULL") +
+      " FROM evaluation_capture_results r JOIN captures c ON r.capture_id = c.id"
+      " LEFT JOIN evaluation_sample_errors e ON e.id = r.sample_errors_id"
       " WHERE r.run_id = ? ORDER BY c.time_utc_s, c.label");
   results.bind(1, run_id);
   while (results.step()) {
-    run.captures.push_back({results.column_int64(0), results.column_text(1),
-                            results.column_double(2), static_cast<int>(results.column_int64(3)),
-                            results.column_double(4), results.column_double(5),
-                            results.column_double(6), results.column_int64(7)});
+    RunCaptureResult c;
+    c.capture_id = results.column_int64(0);
+    c.capture_label = results.column_text(1);
+    c.capture_time_utc_s = results.column_double(2);
+    c.utc_offset_minutes = static_cast<int>(results.column_int64(3));
+    c.sun_zenith_deg = results.column_double(4);
+    c.sun_azimuth_deg = results.column_double(5);
+    c.rmse = results.column_double(6);
+    c.values_compared = results.column_int64(7);
+    if (!results.is_null(8)) c.samples = decode_sample_errors(results.column_blob(8));
+    run.captures.push_back(std::move(c));
   }
   return run;
 }

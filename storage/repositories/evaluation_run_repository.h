@@ -1,15 +1,19 @@
 // Evaluation runs of a model against a dataset: what was run (model id and version, the full
 // parameter set, the software version, the wavelength range, the processing steps applied to
 // the measurements), when, how it ended, the total RMSE and timings, and the result of every
-// capture (sun angles used, RMSE). A run is recorded as 'running' when it starts so that a
-// crash leaves a trace. SQL on these tables lives only here. Thread-safety: as the Database.
+// capture (sun angles used, RMSE) with, from schema version 2, the compared wavelengths and
+// each capture's per-sample errors (sample_errors_blob.h; identical blobs stored once). A run
+// is recorded as 'running' when it starts so that a crash leaves a trace. SQL on these tables
+// lives only here. Thread-safety: as the Database.
 #pragma once
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "storage/repositories/sample_errors_blob.h"
 #include "storage/sqlite/database.h"
 
 namespace clearsky::storage {
@@ -23,6 +27,8 @@ struct RunCaptureResult {
   double sun_azimuth_deg = 0;
   double rmse = 0;  // mW/(m2.sr.nm)
   std::int64_t values_compared = 0;
+  // Written by finish() when present; read by get(id, true), empty for runs stored without.
+  std::optional<SampleErrorTable> samples = std::nullopt;
 };
 
 struct NewRun {
@@ -48,6 +54,9 @@ struct RunRecord {
   std::optional<std::string> error;
   std::optional<double> rmse, precompute_seconds, evaluate_seconds;
   std::string processing_steps;            // one step per line
+  // The compared wavelengths (columns of the per-sample errors); empty for runs stored before
+  // schema version 2 and runs not finished.
+  std::optional<std::vector<double>> wavelengths_nm;
   std::vector<RunCaptureResult> captures;  // filled by get()
 };
 
@@ -55,14 +64,18 @@ class EvaluationRunRepository {
  public:
   explicit EvaluationRunRepository(Database& db) : db_(db) {}
   std::int64_t start(const NewRun& run);
-  // Records success with the per-capture results (in one transaction).
+  // Records success with the per-capture results, their per-sample errors when given and the
+  // compared wavelengths (in one transaction). Throws std::invalid_argument when a capture's
+  // sample errors do not have one column per wavelength.
   void finish(std::int64_t run_id, double rmse, double precompute_seconds, double evaluate_seconds,
-              const std::string& processing_steps, const std::vector<RunCaptureResult>& captures);
+              const std::string& processing_steps, const std::vector<RunCaptureResult>& captures,
+              std::span<const double> wavelengths_nm = {});
   void fail(std::int64_t run_id, const std::string& error);
   // Marks every run still 'running' as failed with this error (at start-up: runs a crash
   // interrupted); returns how many.
   int fail_unfinished(const std::string& error);
-  std::optional<RunRecord> get(std::int64_t run_id);
+  // A run with its per-capture results; with_samples also reads their per-sample errors.
+  std::optional<RunRecord> get(std::int64_t run_id, bool with_samples = false);
   // Runs of a dataset, newest first, without per-capture results.
   std::vector<RunRecord> list(std::int64_t dataset_id);
 

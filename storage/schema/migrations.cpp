@@ -90,7 +90,32 @@ CREATE INDEX captures_by_dataset ON captures(dataset_id, time_utc_s);
 CREATE INDEX samples_by_capture ON samples(capture_id, scan_index);
 CREATE INDEX runs_by_dataset ON evaluation_runs(dataset_id, started_utc);
 )sql",
-      // Version 2: dataset imports run as background jobs (issue 9). A row per import, kept
+      // Version 2: per-sample errors of evaluation runs. A run lists its compared wavelengths
+      // once (float64 blob); each capture result may point to a blob of its samples' errors
+      // (storage/repositories/sample_errors_blob.h). Identical blobs are stored once (a
+      // scheduled job re-evaluating the same model on the same captures gets the same errors
+      // bit for bit), found by their FNV-1a 64 hash and compared byte for byte; a blob goes
+      // with its last reference. Runs before version 2 have neither: their samples are unknown.
+      R"sql(
+ALTER TABLE evaluation_runs ADD COLUMN wavelengths_nm BLOB;
+CREATE TABLE evaluation_sample_errors (
+  id INTEGER PRIMARY KEY,
+  content_hash INTEGER NOT NULL,
+  data BLOB NOT NULL
+);
+CREATE INDEX sample_errors_by_hash ON evaluation_sample_errors(content_hash);
+ALTER TABLE evaluation_capture_results
+  ADD COLUMN sample_errors_id INTEGER REFERENCES evaluation_sample_errors(id);
+CREATE INDEX capture_results_by_sample_errors ON evaluation_capture_results(sample_errors_id);
+CREATE TRIGGER sample_errors_follow_their_last_reference
+AFTER DELETE ON evaluation_capture_results
+WHEN OLD.sample_errors_id IS NOT NULL
+BEGIN
+  DELETE FROM evaluation_sample_errors WHERE id = OLD.sample_errors_id AND NOT EXISTS (
+    SELECT 1 FROM evaluation_capture_results WHERE sample_errors_id = OLD.sample_errors_id);
+END;
+)sql",
+      // Version 3: dataset imports run as background jobs (issue 9). A row per import, kept
       // after its dataset is deleted (no foreign key); progress columns hold the last known
       // counts (the live ones are in the server's memory while it runs).
       R"sql(

@@ -1,7 +1,8 @@
 // Tests of /v1/evaluations without a socket (api/evaluation/evaluations_api.h,
 // evaluation_pool.h): request checks before queueing, background runs on the bounded pool
 // (each worker with its own connection to a database file), listing with filters, one run
-// with per-capture RMSE and the history comparison; test models whose RMSE is known by hand.
+// with per-capture RMSE and the history comparison, per-sample errors on request; test models
+// whose RMSE is known by hand.
 #include "api/evaluation/evaluations_api.h"
 
 #include <gtest/gtest.h>
@@ -15,6 +16,7 @@
 #include "api/evaluation/evaluation_pool.h"
 #include "storage/repositories/capture_repository.h"
 #include "storage/repositories/dataset_repository.h"
+#include "storage/repositories/evaluation_run_repository.h"
 #include "storage/schema/migrations.h"
 #include "tests/models/evaluation/function_model.h"
 #include "tests/storage/temp_dir.h"
@@ -204,6 +206,81 @@ TEST(EvaluationsApi, RmseChangeAgainstHistoryIsReported) {
   // Per capture 0 and 2; total sqrt((0 + 4) / 2).
   EXPECT_NEAR(run["rmse"].get<double>(), std::sqrt(2.0), 1e-9);
   EXPECT_EQ(run["history"]["rmse_changed"], true);
+}
+
+// Per-sample errors on request: the default answer is unchanged; samples=true adds per-capture
+// samples whose RMSE recomputes the capture's and whose bias has the model's sign; spectra adds
+// the errors at the run's wavelengths; capture= keeps one capture.
+TEST(EvaluationsApi, PerSampleErrorsOnRequest) {
+  Fixture f;
+  EvaluationPool pool(f.opener(), factories(), {1, 4, 1});
+  const std::int64_t t = pool.submit(parse_evaluation_request(
+      f.db, R"({"models": ["offset"], "dataset": "synthetic"})", factories(), "1"));
+  pool.wait_idle();
+  ASSERT_EQ(pool.ticket(t)->status, "succeeded");
+  const std::int64_t id = pool.ticket(t)->run_ids[0];
+  const auto options = [](std::vector<std::pair<std::string, std::string>> query) {
+    return parse_show_evaluation_options(query);
+  };
+
+  const auto plain = show_evaluation(f.db, id);
+  EXPECT_FALSE(plain.contains("wavelengths_nm"));
+  EXPECT_FALSE(plain["captures"][0].contains("samples"));
+  EXPECT_EQ(show_evaluation(f.db, id, options({{"samples", "false"}})), plain);
+
+  const auto summary = show_evaluation(f.db, id, options({{"samples", "true"}}));
+  EXPECT_FALSE(summary.contains("wavelengths_nm"));
+  ASSERT_EQ(summary["captures"].size(), 2u);
+  for (const auto& capture : summary["captures"]) {
+    ASSERT_EQ(capture["samples"].size(), 81u);
+    double squares = 0;
+    for (const auto& sample : capture["samples"]) {
+      EXPECT_FALSE(sample.contains("errors"));
+      // The offset model is 2.53 mW/(m2.sr.nm) too bright everywhere (default turbidity).
+      EXPECT_NEAR(sample["bias"].get<double>(), 2.53, 1e-9);
+      squares += std::pow(sample["rmse"].get<double>(), 2);
+    }
+    EXPECT_NEAR(std::sqrt(squares / 81.0) / capture["rmse"].get<double>(), 1.0, 1e-9);
+    EXPECT_EQ(capture["samples"][0]["index"], 0);
+    EXPECT_EQ(capture["samples"][0]["view_zenith"], 0.0);
+    EXPECT_EQ(capture["samples"][80]["index"], 80);
+  }
+
+  const auto spectra = show_evaluation(f.db, id, options({{"samples", "spectra"}}));
+  ASSERT_EQ(spectra["wavelengths_nm"].size(), 31u);
+  EXPECT_EQ(spectra["wavelengths_nm"][0], 360.0);
+  EXPECT_EQ(spectra["wavelengths_nm"][30], 712.5);
+  const auto& errors = spectra["captures"][1]["samples"][40]["errors"];
+  ASSERT_EQ(errors.size(), 31u);
+  for (const auto& e : errors) EXPECT_NEAR(e.get<double>(), 2.53, 1e-5);  // float32
+  EXPECT_EQ(spectra["captures"][1]["samples"][40]["rmse"],
+            summary["captures"][1]["samples"][40]["rmse"]);
+
+  const auto one =
+      show_evaluation(f.db, id, options({{"samples", "true"}, {"capture", "capture 1"}}));
+  ASSERT_EQ(one["captures"].size(), 1u);
+  EXPECT_EQ(one["captures"][0]["label"], "capture 1");
+  EXPECT_EQ(one["captures"][0]["samples"], summary["captures"][1]["samples"]);
+  EXPECT_EQ(status_of([&] { show_evaluation(f.db, id, options({{"capture", "capture 9"}})); }),
+            404);
+  EXPECT_EQ(status_of([&] { options({{"samples", "maybe"}}); }), 400);
+  EXPECT_EQ(status_of([&] { options({{"sample", "true"}}); }), 400);
+
+  // A run stored without per-sample errors (as before schema version 2): explicit nulls.
+  storage::EvaluationRunRepository runs(f.db);
+  storage::NewRun old;
+  old.dataset_id = storage::DatasetRepository(f.db).find("synthetic")->id;
+  old.model_id = "offset";
+  old.model_version = std::string("1");
+  const std::int64_t old_id = runs.start(old);
+  storage::RunCaptureResult result;
+  result.capture_id = storage::CaptureRepository(f.db).load(old.dataset_id)[0].id;
+  result.rmse = 2.53;
+  runs.finish(old_id, 2.53, 0, 0, "", {result});
+  const auto old_run = show_evaluation(f.db, old_id, options({{"samples", "spectra"}}));
+  EXPECT_TRUE(old_run["wavelengths_nm"].is_null());
+  ASSERT_EQ(old_run["captures"].size(), 1u);
+  EXPECT_TRUE(old_run["captures"][0]["samples"].is_null());
 }
 
 TEST(EvaluationPool, FullQueueIs503AndWorkersAreBounded) {

@@ -89,19 +89,65 @@ TEST(BrunetonFunctions, ViewCosinesLandOnTheirTexels) {
 
 TEST(BrunetonFunctions, SunAndViewSunCosinesLandOnTheirTexels) {
   for (int i = 1; i < kRes.mu_s; ++i) {
-    const double mu_s = texel_mu_s(i, kRes.mu_s);
-    const Axis a = texture_axis(u_mu_s(mu_s, kRes.mu_s), kRes.mu_s);
+    const double mu_s = texel_mu_s(i, kRes.mu_s, kRes.sun);
+    const Axis a = texture_axis(u_mu_s(mu_s, kRes.mu_s, kRes.sun), kRes.mu_s);
     EXPECT_NEAR(a.i0 + a.f, i, 1e-6) << i;
   }
   // The mapping spans about [-0.2, 1], with 1 at the last texel.
-  EXPECT_NEAR(texel_mu_s(kRes.mu_s - 1, kRes.mu_s), 1.0, 1e-12);
-  EXPECT_LT(texel_mu_s(0, kRes.mu_s), kMinLookupMuS);
+  EXPECT_NEAR(texel_mu_s(kRes.mu_s - 1, kRes.mu_s, kRes.sun), 1.0, 1e-12);
+  EXPECT_LT(texel_mu_s(0, kRes.mu_s, kRes.sun), kMinLookupMuS);
   for (int k = 0; k < kRes.nu; ++k) {
     const Axis a = nu_axis_4d(texel_nu(k, kRes.nu), kRes);
     EXPECT_EQ(a.i0, k);
     EXPECT_EQ(a.f, 0.0);
   }
-  EXPECT_NEAR(radians_to_degrees(max_sun_zenith_rad()), 101.39, 0.01);
+  EXPECT_FALSE(kRes.sun.extended);
+  EXPECT_EQ(kRes.sun.lookup_min_mu_s, kMinLookupMuS);
+  EXPECT_NEAR(radians_to_degrees(kRes.sun.max_sun_zenith_rad()), 101.39, 0.01);
+  // The 2008 irradiance table: mu_s from -0.2 to 1.
+  EXPECT_EQ(irradiance_texel_mu_s(0, kRes.irradiance_mu_s, kRes.sun), -0.2);
+  EXPECT_NEAR(irradiance_texel_mu_s(kRes.irradiance_mu_s - 1, kRes.irradiance_mu_s, kRes.sun), 1.0,
+              1e-15);
+  EXPECT_EQ(irradiance_u_mu_s(-0.2, kRes.sun), 0.0);
+}
+
+// The extended sun range: the same tan family with its offset solved so that the first texel
+// holds cos(max sun zenith); monotone, round-tripping, ending at mu_s = 1, and the lookup clamps
+// exactly at the first texel.
+TEST(BrunetonFunctions, ExtendedSunRangeMapping) {
+  for (double max_deg : {95.0, 105.0, 110.0, 120.0}) {
+    const SunRange s = SunRange::up_to(degrees_to_radians(max_deg));
+    const double mu_min = std::cos(degrees_to_radians(max_deg));
+    EXPECT_TRUE(s.extended);
+    EXPECT_NEAR(radians_to_degrees(s.max_sun_zenith_rad()), max_deg, 1e-9);
+    EXPECT_GT(s.offset, 0.0);
+    EXPECT_LT(s.offset, kPi / (2.0 * kMuSAngle) - 1.0);
+    EXPECT_EQ(s.offset<0.26, max_deg> 101.39) << max_deg;
+    for (int n : {8, 32}) {
+      EXPECT_NEAR(texel_mu_s(0, n, s), mu_min, 1e-12) << max_deg;
+      EXPECT_NEAR(texel_mu_s(n - 1, n, s), 1.0, 1e-12) << max_deg;
+      for (int i = 1; i < n; ++i) {
+        const double mu_s = texel_mu_s(i, n, s);
+        EXPECT_GT(mu_s, texel_mu_s(i - 1, n, s));
+        const Axis a = texture_axis(u_mu_s(mu_s, n, s), n);
+        EXPECT_NEAR(a.i0 + a.f, i, 1e-6) << max_deg << " " << i;
+      }
+      // At and beyond the range: the first texel, alone.
+      for (double mu_s : {mu_min, mu_min - 0.05, -1.0}) {
+        const Axis a = texture_axis(u_mu_s(mu_s, n, s), n);
+        EXPECT_EQ(a.i0, 0) << mu_s;
+        EXPECT_NEAR(a.f, 0.0, 1e-6) << mu_s;
+      }
+    }
+    EXPECT_NEAR(irradiance_texel_mu_s(0, 64, s), mu_min, 1e-15);
+    EXPECT_NEAR(irradiance_texel_mu_s(63, 64, s), 1.0, 1e-15);
+    EXPECT_NEAR(irradiance_u_mu_s(mu_min, s), 0.0, 1e-15);
+    EXPECT_NEAR(irradiance_u_mu_s(1.0, s), 1.0, 1e-15);
+  }
+  // The wider the range, the smaller the offset (the fewer texels near the horizon).
+  EXPECT_GT(SunRange::up_to(degrees_to_radians(105.0)).offset,
+            SunRange::up_to(degrees_to_radians(110.0)).offset);
+  EXPECT_NEAR(SunRange::up_to(degrees_to_radians(110.0)).offset, 0.1853, 1e-4);
 }
 
 TEST(BrunetonFunctions, TransmittanceParameterisationRoundTrips) {

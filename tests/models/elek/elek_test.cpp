@@ -55,6 +55,38 @@ TEST(Elek, IdenticalToBrunetonOnThePaperGrid) {
   EXPECT_TRUE(shared->loaded_from_cache());
 }
 
+// The extended sun range is an option of Elek too: the same tables as Bruneton with it (one
+// precomputation through the cache), the same answers with the sun below 101.39 degrees, and
+// the instance's capabilities follow the option while the registry's keep the default.
+TEST(Elek, ExtendedSunRangeLikeBruneton) {
+  ModelConfig config = reduced(WavelengthGrid::points({450.0, 600.0}));
+  config.options["table_r_size"] = 4;
+  config.options["table_mu_size"] = 8;
+  config.options["table_mu_s_size"] = 8;
+  config.options["max_sun_zenith_deg"] = 115.0;
+  testing::MemoryTableCache cache;
+  PrecomputeContext with_cache;
+  with_cache.cache = &cache;
+  const auto b = find_model("bruneton")->create(config, with_cache);
+  const auto e = find_model("elek")->create(config, with_cache);
+  EXPECT_EQ(cache.stores, 1);
+  EXPECT_EQ(e->descriptor().id, "elek");
+  EXPECT_DOUBLE_EQ(e->descriptor().capabilities.max_sun_zenith_deg, 115.0);
+  EXPECT_NEAR(elek_descriptor().capabilities.max_sun_zenith_deg, 101.39, 0.01);
+  const std::vector<ViewDirection> views = {{0.0, 0.0}, {degrees_to_radians(89.0), 0.2}};
+  for (double sun_zenith : {104.0, 115.0}) {
+    const auto sun_e = e->prepare_sun({degrees_to_radians(sun_zenith), 0.0});
+    const auto sun_b = b->prepare_sun({degrees_to_radians(sun_zenith), 0.0});
+    SpectralBatch le, lb;
+    e->sky_radiance(*sun_e, {0.0}, views, le);
+    b->sky_radiance(*sun_b, {0.0}, views, lb);
+    EXPECT_EQ(le.status[0], SampleStatus::ok);
+    EXPECT_EQ(le.values, lb.values) << sun_zenith;
+  }
+  EXPECT_EQ(e->check_sun({degrees_to_radians(116.0), 0.0}),
+            SampleStatus::sun_below_horizon_unsupported);
+}
+
 TEST(Elek, DescriptorHasFifteenNativeWavelengths) {
   const ModelDescriptor& d = elek_descriptor();
   ASSERT_EQ(d.native_wavelengths_nm.size(), 15u);

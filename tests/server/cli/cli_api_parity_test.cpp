@@ -1,7 +1,9 @@
 // The CLI (offline, `clearsky import kider` and `clearsky evaluate`) and the API path (an
 // uploaded archive spooled to disk and imported on the background import pool, an evaluation
 // on the background evaluation pool) give identical results on the same captures (issue 9,
-// item 6): the same import report, and Preetham's RMSE on two public captures.
+// item 6): the same import report, and Preetham on two public captures, down to the
+// per-sample errors (`clearsky evaluate --json --samples=spectra` against
+// GET /v1/evaluations/{id}?samples=spectra).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -55,7 +57,8 @@ TEST(CliApiParity, PreethamOnTwoCapturesGivesTheSameRmseBothWays) {
       run_cli("import kider " + archive("10.00").string() + " " + archive("12.00").string() +
               " --name pair --db " + cli_db + " --json"));
   const nlohmann::json cli = nlohmann::json::parse(
-      run_cli("evaluate --dataset pair --models preetham --json --db " + cli_db));
+      run_cli("evaluate --dataset pair --models preetham --json --samples=spectra --db " +
+              cli_db));
 
   const auto api_db = dir.path / "api.db";
   storage::Database db = storage::open_database(api_db);
@@ -91,7 +94,8 @@ TEST(CliApiParity, PreethamOnTwoCapturesGivesTheSameRmseBothWays) {
       db, R"({"models": ["preetham"], "dataset": "pair"})", registered_models(), "test"));
   pool.wait_idle();
   ASSERT_EQ(pool.ticket(ticket)->status, "succeeded") << pool.ticket(ticket)->error;
-  const auto run = api::show_evaluation(db, pool.ticket(ticket)->run_ids.at(0));
+  const auto run = api::show_evaluation(db, pool.ticket(ticket)->run_ids.at(0),
+                                        {api::SampleDetail::spectra, std::nullopt});
 
   const auto& model = cli["models"][0];
   EXPECT_EQ(model["model"], "preetham");
@@ -103,7 +107,12 @@ TEST(CliApiParity, PreethamOnTwoCapturesGivesTheSameRmseBothWays) {
                      model["captures"][i]["rmse"].get<double>());
     EXPECT_DOUBLE_EQ(run["captures"][i]["sun_azimuth"].get<double>(),
                      model["captures"][i]["sun_azimuth"].get<double>());
+    // The same numbers, sample by sample and wavelength by wavelength.
+    ASSERT_EQ(run["captures"][i]["samples"].size(), 81u);
+    EXPECT_EQ(nlohmann::json(run["captures"][i]["samples"]), model["captures"][i]["samples"]);
   }
+  EXPECT_EQ(nlohmann::json(run["wavelengths_nm"]), model["wavelengths_nm"]);
+  EXPECT_EQ(run["wavelengths_nm"].size(), 31u);
   // A real RMSE of a real model, not a degenerate zero.
   EXPECT_GT(run["rmse"].get<double>(), 1.0);
 }

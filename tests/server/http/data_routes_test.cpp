@@ -105,6 +105,12 @@ TEST_F(DataRoutes, UploadShowEvaluateAndDelete) {
   EXPECT_EQ(run["software_version"], "test");
   EXPECT_GT(run["rmse"].get<double>(), 1.0);
   EXPECT_EQ(run["captures"].size(), 1u);
+  EXPECT_FALSE(run["captures"][0].contains("samples"));
+  const auto samples =
+      body(c.Get((run_path + "?samples=true&capture=2013-05-27___12.00.00").c_str()));
+  ASSERT_EQ(samples["captures"][0]["samples"].size(), 81u);
+  EXPECT_EQ(c.Get((run_path + "?samples=maybe").c_str())->status, 400);
+  EXPECT_EQ(c.Get((run_path + "?capture=none").c_str())->status, 404);
   EXPECT_EQ(body(c.Get("/v1/evaluations?model=preetham&dataset=noon")).size(), 1u);
   EXPECT_EQ(c.Get("/v1/evaluations?since=never")->status, 400);
 
