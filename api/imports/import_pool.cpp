@@ -31,13 +31,14 @@ ImportPool::~ImportPool() {
     }
   } catch (const std::exception& e) {
     // Start-up marks them failed all the same (fail_unfinished).
-    if (options_.log) options_.log(0, false, std::string("cannot record cancelled imports: ") + e.what());
+    if (options_.log)
+      options_.log(0, false, std::string("cannot record cancelled imports: ") + e.what());
   }
 }
 
 std::int64_t ImportPool::submit(storage::Database& db, const storage::NewImport& what,
-                                 const std::filesystem::path& source,
-                                 std::unique_ptr<UploadSpool> spool) {
+                                const std::filesystem::path& source,
+                                std::unique_ptr<UploadSpool> spool) {
   {
     std::lock_guard lock(mutex_);
     if (queue_.size() + reserved_ >= options_.max_queued)

@@ -37,23 +37,24 @@ nlohmann::ordered_json import_to_json(const storage::ImportRecord& record,
   if (record.report) report = nlohmann::ordered_json::parse(*record.report);
   nlohmann::ordered_json error = nullptr;
   if (record.error) error = {{"code", record.error_code.value_or("")}, {"message", *record.error}};
-  return {{"id", record.id},
-          {"dataset", record.what.dataset},
-          {"format", record.what.format},
-          {"source", record.what.source},
-          {"path", record.what.source == "path" ? nlohmann::ordered_json(record.what.path)
+  return {
+      {"id", record.id},
+      {"dataset", record.what.dataset},
+      {"format", record.what.format},
+      {"source", record.what.source},
+      {"path", record.what.source == "path" ? nlohmann::ordered_json(record.what.path)
+                                            : nlohmann::ordered_json(nullptr)},
+      {"upload_bytes", record.what.upload_bytes ? nlohmann::ordered_json(*record.what.upload_bytes)
                                                 : nlohmann::ordered_json(nullptr)},
-          {"upload_bytes", record.what.upload_bytes ? nlohmann::ordered_json(*record.what.upload_bytes)
-                                                    : nlohmann::ordered_json(nullptr)},
-          {"status", record.status},
-          {"progress", std::move(progress)},
-          {"timings",
-           {{"created", record.created_utc},
-            {"started", text_or_null(record.started_utc)},
-            {"finished", text_or_null(record.finished_utc)}}},
-          {"report", std::move(report)},
-          {"error", std::move(error)},
-          {"location", import_location(record.id)}};
+      {"status", record.status},
+      {"progress", std::move(progress)},
+      {"timings",
+       {{"created", record.created_utc},
+        {"started", text_or_null(record.started_utc)},
+        {"finished", text_or_null(record.finished_utc)}}},
+      {"report", std::move(report)},
+      {"error", std::move(error)},
+      {"location", import_location(record.id)}};
 }
 
 nlohmann::ordered_json list_imports(storage::Database& db, const ImportPool* pool,
@@ -79,8 +80,7 @@ nlohmann::ordered_json list_imports(storage::Database& db, const ImportPool* poo
 
 nlohmann::ordered_json show_import(storage::Database& db, const ImportPool* pool, std::int64_t id) {
   const auto record = storage::ImportRepository(db).get(id);
-  if (!record)
-    throw ApiError(404, "unknown_import", "id", "id: no import " + std::to_string(id));
+  if (!record) throw ApiError(404, "unknown_import", "id", "id: no import " + std::to_string(id));
   return import_to_json(*record, pool ? pool->live_progress(id) : std::nullopt);
 }
 

@@ -38,7 +38,8 @@ void add_import_command(CLI::App& app) {
   auto* import = app.add_subcommand("import", "Import measured skies into a dataset");
   import->require_subcommand(1);
   auto* kider = import->add_subcommand(
-      "kider", "Kider et al. 2014 captures: .7z archives, archives of them, or folders of .asd.rad.txt");
+      "kider",
+      "Kider et al. 2014 captures: .7z archives, archives of them, or folders of .asd.rad.txt");
   struct Options {
     std::vector<std::string> paths;
     std::string name = "kider2014";

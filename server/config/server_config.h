@@ -23,8 +23,8 @@
 // | s     | 5           | Retry-After of a 503                                   | |
 // builder_threads       |       | 1           | concurrent builds of the tables queued at start |
 // | token                 |       | (none)      | bearer token of the write endpoints; none: CLEARSKY_TOKEN, else writes disabled |
-// | models                |       | (all)       | serve only these model ids (tables, queries, evaluations) |
-// | max_upload_bytes      | byte  | 1 GiB       | dataset upload limit (POST /v1/datasets; 413 beyond); the other routes keep payload_max_bytes |
+// | models                |       | (all)       | serve only these model ids |
+// | max_upload_bytes      | byte  | 1 GiB       | dataset upload limit (413 beyond); the other routes keep payload_max_bytes |
 // | import_workers        |       | 1           | background import threads (never HTTP workers) |
 // | import_queue          |       | 8           | imports waiting for a worker (503 beyond) |
 // | evaluation_workers    |       | 1           | background evaluation threads (never HTTP workers) |

@@ -108,7 +108,8 @@ const std::vector<std::pair<std::string, std::string>>& data_routes() { return k
 void install_data_routes(httplib::Server& server, const DataServices& services,
                          const BodyLimits& limits) {
   const DataServices* s = &services;
-  const auto read_body = [limits](const httplib::Request& req, const httplib::ContentReader& content) {
+  const auto read_body = [limits](const httplib::Request& req,
+                                  const httplib::ContentReader& content) {
     return read_limited_body(req, content, limits.payload_bytes, limits.drain_bytes);
   };
 

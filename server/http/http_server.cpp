@@ -78,8 +78,8 @@ bool is_post_route(const std::string& path) {
     if (pattern.size() != requested.size()) continue;
     bool match = true;
     for (std::size_t i = 0; i < pattern.size() && match; ++i)
-      match = pattern[i] == requested[i] || (pattern[i].size() > 2 && pattern[i].front() == '{' &&
-                                             !requested[i].empty());
+      match = pattern[i] == requested[i] ||
+              (pattern[i].size() > 2 && pattern[i].front() == '{' && !requested[i].empty());
     if (match) return true;
   }
   return false;
@@ -259,17 +259,17 @@ void HttpServer::install_routes() {
       };
   // POST bodies are read under the payload limit, not buffered by cpp-httplib (whose limit is
   // the upload one).
-  const auto handle_post =
-      [this, limits](api::ApiResponse (*handler)(const api::ApiContext&, const api::ApiRequest&)) {
-        return [this, limits, handler](const httplib::Request& req, httplib::Response& res,
-                                       const httplib::ContentReader& content) {
-          api::ApiRequest request = to_api_request(req);
-          request.body = read_limited_body(req, content, config_.payload_max_bytes,
-                                           config_.body_limit_bytes());
-          const api::ApiContext context{tables_, limits};
-          send(res, handler(context, request));
-        };
-      };
+  const auto handle_post = [this, limits](api::ApiResponse (*handler)(const api::ApiContext&,
+                                                                      const api::ApiRequest&)) {
+    return [this, limits, handler](const httplib::Request& req, httplib::Response& res,
+                                   const httplib::ContentReader& content) {
+      api::ApiRequest request = to_api_request(req);
+      request.body =
+          read_limited_body(req, content, config_.payload_max_bytes, config_.body_limit_bytes());
+      const api::ApiContext context{tables_, limits};
+      send(res, handler(context, request));
+    };
+  };
   s.Get("/v1/models", handle(api::get_models));
   s.Get("/v1/sun", handle(api::get_sun));
   s.Get("/v1/radiance", handle(api::radiance));

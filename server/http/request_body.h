@@ -13,7 +13,7 @@
 namespace httplib {
 class ContentReader;
 struct Request;
-}
+}  // namespace httplib
 
 namespace clearsky::server {
 

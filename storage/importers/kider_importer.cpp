@@ -42,7 +42,8 @@ class ProgressSum {
         sum.bytes_read += s.bytes_read;
         sum.entries_read += s.entries_read;
         sum.files_read += s.files_read;
-        sum.bytes_total = s.bytes_total < 0 || sum.bytes_total < 0 ? -1 : sum.bytes_total + s.bytes_total;
+        sum.bytes_total =
+            s.bytes_total < 0 || sum.bytes_total < 0 ? -1 : sum.bytes_total + s.bytes_total;
         sum.entries_total =
             s.entries_total < 0 || sum.entries_total < 0 ? -1 : sum.entries_total + s.entries_total;
       }

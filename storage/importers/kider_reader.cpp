@@ -99,8 +99,8 @@ std::string read_entry_bytes(archive* reader, archive_entry* entry, const std::s
 
 // The radiance files of an opened archive (and of the archives it holds when nested is true),
 // appended to files with prefix before their paths.
-void read_entries(archive* reader, const std::string& name, const std::string& prefix,
-                  bool nested, ReadState& state, std::vector<KiderRawFile>& files) {
+void read_entries(archive* reader, const std::string& name, const std::string& prefix, bool nested,
+                  ReadState& state, std::vector<KiderRawFile>& files) {
   archive_entry* entry = nullptr;
   for (;;) {
     const int status = archive_read_next_header(reader, &entry);
@@ -119,8 +119,8 @@ void read_entries(archive* reader, const std::string& name, const std::string& p
       ArchivePointer inner_reader = new_reader();
       const std::string inner_name = name + ":" + inner;
       if (archive_read_open_memory(inner_reader.get(), bytes.data(), bytes.size()) != ARCHIVE_OK)
-        throw std::runtime_error(inner_name + ": cannot open archive: " +
-                                 error_text(inner_reader.get()));
+        throw std::runtime_error(inner_name +
+                                 ": cannot open archive: " + error_text(inner_reader.get()));
       read_entries(inner_reader.get(), inner_name, prefix + inner + "/", false, state, files);
     }
     state.report();

@@ -135,8 +135,8 @@ std::optional<ImportRecord> ImportRepository::get(std::int64_t id) {
 }
 
 std::vector<ImportRecord> ImportRepository::list(std::int64_t limit,
-                                                const std::optional<std::string>& status,
-                                                const std::optional<std::string>& dataset) {
+                                                 const std::optional<std::string>& status,
+                                                 const std::optional<std::string>& dataset) {
   auto statement = db_.prepare(std::string(kImportSelect) +
                                " WHERE (?1 IS NULL OR status = ?1) AND (?2 IS NULL OR dataset = ?2)"
                                " ORDER BY id DESC LIMIT ?3");

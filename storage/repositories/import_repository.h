@@ -30,7 +30,7 @@ struct ImportRecord {
   std::string status;  // queued, running, succeeded, failed
   std::string created_utc;
   std::optional<std::string> started_utc, finished_utc;
-  ImportProgress progress;  // phase empty while queued
+  ImportProgress progress;            // phase empty while queued
   std::optional<std::string> report;  // JSON
   std::optional<std::string> error_code, error;
 };

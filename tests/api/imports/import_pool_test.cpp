@@ -45,7 +45,8 @@ struct Fixture {
   storage::Database db = storage::open_database(db_path);
 
   // The spool as the HTTP route leaves it: the whole body written, finished.
-  std::pair<std::unique_ptr<UploadSpool>, std::filesystem::path> spool_of(const std::string& bytes) {
+  std::pair<std::unique_ptr<UploadSpool>, std::filesystem::path> spool_of(
+      const std::string& bytes) {
     auto spool = std::make_unique<UploadSpool>(dir.path / "uploads", 64u << 20);
     spool->append(bytes);
     const std::filesystem::path path = spool->finish();
@@ -97,7 +98,8 @@ TEST(ImportPool, TruncatedUploadFailsAndLeavesNothing) {
   bytes.resize(bytes.size() / 2);
   ImportPool pool([&f] { return storage::Database::open(f.db_path); });
   auto [spool, spooled] = f.spool_of(bytes);
-  const std::int64_t id = pool.submit(f.db, upload_of("cut", bytes.size()), spooled, std::move(spool));
+  const std::int64_t id =
+      pool.submit(f.db, upload_of("cut", bytes.size()), spooled, std::move(spool));
   pool.wait_idle();
   const auto shown = show_import(f.db, &pool, id);
   EXPECT_EQ(shown["status"], "failed");

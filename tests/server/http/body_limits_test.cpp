@@ -86,8 +86,8 @@ TEST_F(BodyLimits, UploadsHaveTheirOwnLimit) {
   auto c = client("t0ken");
   // Above the payload limit, below the upload limit: accepted, then imported (it is not an
   // archive, so the import fails; nothing stays behind).
-  const auto accepted = c.Post("/v1/datasets?name=big", std::string(1u << 20, 'x'),
-                               "application/octet-stream");
+  const auto accepted =
+      c.Post("/v1/datasets?name=big", std::string(1u << 20, 'x'), "application/octet-stream");
   ASSERT_TRUE(accepted);
   ASSERT_EQ(accepted->status, 202) << accepted->body;
   const auto state = finished_import(accepted);
@@ -95,8 +95,8 @@ TEST_F(BodyLimits, UploadsHaveTheirOwnLimit) {
   EXPECT_EQ(state["error"]["code"], "invalid_archive");
   EXPECT_EQ(state["upload_bytes"], 1u << 20);
   // Above the upload limit: 413 whether declared or found on arrival.
-  expect_too_large(c.Post("/v1/datasets?name=huge", std::string(kUpload + 1, 'x'),
-                          "application/octet-stream"));
+  expect_too_large(
+      c.Post("/v1/datasets?name=huge", std::string(kUpload + 1, 'x'), "application/octet-stream"));
   EXPECT_EQ(client().Get("/v1/datasets")->body, "[]");
   EXPECT_EQ(body(client().Get("/v1/imports")).size(), 1u);  // the 413s started no import
   EXPECT_TRUE(std::filesystem::is_empty(dir.path / "uploads"));

@@ -32,7 +32,8 @@ class DataServerFixture : public ::testing::Test {
     config.threads = 8;
     config.payload_max_bytes = payload_max_bytes;
     config.max_upload_bytes = max_upload_bytes;
-    tables = std::make_unique<TableStore>(clearsky::testing::test_factories(), TableStore::Options{});
+    tables =
+        std::make_unique<TableStore>(clearsky::testing::test_factories(), TableStore::Options{});
     const auto path = db_path;
     pool = std::make_unique<api::EvaluationPool>([path] { return storage::Database::open(path); },
                                                  registered_models());

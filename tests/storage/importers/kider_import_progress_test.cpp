@@ -98,8 +98,9 @@ TEST(KiderImportProgress, FolderTotalsAreKnownFromTheStart) {
   testing::TempDir dir;
   std::filesystem::create_directories(dir.path / "f");
   for (int i = 0; i < 81; ++i) {
-    std::ofstream out(dir.path / "f" /
-                      ("2013-05-27___14.00.00_-_" + std::to_string(i) + "____0.0___12.1151.asd.rad.txt"));
+    std::ofstream out(
+        dir.path / "f" /
+        ("2013-05-27___14.00.00_-_" + std::to_string(i) + "____0.0___12.1151.asd.rad.txt"));
     out << "Wavelength\tx\n";
     for (int w = 350; w <= 2500; ++w) out << w << "\t0.1\n";
   }
