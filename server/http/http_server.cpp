@@ -199,6 +199,10 @@ void HttpServer::install_routes() {
     send(res, api::error_response(api::too_large(
                   "body", std::string(upload ? "the upload" : "the request body") +
                               " is above the limit of " + std::to_string(limit) + " bytes")));
+    // cpp-httplib 0.11.4 writes this answer without its Content-Length (curl then waits for the
+    // connection to close, and sends the body meanwhile); the body is never read: close.
+    res.set_header("Content-Length", std::to_string(res.body.size()));
+    res.set_header("Connection", "close");
     return res.status;
   });
 

@@ -116,8 +116,14 @@ std::string ask_before_sending(int port, const std::string& head) {
     timeval timeout{10, 0};
     ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
     char buffer[4096];
-    // Up to the end of the headers of the first answer (and its small body if it came along).
-    while (answer.find("\r\n\r\n") == std::string::npos) {
+    // The first answer: its head, and its body when it gives a length.
+    for (;;) {
+      const auto end = answer.find("\r\n\r\n");
+      if (end != std::string::npos) {
+        const auto length_at = answer.find("Content-Length: ");
+        if (length_at == std::string::npos || length_at > end) break;
+        if (answer.size() >= end + 4 + std::stoul(answer.substr(length_at + 16))) break;
+      }
       const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
       if (n <= 0) break;
       answer.append(buffer, static_cast<std::size_t>(n));
@@ -141,6 +147,16 @@ TEST_F(BodyLimits, ExpectContinueIsAnsweredByTheLimitOfTheRoute) {
   };
   EXPECT_EQ(answer("/v1/radiance", kPayload + 1), "HTTP/1.1 413");
   EXPECT_EQ(answer("/v1/datasets?name=d", kUpload + 1), "HTTP/1.1 413");
+  // A complete answer (its length given, so that curl does not wait for the connection to
+  // close, sending the body meanwhile), telling the client to close.
+  const std::string refused = ask_before_sending(port, head("/v1/radiance", kPayload + 1));
+  const auto length_at = refused.find("Content-Length: ");
+  ASSERT_NE(length_at, std::string::npos) << refused;
+  const std::size_t length = std::stoul(refused.substr(length_at + 16));
+  const std::string json = refused.substr(refused.find("\r\n\r\n") + 4);
+  EXPECT_EQ(json.size(), length);
+  EXPECT_EQ(nlohmann::json::parse(json)["error"]["code"], "too_large");
+  EXPECT_NE(refused.find("Connection: close"), std::string::npos) << refused;
   // Within the limits: go on.
   EXPECT_EQ(answer("/v1/radiance", kPayload), "HTTP/1.1 100");
   EXPECT_EQ(answer("/v1/datasets?name=d", kPayload + 1), "HTTP/1.1 100");
