@@ -51,8 +51,11 @@ std::int64_t ImportPool::submit(storage::Database& db, const storage::NewImport&
   try {
     id = storage::ImportRepository(db).create(what);
   } catch (...) {
-    std::lock_guard lock(mutex_);
-    --reserved_;
+    {
+      std::lock_guard lock(mutex_);
+      --reserved_;
+    }
+    idle_.notify_all();
     throw;
   }
   {
