@@ -94,15 +94,29 @@ nlohmann::ordered_json delete_dataset(storage::Database& db, const std::string& 
   return {{"deleted", name}};
 }
 
-nlohmann::ordered_json import_dataset(storage::Database& db, const std::string& name,
-                                      const std::string& format,
-                                      const std::filesystem::path& archive_or_folder) {
+void check_import_format(const std::string& format) {
   if (format != "kider")
     throw invalid_parameter("format", "'" + format + "' is not an import format (known: kider)");
+}
+
+nlohmann::ordered_json import_report_json(const storage::ImportReport& report) {
+  return {{"dataset", report.dataset},
+          {"added", report.added},
+          {"unchanged", report.unchanged},
+          {"samples_added", report.samples_added},
+          {"seconds", report.seconds}};
+}
+
+nlohmann::ordered_json import_dataset(
+    storage::Database& db, const std::string& name, const std::string& format,
+    const std::filesystem::path& archive_or_folder,
+    const std::function<void(const storage::ImportProgress&)>& progress) {
+  check_import_format(format);
   if (name.empty()) throw missing_parameter("name", "the dataset to import into");
   storage::KiderImportRequest request;
   request.dataset_name = name;
   request.paths = {archive_or_folder};
+  request.progress = progress;
   storage::ImportReport report;
   try {
     report = storage::import_kider(db, request);
@@ -119,18 +133,7 @@ nlohmann::ordered_json import_dataset(storage::Database& db, const std::string& 
       throw ApiError(409, "conflict", "", message);
     throw ApiError(400, "invalid_archive", "", message);
   }
-  if (report.added.empty() && report.unchanged.empty()) {
-    // Nothing readable: the dataset the import created (if new) must not stay behind empty.
-    const auto dataset = storage::DatasetRepository(db).find(name);
-    if (dataset && dataset->captures == 0) storage::DatasetRepository(db).remove(name);
-    throw ApiError(400, "invalid_archive", "",
-                   "the upload holds no Kider capture (.asd.rad.txt files)");
-  }
-  return {{"dataset", report.dataset},
-          {"added", report.added},
-          {"unchanged", report.unchanged},
-          {"samples_added", report.samples_added},
-          {"seconds", report.seconds}};
+  return import_report_json(report);
 }
 
 }  // namespace clearsky::api

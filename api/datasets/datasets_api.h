@@ -8,18 +8,21 @@
 //            "samples": N}]}; samples=true adds each capture's samples {"index", "view_zenith",
 //            "view_azimuth" (degrees, clockwise from North), "flags"}, and capture=LABEL keeps one
 //            capture and adds each sample's spectrum {"wavelengths_nm", "radiance"} (W/(m2.sr.nm)).
-//   import: the import report {"dataset", "added", "unchanged", "samples_added", "seconds"}.
+//   import: the import report {"dataset", "added", "unchanged", "samples_added", "seconds"}
+//           (over HTTP, imports run as background jobs: api/imports/).
 // Errors are ApiError: 404 unknown dataset or capture, 400 bad parameter or archive content,
 // 409 conflicting content. An import is one transaction: a failure leaves nothing behind.
 // Thread-safety: each call uses the given Database from the calling thread only.
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "storage/importers/kider_importer.h"
 #include "storage/sqlite/database.h"
 
 namespace clearsky::api {
@@ -37,9 +40,15 @@ nlohmann::ordered_json show_dataset(storage::Database& db, const std::string& na
 nlohmann::ordered_json delete_dataset(storage::Database& db, const std::string& name);
 
 // Imports an archive (.7z, zip, tar: anything libarchive reads) or a folder of Kider
-// .asd.rad.txt files into the named dataset. format must be "kider".
-nlohmann::ordered_json import_dataset(storage::Database& db, const std::string& name,
-                                      const std::string& format,
-                                      const std::filesystem::path& archive_or_folder);
+// .asd.rad.txt files into the named dataset. format must be "kider". progress is called as
+// storage::KiderImportRequest::progress (kider_importer.h).
+nlohmann::ordered_json import_dataset(
+    storage::Database& db, const std::string& name, const std::string& format,
+    const std::filesystem::path& archive_or_folder,
+    const std::function<void(const storage::ImportProgress&)>& progress = {});
+// The import report as JSON (the API's and `clearsky import --json`'s).
+nlohmann::ordered_json import_report_json(const storage::ImportReport& report);
+// Checks the format before an import is queued (400 naming "format").
+void check_import_format(const std::string& format);
 
 }  // namespace clearsky::api

@@ -1,4 +1,4 @@
-// OpenAPI paths of /v1/datasets, /v1/evaluations and /v1/jobs (data_paths.h).
+// OpenAPI paths of /v1/datasets, /v1/imports, /v1/evaluations and /v1/jobs (data_paths.h).
 #include "api/openapi/data_paths.h"
 
 #include <string>
@@ -59,9 +59,11 @@ void add_data_paths(json& paths) {
       {"responses", {{"200", ok("[{name, format, created, captures, samples}]")}}}};
   paths["/v1/datasets"]["post"] = write(
       {{"summary",
-        "Import Kider captures into a dataset, in one transaction: the body is a .7z, zip or "
-        "tar archive of .asd.rad.txt files (streamed to disk, size-limited), or path= names an "
-        "archive or folder on the server"},
+        "Import Kider captures into a dataset as a background job: the body is a .7z, zip or "
+        "tar archive of .asd.rad.txt files or of such .7z files (streamed to disk under the "
+        "upload limit, max-upload-bytes), or path= names an archive or folder on the server. "
+        "202 with the import's state; follow Location (/v1/imports/{id}). The import is one "
+        "transaction: a failure leaves nothing behind"},
        {"parameters",
         json::array({query("name", "string", "Dataset name", true),
                      query("format", "string", "kider (default)"),
@@ -70,10 +72,29 @@ void add_data_paths(json& paths) {
         {{"required", false},
          {"content", {{"application/octet-stream", {{"schema", {{"type", "string"}, {"format", "binary"}}}}}}}}},
        {"responses",
-        {{"201", ok("{dataset, added, unchanged, samples_added, seconds}")},
-         {"400", error("Not an archive of Kider captures")},
-         {"409", error("A capture label already held with other content")},
-         {"413", error("Body above the upload limit")}}}});
+        {{"202", {{"description", "Queued: the import's state (as GET /v1/imports/{id})"},
+                  {"headers", {{"Location", {{"description", "/v1/imports/{id}"},
+                                             {"schema", {{"type", "string"}}}}}}},
+                  {"content", {{"application/json", {{"schema", {{"type", "object"}}}}}}}}},
+         {"400", error("Bad parameter, unknown format, no body and no path, or no such path")},
+         {"413", error("Body above the upload limit")},
+         {"503", error("Too many imports queued")}}}});
+  paths["/v1/imports"]["get"] = {
+      {"summary", "Dataset imports, newest first (state, progress, timings, report or error)"},
+      {"parameters", json::array({query("status", "string", "queued, running, succeeded or failed"),
+                                  query("dataset", "string", "Imports into this dataset")})},
+      {"responses", {{"200", ok("[import]")}}}};
+  paths["/v1/imports/{id}"]["get"] = {
+      {"summary",
+       "One import: {id, dataset, format, source, path, upload_bytes, status, progress: "
+       "{phase, bytes_read, bytes_total, entries_read, entries_total, files_read, "
+       "captures_added, samples_added}, timings: {created, started, finished}, report, "
+       "error: {code, message}, location}; an import a crash interrupted is failed with code "
+       "interrupted. Failures of the import itself: invalid_archive (not Kider content), "
+       "conflict (a label held with other content)"},
+      {"parameters", json::array({in_path("id", "Import id")})},
+      {"responses", {{"200", ok("{id, dataset, status, progress, timings, report, error, ...}")},
+                     {"404", error("Unknown import")}}}};
   paths["/v1/datasets/{name}"]["get"] = {
       {"summary",
        "A dataset's captures: time, place, sun angles used; samples=true adds sample "

@@ -73,7 +73,8 @@ json responses(json ok) {
       {"400", error_response(
                   "Invalid, unknown, unused or conflicting parameter (named in error.parameter)")},
       {"404", error_response("Unknown model")},
-      {"413", error_response("Above a configured limit (views, wavelengths, size, body)")},
+      {"413", error_response("Above a configured limit (views, wavelengths, size; a request "
+                             "body above payload-max-bytes)")},
       {"422",
        error_response("The model's capabilities exclude the request (the message says why)")},
       {"503", error_response("Tables still being built; see the Retry-After header")}};

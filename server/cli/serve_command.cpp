@@ -6,12 +6,14 @@
 #include <pthread.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <thread>
 
 #include "api/datasets/upload_spool.h"
+#include "api/imports/imports_api.h"
 #include "models/colour/three_wavelength_rgb.h"
 #include "models/registry.h"
 #include "server/cache/file_table_cache.h"
@@ -24,6 +26,18 @@
 namespace clearsky::cli {
 
 namespace {
+
+// The registered models, or those named (--models), in registry order.
+std::vector<ModelFactory> served_models(const std::vector<std::string>& ids) {
+  const auto all = registered_models();
+  if (ids.empty()) return {all.begin(), all.end()};
+  for (const std::string& id : ids)
+    if (find_model(id) == nullptr) throw CLI::ValidationError("--models", "no model " + id);
+  std::vector<ModelFactory> chosen;
+  for (const ModelFactory& f : all)
+    if (std::find(ids.begin(), ids.end(), f.descriptor->id) != ids.end()) chosen.push_back(f);
+  return chosen;
+}
 
 void run_server(const server::ServerConfig& config, const std::string& software_version) {
   // Signals are taken by one thread with sigwait (a handler may not call into the server).
@@ -46,8 +60,8 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   options.retry_after_s = config.retry_after_s;
   options.builder_threads = config.builder_threads;
   options.cache = &cache;
-  const auto registered = registered_models();
-  server::TableStore tables({registered.begin(), registered.end()}, options);
+  const std::vector<ModelFactory> registered = served_models(config.models);
+  server::TableStore tables(registered, options);
   tables.set_build_observer([&metrics](const std::string& id, double seconds, bool from_cache) {
     metrics.observe_build(id, seconds, from_cache);
   });
@@ -72,6 +86,8 @@ void run_server(const server::ServerConfig& config, const std::string& software_
     const int interrupted = storage::EvaluationRunRepository(db).fail_unfinished(
         "interrupted: the server stopped during the run");
     if (interrupted > 0) spdlog::warn("{} evaluation runs were interrupted; marked failed", interrupted);
+    const int imports = api::fail_interrupted_imports(db);
+    if (imports > 0) spdlog::warn("{} imports were interrupted; marked failed", imports);
   }
   const std::filesystem::path db_path = config.db_path;
   const auto open_database = [db_path] { return storage::Database::open(db_path); };
@@ -86,7 +102,18 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   data.upload_dir = (db_path.has_parent_path() ? db_path.parent_path() : std::filesystem::path(".")) / "uploads";
   if (const int stale = api::remove_stale_uploads(data.upload_dir); stale > 0)
     spdlog::info("removed {} upload files left by an earlier process", stale);
-  data.upload_max_bytes = config.payload_max_bytes;
+  data.upload_max_bytes = config.max_upload_bytes;
+  api::ImportPoolOptions import_options;
+  import_options.workers = config.import_workers;
+  import_options.max_queued = config.import_queue;
+  import_options.log = [](std::int64_t id, bool ok, const std::string& message) {
+    if (ok)
+      spdlog::info("import {} succeeded {}", id, message);
+    else
+      spdlog::warn("import {} failed {}", id, message);
+  };
+  api::ImportPool imports(open_database, import_options);
+  data.imports = &imports;
   data.pool = &evaluations;
   data.auth = &auth;
   data.models = registered;
@@ -148,6 +175,8 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
   add_database_option(*command, config->db_path);
   command->add_option("--cache-dir", config->cache_dir, "Disk cache of model tables")
       ->capture_default_str();
+  command->add_option("--models", config->models, "Serve only these models (default: all)")
+      ->delimiter(',');
   command
       ->add_option("--threads", config->threads,
                    "HTTP worker threads (0: 32 per core, at least 64)")
@@ -157,7 +186,13 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
   command
       ->add_option("--listen-backlog", config->listen_backlog, "Pending connections before accept")
       ->capture_default_str();
-  command->add_option("--payload-max-bytes", config->payload_max_bytes, "Request body limit")
+  command
+      ->add_option("--payload-max-bytes", config->payload_max_bytes,
+                   "Request body limit (all routes but the dataset upload)")
+      ->capture_default_str();
+  command
+      ->add_option("--max-upload-bytes", config->max_upload_bytes,
+                   "Dataset upload limit (POST /v1/datasets)")
       ->capture_default_str();
   command->add_option("--read-timeout", config->read_timeout_s, "Socket read timeout, s")
       ->capture_default_str();
@@ -201,6 +236,14 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
                    "Background evaluation threads")
       ->capture_default_str()
       ->check(CLI::Range(1u, 64u));
+  command
+      ->add_option("--import-workers", config->import_workers, "Background import threads")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 16u));
+  command
+      ->add_option("--import-queue", config->import_queue,
+                   "Imports waiting for a worker (503 beyond)")
+      ->capture_default_str();
   command
       ->add_option("--evaluation-queue", config->evaluation_queue,
                    "Evaluations waiting for a worker (503 beyond)")

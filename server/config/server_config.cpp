@@ -12,4 +12,8 @@ unsigned ServerConfig::worker_threads() const {
   return std::max(64u, 32u * cores);
 }
 
+std::size_t ServerConfig::body_limit_bytes() const {
+  return std::max(payload_max_bytes, max_upload_bytes);
+}
+
 }  // namespace clearsky::server

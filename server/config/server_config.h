@@ -23,6 +23,10 @@
 // | s     | 5           | Retry-After of a 503                                   | |
 // builder_threads       |       | 1           | concurrent builds of the tables queued at start |
 // | token                 |       | (none)      | bearer token of the write endpoints; none: CLEARSKY_TOKEN, else writes disabled |
+// | models                |       | (all)       | serve only these model ids |
+// | max_upload_bytes      | byte  | 1 GiB       | dataset upload limit (413 beyond); the other routes keep payload_max_bytes |
+// | import_workers        |       | 1           | background import threads (never HTTP workers) |
+// | import_queue          |       | 8           | imports waiting for a worker (503 beyond) |
 // | evaluation_workers    |       | 1           | background evaluation threads (never HTTP workers) |
 // | evaluation_queue      |       | 16          | evaluations waiting for a worker (503 beyond)          |
 // | prebuild_three        |       | true        | also build each model on the 3-wavelength grid of
@@ -31,6 +35,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace clearsky::server {
 
@@ -39,10 +44,12 @@ struct ServerConfig {
   int port = 8080;
   std::string db_path = "var/clearsky.db";
   std::string cache_dir = "var/cache";
+  std::vector<std::string> models;  // empty: every registered model
   unsigned threads = 0;
   std::size_t max_queued = 256;
   int listen_backlog = 1024;
   std::size_t payload_max_bytes = 8u << 20;
+  std::size_t max_upload_bytes = std::size_t{1} << 30;
   int read_timeout_s = 10;
   int write_timeout_s = 30;
   std::size_t keep_alive_max_count = 1000;
@@ -58,9 +65,13 @@ struct ServerConfig {
   std::string token;
   unsigned evaluation_workers = 1;
   std::size_t evaluation_queue = 16;
+  unsigned import_workers = 1;
+  std::size_t import_queue = 8;
 
   // The worker count threads resolves to.
   unsigned worker_threads() const;
+  // The largest body any route reads: cpp-httplib's (single) payload limit.
+  std::size_t body_limit_bytes() const;
 };
 
 }  // namespace clearsky::server

@@ -10,7 +10,9 @@
 #include "api/datasets/upload_spool.h"
 #include "api/evaluation/evaluations_api.h"
 #include "api/http/api_types.h"
+#include "api/imports/imports_api.h"
 #include "api/jobs/jobs_api.h"
+#include "server/http/request_body.h"
 #include "storage/sqlite/database.h"
 
 namespace clearsky::server {
@@ -21,6 +23,8 @@ const std::vector<std::pair<std::string, std::string>> kDataRoutes = {
     {"POST", "/v1/datasets"},
     {"GET", "/v1/datasets/{name}"},
     {"DELETE", "/v1/datasets/{name}"},
+    {"GET", "/v1/imports"},
+    {"GET", "/v1/imports/{id}"},
     {"GET", "/v1/evaluations"},
     {"POST", "/v1/evaluations"},
     {"GET", "/v1/evaluations/{id}"},
@@ -101,8 +105,13 @@ void write(const DataServices& s, const httplib::Request& req, httplib::Response
 
 const std::vector<std::pair<std::string, std::string>>& data_routes() { return kDataRoutes; }
 
-void install_data_routes(httplib::Server& server, const DataServices& services) {
+void install_data_routes(httplib::Server& server, const DataServices& services,
+                         const BodyLimits& limits) {
   const DataServices* s = &services;
+  const auto read_body = [limits](const httplib::Request& req,
+                                  const httplib::ContentReader& content) {
+    return read_limited_body(req, content, limits.payload_bytes, limits.drain_bytes);
+  };
 
   server.Get("/v1/datasets", [s](const httplib::Request& req, httplib::Response& res) {
     only_parameters(req, {}, "GET /v1/datasets");
@@ -125,16 +134,19 @@ void install_data_routes(httplib::Server& server, const DataServices& services) 
     });
   });
   // The body is the archive, spooled to disk as it arrives; or no body and path=SERVER_PATH
-  // (an archive or folder on the server: the token holder is the administrator).
+  // (an archive or folder on the server: the token holder is the administrator). Checked here
+  // (parameters, format, path, size), then imported on the ImportPool: 202 with the import's
+  // state and its Location.
   server.Post("/v1/datasets", [s](const httplib::Request& req, httplib::Response& res,
                                   const httplib::ContentReader& content) {
     write(*s, req, res, [&] {
       only_parameters(req, {"name", "format", "path"}, "POST /v1/datasets");
-      const std::string name = query_value(req, "name");
-      if (name.empty()) throw api::missing_parameter("name", "the dataset to import into");
-      const std::string format = req.has_param("format") ? query_value(req, "format") : "kider";
-      std::optional<api::UploadSpool> spool;
-      spool.emplace(s->upload_dir, s->upload_max_bytes);
+      storage::NewImport what;
+      what.dataset = query_value(req, "name");
+      if (what.dataset.empty()) throw api::missing_parameter("name", "the dataset to import into");
+      what.format = req.has_param("format") ? query_value(req, "format") : "kider";
+      api::check_import_format(what.format);
+      auto spool = std::make_unique<api::UploadSpool>(s->upload_dir, s->upload_max_bytes);
       std::exception_ptr failure;
       const bool read = content([&](const char* data, std::size_t size) {
         try {
@@ -146,24 +158,49 @@ void install_data_routes(httplib::Server& server, const DataServices& services) 
         }
       });
       if (failure) std::rethrow_exception(failure);
-      // cpp-httplib stops reading, without calling the receiver, a body above its payload limit.
+      // cpp-httplib skips, without calling the receiver, a body above its payload limit.
       if (!read) {
         if (req.get_header_value<std::uint64_t>("Content-Length") > s->upload_max_bytes)
           throw api::too_large("body", "the upload is above the limit of " +
                                            std::to_string(s->upload_max_bytes) + " bytes");
         throw api::ApiError(400, "invalid_body", "body", "body: the upload could not be read");
       }
-      storage::Database db = connect(*s);
+      std::filesystem::path source;
       if (req.has_param("path")) {
         if (spool->size_bytes() > 0)
           throw api::conflicting_parameters("path", "an uploaded body");
-        send_json(res, api::import_dataset(db, name, format, query_value(req, "path")), 201);
-        return;
+        spool.reset();
+        what.source = "path";
+        what.path = query_value(req, "path");
+        std::error_code error;
+        if (!std::filesystem::exists(what.path, error))
+          throw api::invalid_parameter("path", "no file or folder " + what.path + " on the server");
+        source = what.path;
+      } else {
+        if (spool->size_bytes() == 0)
+          throw api::missing_parameter("body", "the archive (.7z, zip or tar), or path=");
+        what.source = "upload";
+        what.upload_bytes = static_cast<std::int64_t>(spool->size_bytes());
+        source = spool->finish();
       }
-      if (spool->size_bytes() == 0)
-        throw api::missing_parameter("body", "the archive (.7z, zip or tar), or path=");
-      send_json(res, api::import_dataset(db, name, format, spool->finish()), 201);
+      if (s->imports == nullptr)
+        throw api::ApiError(503, "imports_unavailable", "", "this server runs no import workers");
+      storage::Database db = connect(*s);
+      const std::int64_t id = s->imports->submit(db, what, source, std::move(spool));
+      res.set_header("Location", api::import_location(id));
+      send_json(res, api::show_import(db, s->imports, id), 202);
     });
+  });
+
+  server.Get("/v1/imports", [s](const httplib::Request& req, httplib::Response& res) {
+    std::vector<std::pair<std::string, std::string>> query(req.params.begin(), req.params.end());
+    storage::Database db = connect(*s);
+    send_json(res, api::list_imports(db, s->imports, query));
+  });
+  server.Get(R"(/v1/imports/([^/]+))", [s](const httplib::Request& req, httplib::Response& res) {
+    only_parameters(req, {}, "GET /v1/imports/{id}");
+    storage::Database db = connect(*s);
+    send_json(res, api::show_import(db, s->imports, api::parse_id(req.matches[1], "id")));
   });
 
   server.Get("/v1/evaluations", [s](const httplib::Request& req, httplib::Response& res) {
@@ -186,11 +223,13 @@ void install_data_routes(httplib::Server& server, const DataServices& services) 
                                      "ticket: no evaluation ticket " + std::string(req.matches[1]));
                send_json(res, api::ticket_to_json(*ticket));
              });
-  server.Post("/v1/evaluations", [s](const httplib::Request& req, httplib::Response& res) {
+  server.Post("/v1/evaluations", [s, read_body](const httplib::Request& req, httplib::Response& res,
+                                           const httplib::ContentReader& content) {
     write(*s, req, res, [&] {
+      const std::string text = read_body(req, content);
       storage::Database db = connect(*s);
       const std::int64_t ticket = s->pool->submit(
-          api::parse_evaluation_request(db, req.body, s->models, s->software_version));
+          api::parse_evaluation_request(db, text, s->models, s->software_version));
       nlohmann::ordered_json body = api::ticket_to_json(*s->pool->ticket(ticket));
       body["location"] = "/v1/evaluations/tickets/" + std::to_string(ticket);
       send_json(res, body, 202);
@@ -206,10 +245,12 @@ void install_data_routes(httplib::Server& server, const DataServices& services) 
     storage::Database db = connect(*s);
     send_json(res, api::show_job(db, api::parse_id(req.matches[1], "id")));
   });
-  server.Post("/v1/jobs", [s](const httplib::Request& req, httplib::Response& res) {
+  server.Post("/v1/jobs", [s, read_body](const httplib::Request& req, httplib::Response& res,
+                                    const httplib::ContentReader& content) {
     write(*s, req, res, [&] {
+      const std::string text = read_body(req, content);
       storage::Database db = connect(*s);
-      send_json(res, api::create_job(db, req.body, s->models, now_unix_s()), 201);
+      send_json(res, api::create_job(db, text, s->models, now_unix_s()), 201);
     });
   });
   server.Delete(R"(/v1/jobs/([^/]+))", [s](const httplib::Request& req, httplib::Response& res) {
@@ -219,8 +260,10 @@ void install_data_routes(httplib::Server& server, const DataServices& services) 
     });
   });
   server.Post(R"(/v1/jobs/([^/]+)/(pause|resume))",
-              [s](const httplib::Request& req, httplib::Response& res) {
+              [s, read_body](const httplib::Request& req, httplib::Response& res,
+                        const httplib::ContentReader& content) {
                 write(*s, req, res, [&] {
+                  read_body(req, content);
                   storage::Database db = connect(*s);
                   const std::int64_t id = api::parse_id(req.matches[1], "id");
                   send_json(res, req.matches[2] == "pause" ? api::pause_job(db, id)

@@ -13,6 +13,7 @@
 #include "api/parse/invalid_parameter.h"
 #include "api/skydome/skydome_render.h"
 #include "server/http/bounded_task_queue.h"
+#include "server/http/request_body.h"
 
 namespace clearsky::server {
 
@@ -58,6 +59,32 @@ api::ApiRequest to_api_request(const httplib::Request& req) {
   return r;
 }
 
+// Whether path is one of the served POST routes; "{name}" segments match any segment.
+bool is_post_route(const std::string& path) {
+  const auto segments = [](std::string_view text) {
+    std::vector<std::string_view> parts;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+      const std::size_t end = std::min(text.find('/', start), text.size());
+      parts.push_back(text.substr(start, end - start));
+      start = end + 1;
+    }
+    return parts;
+  };
+  const auto requested = segments(path);
+  for (const auto& [method, route] : HttpServer::routes()) {
+    if (method != "POST") continue;
+    const auto pattern = segments(route);
+    if (pattern.size() != requested.size()) continue;
+    bool match = true;
+    for (std::size_t i = 0; i < pattern.size() && match; ++i)
+      match = pattern[i] == requested[i] ||
+              (pattern[i].size() > 2 && pattern[i].front() == '{' && !requested[i].empty());
+    if (match) return true;
+  }
+  return false;
+}
+
 std::shared_ptr<spdlog::logger> access_logger() {
   static std::shared_ptr<spdlog::logger> logger = [] {
     auto existing = spdlog::get("access");
@@ -80,7 +107,9 @@ const std::vector<std::pair<std::string, std::string>>& HttpServer::routes() {
   return all;
 }
 
-void HttpServer::add_data_routes(const DataServices& services) { install_data_routes(*http_, services); }
+void HttpServer::add_data_routes(const DataServices& services) {
+  install_data_routes(*http_, services, {config_.payload_max_bytes, config_.body_limit_bytes()});
+}
 
 HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& metrics)
     : config_(config),
@@ -90,7 +119,9 @@ HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& 
   const unsigned workers = config_.worker_threads();
   const std::size_t queued = config_.max_queued;
   http_->new_task_queue = [workers, queued] { return new BoundedTaskQueue(workers, queued); };
-  http_->set_payload_max_length(config_.payload_max_bytes);
+  // The library's one limit is the largest body any route takes (an upload); the other routes
+  // apply payload_max_bytes themselves (request_body.h and the pre-routing handler).
+  http_->set_payload_max_length(config_.body_limit_bytes());
   http_->set_read_timeout(config_.read_timeout_s, 0);
   http_->set_write_timeout(config_.write_timeout_s, 0);
   http_->set_keep_alive_max_count(config_.keep_alive_max_count);
@@ -137,9 +168,42 @@ void HttpServer::install_routes() {
   httplib::Server& s = *http_;
   const api::Limits limits{config_.max_views, config_.max_wavelengths, config_.max_skydome_size};
 
-  s.set_pre_routing_handler([](const httplib::Request&, httplib::Response&) {
+  // Bodies that no route reads (other methods, unknown POST paths) are refused above the
+  // payload limit before they are read: cpp-httplib would buffer them whole up to the upload
+  // limit. The connection is closed, since the body is left unread. The POST routes limit
+  // their bodies where they read them (read_limited_body; the upload route's spool).
+  s.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
     current_request = {Clock::now(), {}};
+    if (req.method == "POST" && is_post_route(req.path))
+      return httplib::Server::HandlerResponse::Unhandled;
+    const bool chunked =
+        req.get_header_value("Transfer-Encoding").find("chunked") != std::string::npos;
+    if (chunked ||
+        req.get_header_value<std::uint64_t>("Content-Length") > config_.payload_max_bytes) {
+      send(res, api::error_response(api::too_large(
+                    "body", "the request body is above the limit of " +
+                                std::to_string(config_.payload_max_bytes) + " bytes")));
+      res.set_header("Connection", "close");
+      return httplib::Server::HandlerResponse::Handled;
+    }
     return httplib::Server::HandlerResponse::Unhandled;
+  });
+
+  // A client that asks before sending its body (Expect: 100-continue, as curl does above
+  // 1 MB) learns of a body above the limit of its route at once and never sends it.
+  s.set_expect_100_continue_handler([this](const httplib::Request& req, httplib::Response& res) {
+    const bool upload = req.method == "POST" && req.path == "/v1/datasets";
+    const std::size_t limit = upload ? config_.max_upload_bytes : config_.payload_max_bytes;
+    if (req.get_header_value<std::uint64_t>("Content-Length") <= limit) return 100;
+    current_request = {Clock::now(), {}};
+    send(res, api::error_response(api::too_large(
+                  "body", std::string(upload ? "the upload" : "the request body") +
+                              " is above the limit of " + std::to_string(limit) + " bytes")));
+    // cpp-httplib 0.11.4 writes this answer without its Content-Length (curl then waits for the
+    // connection to close, and sends the body meanwhile); the body is never read: close.
+    res.set_header("Content-Length", std::to_string(res.body.size()));
+    res.set_header("Connection", "close");
+    return res.status;
   });
 
   // The one exception handler: typed API errors keep their status; anything else is a 500
@@ -197,13 +261,26 @@ void HttpServer::install_routes() {
           send(res, handler(context, to_api_request(req)));
         };
       };
+  // POST bodies are read under the payload limit, not buffered by cpp-httplib (whose limit is
+  // the upload one).
+  const auto handle_post = [this, limits](api::ApiResponse (*handler)(const api::ApiContext&,
+                                                                      const api::ApiRequest&)) {
+    return [this, limits, handler](const httplib::Request& req, httplib::Response& res,
+                                   const httplib::ContentReader& content) {
+      api::ApiRequest request = to_api_request(req);
+      request.body =
+          read_limited_body(req, content, config_.payload_max_bytes, config_.body_limit_bytes());
+      const api::ApiContext context{tables_, limits};
+      send(res, handler(context, request));
+    };
+  };
   s.Get("/v1/models", handle(api::get_models));
   s.Get("/v1/sun", handle(api::get_sun));
   s.Get("/v1/radiance", handle(api::radiance));
-  s.Post("/v1/radiance", handle(api::radiance));
+  s.Post("/v1/radiance", handle_post(api::radiance));
   s.Get("/v1/irradiance", handle(api::irradiance));
   s.Get("/v1/rgb", handle(api::rgb));
-  s.Post("/v1/rgb", handle(api::rgb));
+  s.Post("/v1/rgb", handle_post(api::rgb));
 
   // The skydome is checked completely before the response starts; then it is computed band by
   // band and streamed (chunked) from the content provider, which owns the render job.

@@ -2,6 +2,7 @@
 #include "storage/importers/kider_importer.h"
 
 #include <chrono>
+#include <mutex>
 #include <stdexcept>
 
 #include "models/core/content_hash.h"
@@ -22,6 +23,42 @@ template <typename T>
 std::uint64_t hash_value(std::uint64_t h, const T& value) {
   return hash_bytes(h, &value, sizeof value);
 }
+
+// The progress of several sources read in parallel, summed and passed on one call at a time.
+class ProgressSum {
+ public:
+  ProgressSum(std::size_t sources, const std::function<void(const ImportProgress&)>& callback)
+      : per_source_(sources), callback_(callback) {}
+
+  KiderReadObserver observer(std::size_t source) {
+    if (!callback_) return {};
+    return [this, source](const KiderReadProgress& p) {
+      std::lock_guard lock(mutex_);
+      per_source_[source] = p;
+      ImportProgress sum;
+      sum.bytes_total = 0;
+      sum.entries_total = 0;
+      for (const KiderReadProgress& s : per_source_) {
+        sum.bytes_read += s.bytes_read;
+        sum.entries_read += s.entries_read;
+        sum.files_read += s.files_read;
+        sum.bytes_total =
+            s.bytes_total < 0 || sum.bytes_total < 0 ? -1 : sum.bytes_total + s.bytes_total;
+        sum.entries_total =
+            s.entries_total < 0 || sum.entries_total < 0 ? -1 : sum.entries_total + s.entries_total;
+      }
+      last_ = sum;
+      callback_(sum);
+    };
+  }
+  ImportProgress last() const { return last_; }
+
+ private:
+  std::mutex mutex_;
+  std::vector<KiderReadProgress> per_source_;
+  const std::function<void(const ImportProgress&)>& callback_;
+  ImportProgress last_;
+};
 
 }  // namespace
 
@@ -58,17 +95,29 @@ ImportReport import_kider(Database& db, const KiderImportRequest& request) {
   };
   const std::size_t path_count = request.paths.size();
   std::vector<Decoded> decoded(path_count + request.archives_in_memory.size());
+  ProgressSum reading(decoded.size(), request.progress);
   parallel_for(decoded.size(), [&](std::size_t i) {
     if (i < path_count) {
       decoded[i].source = request.paths[i].string();
-      decoded[i].captures = read_kider_path(request.paths[i], request.options);
+      decoded[i].captures =
+          decode_kider_files(read_kider_raw_files(request.paths[i], reading.observer(i)),
+                             decoded[i].source, request.options);
     } else {
       const auto& upload = request.archives_in_memory[i - path_count];
       decoded[i].source = upload.name;
-      decoded[i].captures = decode_kider_files(read_kider_archive_bytes(upload.bytes, upload.name),
-                                               upload.name, request.options);
+      decoded[i].captures = decode_kider_files(
+          read_kider_archive_bytes(upload.bytes, upload.name, reading.observer(i)), upload.name,
+          request.options);
     }
   });
+  std::size_t capture_count = 0;
+  for (const Decoded& d : decoded) capture_count += d.captures.size();
+  if (capture_count == 0)
+    throw std::runtime_error(decoded.front().source + ": no Kider capture found");
+
+  ImportProgress progress = reading.last();
+  progress.phase = "writing";
+  if (request.progress) request.progress(progress);
 
   ImportReport report;
   report.dataset = request.dataset_name;
@@ -95,9 +144,14 @@ ImportReport import_kider(Database& db, const KiderImportRequest& request) {
       report.samples_added += static_cast<std::int64_t>(capture.samples.size());
       ++written;
       if (request.after_capture_written) request.after_capture_written(written);
+      progress.captures_added = written;
+      progress.samples_added = report.samples_added;
+      if (request.progress) request.progress(progress);
     }
   }
   transaction.commit();
+  progress.phase = "committed";
+  if (request.progress) request.progress(progress);
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }

@@ -5,7 +5,8 @@
 // and site) is left unchanged, so re-importing is a no-op; the same label with other content
 // is a conflict. Spectra are stored as measured: sample 0 keeps its kSampleKnownDefective
 // flag and is repaired by evaluations, not here. The computed sun position (SPA, no
-// refraction, as the study) is stored with each capture.
+// refraction, as the study) is stored with each capture. Progress (reading, then writing) is
+// reported through an optional callback: the API's import jobs and the CLI share this code.
 #pragma once
 
 #include <cstdint>
@@ -18,6 +19,19 @@
 #include "storage/sqlite/database.h"
 
 namespace clearsky::storage {
+
+// How far an import has come: the sums over its archives and folders (kider_reader.h), then
+// the captures written. Totals are -1 while unknown.
+struct ImportProgress {
+  std::string phase = "reading";  // reading, writing, committed
+  std::int64_t bytes_read = 0;
+  std::int64_t bytes_total = -1;
+  std::int64_t entries_read = 0;
+  std::int64_t entries_total = -1;
+  std::int64_t files_read = 0;
+  std::int64_t captures_added = 0;
+  std::int64_t samples_added = 0;
+};
 
 struct KiderImportRequest {
   std::string dataset_name = "kider2014";
@@ -32,6 +46,9 @@ struct KiderImportRequest {
   // Called after each new capture is written, inside the transaction (tests use it to
   // interrupt an import half-way).
   std::function<void(int captures_written)> after_capture_written;
+  // Called with the progress, from the reading threads (serialised: one call at a time) and
+  // then the importing thread. Must be quick; it must not touch the importing Database.
+  std::function<void(const ImportProgress&)> progress;
 };
 
 struct ImportReport {
@@ -42,6 +59,8 @@ struct ImportReport {
   double seconds = 0;
 };
 
+// Throws std::runtime_error naming the source when nothing holds a Kider capture (before any
+// write, so not even the dataset is created).
 ImportReport import_kider(Database& db, const KiderImportRequest& request);
 
 // 16 hex digits identifying a capture's content: label, time, site and every sample's index,

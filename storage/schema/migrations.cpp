@@ -1,6 +1,6 @@
 // Schema migrations (migrations.h). Tables (issue 3): datasets of measured captures, their
 // samples (spectra as float64 blobs), evaluation runs with per-capture results, and scheduled
-// evaluation jobs. Times are ISO 8601 UTC text except capture instants (unix seconds).
+// evaluation jobs; (issue 9) dataset imports. Times are ISO 8601 UTC text except capture instants (unix seconds).
 #include "storage/schema/migrations.h"
 
 #include <string>
@@ -114,6 +114,35 @@ BEGIN
   DELETE FROM evaluation_sample_errors WHERE id = OLD.sample_errors_id AND NOT EXISTS (
     SELECT 1 FROM evaluation_capture_results WHERE sample_errors_id = OLD.sample_errors_id);
 END;
+)sql",
+      // Version 3: dataset imports run as background jobs (issue 9). A row per import, kept
+      // after its dataset is deleted (no foreign key); progress columns hold the last known
+      // counts (the live ones are in the server's memory while it runs).
+      R"sql(
+CREATE TABLE imports (
+  id INTEGER PRIMARY KEY,
+  dataset TEXT NOT NULL,
+  format TEXT NOT NULL,
+  source TEXT NOT NULL CHECK (source IN ('upload', 'path')),
+  path TEXT NOT NULL DEFAULT '',
+  upload_bytes INTEGER,
+  status TEXT NOT NULL CHECK (status IN ('queued', 'running', 'succeeded', 'failed')),
+  created_utc TEXT NOT NULL,
+  started_utc TEXT,
+  finished_utc TEXT,
+  phase TEXT NOT NULL DEFAULT '',
+  bytes_read INTEGER NOT NULL DEFAULT 0,
+  bytes_total INTEGER,
+  entries_read INTEGER NOT NULL DEFAULT 0,
+  entries_total INTEGER,
+  files_read INTEGER NOT NULL DEFAULT 0,
+  captures_added INTEGER NOT NULL DEFAULT 0,
+  samples_added INTEGER NOT NULL DEFAULT 0,
+  report TEXT,
+  error_code TEXT,
+  error TEXT
+);
+CREATE INDEX imports_by_status ON imports(status);
 )sql",
   };
   return migrations;

@@ -1,6 +1,7 @@
 // The CLI (offline, `clearsky import kider` and `clearsky evaluate`) and the API path (an
-// uploaded archive spooled to disk, an evaluation on the background pool) give identical
-// results on the same captures (issue 9, item 6): Preetham on two public captures, down to the
+// uploaded archive spooled to disk and imported on the background import pool, an evaluation
+// on the background evaluation pool) give identical results on the same captures (issue 9,
+// item 6): the same import report, and Preetham on two public captures, down to the
 // per-sample errors (`clearsky evaluate --json --samples=spectra` against
 // GET /v1/evaluations/{id}?samples=spectra).
 #include <gtest/gtest.h>
@@ -12,10 +13,11 @@
 #include <fstream>
 #include <sstream>
 
-#include "api/datasets/datasets_api.h"
 #include "api/datasets/upload_spool.h"
 #include "api/evaluation/evaluation_pool.h"
 #include "api/evaluation/evaluations_api.h"
+#include "api/imports/import_pool.h"
+#include "api/imports/imports_api.h"
 #include "models/registry.h"
 #include "storage/schema/migrations.h"
 #include "tests/storage/temp_dir.h"
@@ -51,19 +53,41 @@ TEST(CliApiParity, PreethamOnTwoCapturesGivesTheSameRmseBothWays) {
   CLEARSKY_REQUIRE_SHARED_DATA("kider2014/2013-05-27/RADIANCE");
   storage::testing::TempDir dir;
   const std::string cli_db = (dir.path / "cli.db").string();
-  run_cli("import kider " + archive("10.00").string() + " " + archive("12.00").string() +
-          " --name pair --db " + cli_db + " --json");
+  const nlohmann::json cli_import = nlohmann::json::parse(
+      run_cli("import kider " + archive("10.00").string() + " " + archive("12.00").string() +
+              " --name pair --db " + cli_db + " --json"));
   const nlohmann::json cli = nlohmann::json::parse(
       run_cli("evaluate --dataset pair --models preetham --json --samples=spectra --db " +
               cli_db));
 
   const auto api_db = dir.path / "api.db";
   storage::Database db = storage::open_database(api_db);
-  for (const char* time : {"10.00", "12.00"}) {
-    api::UploadSpool spool(dir.path / "uploads", 8u << 20, ".7z");
-    spool.append(bytes_of(archive(time)));
-    api::import_dataset(db, "pair", "kider", spool.finish());
+  std::vector<std::string> api_added;
+  std::int64_t api_samples = 0;
+  {
+    api::ImportPool imports([api_db] { return storage::open_database(api_db); });
+    std::vector<std::int64_t> ids;
+    for (const char* time : {"10.00", "12.00"}) {
+      auto spool = std::make_unique<api::UploadSpool>(dir.path / "uploads", 8u << 20, ".7z");
+      spool->append(bytes_of(archive(time)));
+      const std::filesystem::path source = spool->finish();
+      storage::NewImport what;
+      what.dataset = "pair";
+      what.format = "kider";
+      what.source = "upload";
+      what.upload_bytes = static_cast<std::int64_t>(spool->size_bytes());
+      ids.push_back(imports.submit(db, what, source, std::move(spool)));
+    }
+    imports.wait_idle();
+    for (const std::int64_t id : ids) {
+      const auto shown = api::show_import(db, &imports, id);
+      ASSERT_EQ(shown["status"], "succeeded") << shown.dump();
+      for (const auto& label : shown["report"]["added"]) api_added.push_back(label);
+      api_samples += shown["report"]["samples_added"].get<std::int64_t>();
+    }
   }
+  EXPECT_EQ(cli_import["added"].get<std::vector<std::string>>(), api_added);
+  EXPECT_EQ(cli_import["samples_added"].get<std::int64_t>(), api_samples);
   api::EvaluationPool pool([api_db] { return storage::open_database(api_db); },
                            registered_models());
   const std::int64_t ticket = pool.submit(api::parse_evaluation_request(

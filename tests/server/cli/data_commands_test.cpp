@@ -1,5 +1,6 @@
 // End-to-end tests of the data commands of the clearsky executable (server/cli/): `import
-// kider`, `datasets --json` and `evaluate`, run as a user would, on a temporary database.
+// kider` (with its progress lines), `datasets --json` and `evaluate`, run as a user would, on
+// a temporary database.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -65,6 +66,15 @@ TEST(DataCommands, ImportThenListDatasets) {
   ASSERT_EQ(imported.exit_code, 0) << imported.output;
   EXPECT_NE(imported.output.find("2 captures added (162 samples)"), std::string::npos)
       << imported.output;
+  // Progress on stderr: each phase at least once, the last with the totals.
+  EXPECT_NE(imported.output.find("import: reading: "), std::string::npos) << imported.output;
+  EXPECT_NE(imported.output.find("import: writing: 162 of 162 entries"), std::string::npos)
+      << imported.output;
+  EXPECT_NE(imported.output.find("import: committed: 162 of 162 entries"), std::string::npos)
+      << imported.output;
+  EXPECT_NE(imported.output.find("162 files; 2 captures (162 samples) added"), std::string::npos)
+      << imported.output;
+  // With --json only the report is printed (the output parses whole).
   const Result again = run("import kider " + archive("09.30") + " --name day --json --db " + t.db);
   ASSERT_EQ(again.exit_code, 0) << again.output;
   EXPECT_EQ(nlohmann::json::parse(again.output).at("unchanged").size(), 1u);

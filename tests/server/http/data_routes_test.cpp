@@ -1,7 +1,8 @@
 // The data endpoints over loopback HTTP on an ephemeral port (server/http/data_routes.h):
 // bearer-token rules (reads open, writes 403 without a configured token, 401 without the right
-// one), an archive upload, dataset show/delete, an evaluation started over HTTP and read back,
-// the job lifecycle, and the server's error format. Preetham on one public capture.
+// one), an archive upload imported as a background job (202, Location, /v1/imports), dataset
+// show/delete, an evaluation started over HTTP and read back, the job lifecycle, and the
+// server's error format. Preetham on one public capture.
 #include <gtest/gtest.h>
 #include <httplib.h>
 
@@ -10,12 +11,9 @@
 #include <sstream>
 #include <thread>
 
-#include "models/registry.h"
-#include "server/http/http_server.h"
 #include "storage/schema/migrations.h"
-#include "tests/storage/temp_dir.h"
+#include "tests/server/http/data_server_fixture.h"
 #include "tests/support/shared_data.h"
-#include "tests/support/test_sky_model.h"
 
 namespace clearsky::server {
 namespace {
@@ -29,61 +27,7 @@ std::string bytes_of(const std::filesystem::path& path) {
   return out.str();
 }
 
-class DataRoutes : public ::testing::Test {
- protected:
-  void start(std::optional<std::string> token, std::size_t payload_max_bytes = 8u << 20) {
-    db_path = dir.path / "sky.db";
-    storage::open_database(db_path);
-    ServerConfig config;
-    config.host = "127.0.0.1";
-    config.port = 0;
-    config.threads = 8;
-    config.payload_max_bytes = payload_max_bytes;
-    tables = std::make_unique<TableStore>(clearsky::testing::test_factories(), TableStore::Options{});
-    const auto path = db_path;
-    pool = std::make_unique<api::EvaluationPool>([path] { return storage::Database::open(path); },
-                                                 registered_models());
-    auth = std::make_unique<WriteAuthorizer>(token);
-    services.db_path = db_path;
-    services.upload_dir = dir.path / "uploads";
-    services.upload_max_bytes = payload_max_bytes;
-    services.pool = pool.get();
-    services.auth = auth.get();
-    services.models = registered_models();
-    services.software_version = "test";
-    http = std::make_unique<HttpServer>(config, *tables, metrics);
-    http->add_data_routes(services);
-    port = http->bind();
-    thread = std::thread([this] { http->listen(); });
-    for (int i = 0; i < 400 && !http->running(); ++i)
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    ASSERT_TRUE(http->running());
-  }
-  void TearDown() override {
-    if (http) http->stop();
-    if (thread.joinable()) thread.join();
-    http.reset();
-    pool.reset();
-  }
-  httplib::Client client(const std::string& token = "") const {
-    httplib::Client c("127.0.0.1", port);
-    c.set_read_timeout(60, 0);
-    if (!token.empty()) c.set_bearer_token_auth(token.c_str());
-    return c;
-  }
-  static nlohmann::json body(const httplib::Result& r) { return nlohmann::json::parse(r->body); }
-
-  storage::testing::TempDir dir;
-  std::filesystem::path db_path;
-  Metrics metrics;
-  std::unique_ptr<TableStore> tables;
-  std::unique_ptr<api::EvaluationPool> pool;
-  std::unique_ptr<WriteAuthorizer> auth;
-  DataServices services;
-  std::unique_ptr<HttpServer> http;
-  std::thread thread;
-  int port = 0;
-};
+class DataRoutes : public testing::DataServerFixture {};
 
 TEST_F(DataRoutes, WithoutATokenReadsAreOpenAndWritesDisabled) {
   start(std::nullopt);
@@ -121,8 +65,20 @@ TEST_F(DataRoutes, UploadShowEvaluateAndDelete) {
   const auto imported =
       c.Post("/v1/datasets?name=noon&format=kider", archive, "application/octet-stream");
   ASSERT_TRUE(imported);
-  ASSERT_EQ(imported->status, 201) << imported->body;
-  EXPECT_EQ(body(imported)["added"][0], "2013-05-27___12.00.00");
+  ASSERT_EQ(imported->status, 202) << imported->body;
+  const std::string import_path = imported->get_header_value("Location");
+  EXPECT_EQ(import_path, body(imported)["location"]);
+  EXPECT_EQ(import_path.rfind("/v1/imports/", 0), 0u);
+  EXPECT_EQ(body(imported)["source"], "upload");
+  EXPECT_EQ(body(imported)["upload_bytes"], archive.size());
+  const nlohmann::json done = finished_import(imported);
+  ASSERT_EQ(done["status"], "succeeded") << done.dump();
+  EXPECT_EQ(done["report"]["added"][0], "2013-05-27___12.00.00");
+  EXPECT_EQ(done["progress"]["captures_added"], 1);
+  EXPECT_EQ(body(c.Get("/v1/imports")).size(), 1u);
+  EXPECT_EQ(c.Get("/v1/imports/99")->status, 404);
+  EXPECT_EQ(c.Get("/v1/imports/x")->status, 400);
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path / "uploads"));
   EXPECT_EQ(body(c.Get("/v1/datasets"))[0]["captures"], 1);
   const auto shown = body(c.Get("/v1/datasets/noon?samples=true"));
   EXPECT_EQ(shown["captures"][0]["time"], "2013-05-27T12:00:00-04:00");
@@ -172,8 +128,11 @@ TEST_F(DataRoutes, ImportFromAServerSidePath) {
   const auto r = c.Post(("/v1/datasets?" + httplib::detail::params_to_query_str(params)).c_str(),
                         "", "application/octet-stream");
   ASSERT_TRUE(r);
-  ASSERT_EQ(r->status, 201) << r->body;
-  EXPECT_EQ(body(r)["added"].size(), 1u);
+  ASSERT_EQ(r->status, 202) << r->body;
+  EXPECT_EQ(body(r)["path"], archive);
+  const nlohmann::json done = finished_import(r);
+  ASSERT_EQ(done["status"], "succeeded") << done.dump();
+  EXPECT_EQ(done["report"]["added"].size(), 1u);
   // Both a path and a body: refused; a missing path: 400 and nothing created.
   EXPECT_EQ(c.Post(("/v1/datasets?" + httplib::detail::params_to_query_str(params)).c_str(), "x",
                    "application/octet-stream")
@@ -186,13 +145,14 @@ TEST_F(DataRoutes, ImportFromAServerSidePath) {
 }
 
 TEST_F(DataRoutes, UploadAboveTheLimitIs413AndLeavesNothing) {
-  start(std::string("t0ken"), 4096);
+  start(std::string("t0ken"), 4096, 4096);
   const auto r = client("t0ken").Post("/v1/datasets?name=big", std::string(100000, 'x'),
                                       "application/octet-stream");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 413);
   EXPECT_EQ(body(r)["error"]["code"], "too_large");
   EXPECT_EQ(client().Get("/v1/datasets")->body, "[]");
+  EXPECT_EQ(client().Get("/v1/imports")->body, "[]");
 }
 
 TEST_F(DataRoutes, JobLifecycle) {

@@ -1,0 +1,84 @@
+// The bounded background workers that run dataset imports (POST /v1/datasets, issue 9), on
+// their own threads, never the HTTP query threads (the same design as the EvaluationPool:
+// a fixed number of workers, a bounded queue refusing with 503, one database connection per
+// worker). Each import is a row of the imports table (storage/repositories/import_repository.h)
+// written before it is queued, so its state survives a restart; the live progress of running
+// imports is kept here in memory (the import's transaction holds SQLite's write lock, so
+// progress is not written while it runs) and merged into the stored row by imports_api.h.
+// An uploaded archive's spool file belongs to its task and is removed when the import ends,
+// whatever happened, before its final state is recorded.
+// Thread-safety: every member may be called from any thread.
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "api/datasets/upload_spool.h"
+#include "storage/repositories/import_repository.h"
+#include "storage/sqlite/database.h"
+
+namespace clearsky::api {
+
+struct ImportPoolOptions {
+  unsigned workers = 1;
+  std::size_t max_queued = 8;
+  // Told how each import ended (ok false: message is the error), on the worker thread; the
+  // server logs it. Also told when an outcome cannot be recorded.
+  std::function<void(std::int64_t id, bool ok, const std::string& message)> log;
+};
+
+class ImportPool {
+ public:
+  using OpenDatabase = std::function<storage::Database()>;
+
+  ImportPool(OpenDatabase open_database, const ImportPoolOptions& options = {});
+  // Lets running imports end; queued ones are recorded as failed (cancelled) and their spool
+  // files removed; then joins the workers.
+  ~ImportPool();
+  ImportPool(const ImportPool&) = delete;
+  ImportPool& operator=(const ImportPool&) = delete;
+
+  // Records the import (queued) through db, the caller's connection, and queues it; returns
+  // its id. source is the archive or folder to read: the finished spool's file for an upload
+  // (the pool then owns the spool) or a server-side path. Throws ApiError 503 (busy) when the
+  // queue is full, before anything is recorded.
+  std::int64_t submit(storage::Database& db, const storage::NewImport& what,
+                      const std::filesystem::path& source, std::unique_ptr<UploadSpool> spool = {});
+  // The progress of an import running in this pool; nullopt when it is not running here.
+  std::optional<storage::ImportProgress> live_progress(std::int64_t id) const;
+  // Blocks until nothing is queued or running.
+  void wait_idle();
+
+ private:
+  struct Task {
+    std::int64_t id = 0;
+    storage::NewImport what;
+    std::filesystem::path source;
+    std::unique_ptr<UploadSpool> spool;
+  };
+  void work();
+  void run(storage::Database& db, Task& task);
+
+  OpenDatabase open_database_;
+  ImportPoolOptions options_;
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  std::condition_variable idle_;
+  std::deque<Task> queue_;
+  std::size_t reserved_ = 0;  // submissions between their slot check and their queueing
+  std::map<std::int64_t, storage::ImportProgress> running_;
+  bool stopping_ = false;
+  std::vector<std::thread> threads_;
+};
+
+}  // namespace clearsky::api

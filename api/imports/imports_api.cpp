@@ -1,0 +1,92 @@
+// /v1/imports handlers (imports_api.h).
+#include "api/imports/imports_api.h"
+
+#include "api/error/api_error.h"
+
+namespace clearsky::api {
+namespace {
+
+nlohmann::ordered_json text_or_null(const std::optional<std::string>& text) {
+  if (!text) return nullptr;
+  return *text;
+}
+
+nlohmann::ordered_json total_or_null(std::int64_t total) {
+  if (total < 0) return nullptr;
+  return total;
+}
+
+}  // namespace
+
+std::string import_location(std::int64_t id) { return "/v1/imports/" + std::to_string(id); }
+
+nlohmann::ordered_json import_to_json(const storage::ImportRecord& record,
+                                      const std::optional<storage::ImportProgress>& live) {
+  const storage::ImportProgress& p = live && record.status == "running" ? *live : record.progress;
+  nlohmann::ordered_json progress = nullptr;
+  if (!p.phase.empty() || record.status != "queued")
+    progress = {{"phase", p.phase},
+                {"bytes_read", p.bytes_read},
+                {"bytes_total", total_or_null(p.bytes_total)},
+                {"entries_read", p.entries_read},
+                {"entries_total", total_or_null(p.entries_total)},
+                {"files_read", p.files_read},
+                {"captures_added", p.captures_added},
+                {"samples_added", p.samples_added}};
+  nlohmann::ordered_json report = nullptr;
+  if (record.report) report = nlohmann::ordered_json::parse(*record.report);
+  nlohmann::ordered_json error = nullptr;
+  if (record.error) error = {{"code", record.error_code.value_or("")}, {"message", *record.error}};
+  return {
+      {"id", record.id},
+      {"dataset", record.what.dataset},
+      {"format", record.what.format},
+      {"source", record.what.source},
+      {"path", record.what.source == "path" ? nlohmann::ordered_json(record.what.path)
+                                            : nlohmann::ordered_json(nullptr)},
+      {"upload_bytes", record.what.upload_bytes ? nlohmann::ordered_json(*record.what.upload_bytes)
+                                                : nlohmann::ordered_json(nullptr)},
+      {"status", record.status},
+      {"progress", std::move(progress)},
+      {"timings",
+       {{"created", record.created_utc},
+        {"started", text_or_null(record.started_utc)},
+        {"finished", text_or_null(record.finished_utc)}}},
+      {"report", std::move(report)},
+      {"error", std::move(error)},
+      {"location", import_location(record.id)}};
+}
+
+nlohmann::ordered_json list_imports(storage::Database& db, const ImportPool* pool,
+                                    const std::vector<std::pair<std::string, std::string>>& query) {
+  std::optional<std::string> status;
+  std::optional<std::string> dataset;
+  for (const auto& [name, value] : query) {
+    if (name == "status") {
+      if (value != "queued" && value != "running" && value != "succeeded" && value != "failed")
+        throw invalid_parameter(name, "one of queued, running, succeeded, failed");
+      status = value;
+    } else if (name == "dataset") {
+      dataset = value;
+    } else {
+      throw unknown_parameter(name, "GET /v1/imports");
+    }
+  }
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const storage::ImportRecord& r : storage::ImportRepository(db).list(100, status, dataset))
+    out.push_back(import_to_json(r, pool ? pool->live_progress(r.id) : std::nullopt));
+  return out;
+}
+
+nlohmann::ordered_json show_import(storage::Database& db, const ImportPool* pool, std::int64_t id) {
+  const auto record = storage::ImportRepository(db).get(id);
+  if (!record) throw ApiError(404, "unknown_import", "id", "id: no import " + std::to_string(id));
+  return import_to_json(*record, pool ? pool->live_progress(id) : std::nullopt);
+}
+
+int fail_interrupted_imports(storage::Database& db) {
+  return storage::ImportRepository(db).fail_unfinished(
+      "interrupted", "interrupted: the server stopped during the import");
+}
+
+}  // namespace clearsky::api

@@ -1,0 +1,38 @@
+// Bounded body reading (request_body.h).
+#include "server/http/request_body.h"
+
+#include <httplib.h>
+
+#include "api/error/api_error.h"
+
+namespace clearsky::server {
+
+std::string read_limited_body(const httplib::Request& req, const httplib::ContentReader& content,
+                              std::size_t limit_bytes, std::size_t drain_limit_bytes) {
+  const auto too_large = [limit_bytes] {
+    return api::too_large(
+        "body", "the request body is above the limit of " + std::to_string(limit_bytes) + " bytes");
+  };
+  // A declared length beyond the drain limit is refused by cpp-httplib itself (skipped).
+  if (req.get_header_value<std::uint64_t>("Content-Length") > drain_limit_bytes) {
+    content([](const char*, std::size_t) { return true; });
+    throw too_large();
+  }
+  std::string body;
+  std::size_t received = 0;
+  const bool complete = content([&](const char* data, std::size_t size) {
+    received += size;
+    if (received <= limit_bytes) {
+      body.append(data, size);
+      return true;
+    }
+    body.clear();
+    return received <= drain_limit_bytes;
+  });
+  if (received > limit_bytes) throw too_large();
+  if (!complete)
+    throw api::ApiError(400, "invalid_body", "body", "body: the request body could not be read");
+  return body;
+}
+
+}  // namespace clearsky::server

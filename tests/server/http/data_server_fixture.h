@@ -1,0 +1,97 @@
+// A server with the data endpoints (datasets, imports, evaluations, jobs) on an ephemeral
+// loopback port, on a fresh database in a temporary folder, with the analytic test sky for the
+// query endpoints, for tests that talk to it with cpp-httplib's client.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <httplib.h>
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "models/registry.h"
+#include "server/http/http_server.h"
+#include "storage/schema/migrations.h"
+#include "tests/storage/temp_dir.h"
+#include "tests/support/test_sky_model.h"
+
+namespace clearsky::server::testing {
+
+class DataServerFixture : public ::testing::Test {
+ protected:
+  void start(std::optional<std::string> token, std::size_t payload_max_bytes = 8u << 20,
+             std::size_t max_upload_bytes = 64u << 20) {
+    db_path = dir.path / "sky.db";
+    storage::open_database(db_path);
+    ServerConfig config;
+    config.host = "127.0.0.1";
+    config.port = 0;
+    config.threads = 8;
+    config.payload_max_bytes = payload_max_bytes;
+    config.max_upload_bytes = max_upload_bytes;
+    tables =
+        std::make_unique<TableStore>(clearsky::testing::test_factories(), TableStore::Options{});
+    const auto path = db_path;
+    pool = std::make_unique<api::EvaluationPool>([path] { return storage::Database::open(path); },
+                                                 registered_models());
+    imports = std::make_unique<api::ImportPool>([path] { return storage::Database::open(path); });
+    auth = std::make_unique<WriteAuthorizer>(token);
+    services.db_path = db_path;
+    services.upload_dir = dir.path / "uploads";
+    services.upload_max_bytes = max_upload_bytes;
+    services.pool = pool.get();
+    services.imports = imports.get();
+    services.auth = auth.get();
+    services.models = registered_models();
+    services.software_version = "test";
+    http = std::make_unique<HttpServer>(config, *tables, metrics);
+    http->add_data_routes(services);
+    port = http->bind();
+    thread = std::thread([this] { http->listen(); });
+    for (int i = 0; i < 400 && !http->running(); ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ASSERT_TRUE(http->running());
+  }
+  void TearDown() override {
+    if (http) http->stop();
+    if (thread.joinable()) thread.join();
+    http.reset();
+    pool.reset();
+    imports.reset();
+  }
+  httplib::Client client(const std::string& token = "") const {
+    httplib::Client c("127.0.0.1", port);
+    c.set_read_timeout(60, 0);
+    if (!token.empty()) c.set_bearer_token_auth(token.c_str());
+    return c;
+  }
+  static nlohmann::json body(const httplib::Result& r) { return nlohmann::json::parse(r->body); }
+  // Polls an import's Location until it ends.
+  nlohmann::json finished_import(const httplib::Result& accepted) const {
+    const std::string location = accepted->get_header_value("Location");
+    nlohmann::json state;
+    for (int i = 0; i < 1500; ++i) {
+      state = body(client().Get(location.c_str()));
+      if (state["status"] == "succeeded" || state["status"] == "failed") break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return state;
+  }
+
+  storage::testing::TempDir dir;
+  std::filesystem::path db_path;
+  Metrics metrics;
+  std::unique_ptr<TableStore> tables;
+  std::unique_ptr<api::EvaluationPool> pool;
+  std::unique_ptr<api::ImportPool> imports;
+  std::unique_ptr<WriteAuthorizer> auth;
+  DataServices services;
+  std::unique_ptr<HttpServer> http;
+  std::thread thread;
+  int port = 0;
+};
+
+}  // namespace clearsky::server::testing
