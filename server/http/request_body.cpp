@@ -13,6 +13,9 @@ std::string read_limited_body(const httplib::Request& req, const httplib::Conten
     return api::too_large(
         "body", "the request body is above the limit of " + std::to_string(limit_bytes) + " bytes");
   };
+  // A request with neither Content-Length nor chunked transfer coding has no body (RFC 9112
+  // section 6.3): `curl -X POST .../pause` must not wait for one nor be refused.
+  if (!req.has_header("Content-Length") && !req.has_header("Transfer-Encoding")) return {};
   // A declared length beyond the drain limit is refused by cpp-httplib itself (skipped).
   if (req.get_header_value<std::uint64_t>("Content-Length") > drain_limit_bytes) {
     content([](const char*, std::size_t) { return true; });

@@ -162,5 +162,19 @@ TEST_F(BodyLimits, ExpectContinueIsAnsweredByTheLimitOfTheRoute) {
   EXPECT_EQ(answer("/v1/datasets?name=d", kPayload + 1), "HTTP/1.1 100");
 }
 
+// A POST with no body at all (no Content-Length, as `curl -X POST URL` sends it) has an empty
+// body (RFC 9112 section 6.3): the route answers it (here: 404 for an unknown job, and 400 for a
+// radiance request without its JSON), instead of a 400 about an unreadable body.
+TEST_F(BodyLimits, APostWithoutABodyHasAnEmptyBody) {
+  const auto head = [](const std::string& target) {
+    return "POST " + target + " HTTP/1.1\r\nHost: 127.0.0.1\r\nAuthorization: Bearer t0ken\r\n\r\n";
+  };
+  const std::string pause = ask_before_sending(port, head("/v1/jobs/7/pause"));
+  EXPECT_EQ(pause.substr(0, 12), "HTTP/1.1 404") << pause;
+  const std::string radiance = ask_before_sending(port, head("/v1/radiance"));
+  EXPECT_EQ(radiance.substr(0, 12), "HTTP/1.1 400") << radiance;
+  EXPECT_EQ(radiance.find("could not be read"), std::string::npos) << radiance;
+}
+
 }  // namespace
 }  // namespace clearsky::server
