@@ -212,7 +212,8 @@ json build() {
                       false, {{"minimum", 8}, {"maximum", 4096}}));
     p.push_back(param("channels", "string",
                       "rgb (R,G,B linear sRGB), luminance (Y, cd/m2) or spectral (Fichet et al. "
-                      "2021 S0.<nm>nm channels)",
+                      "2021 S0.<nm>nm channels); every image also has A, 1 where the model "
+                      "answered and 0 where it did not (colour 0 there)",
                       false, {{"enum", {"rgb", "luminance", "spectral"}}}));
     p.push_back(param("pixel_type", "string", "half (default for rgb) or float", false,
                       {{"enum", {"half", "float"}}}));

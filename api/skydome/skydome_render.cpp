@@ -125,6 +125,11 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
     names = {"Y"};
   else
     for (double w : s.m.wavelengths_nm) names.push_back(spectral_channel_name(w));
+  // Coverage: 1 where the model answered, 0 where it did not (outside the projection, below
+  // the horizon of a ground-view model, outside a fitted model's domain), whose colour is 0;
+  // without it such a 0 would be indistinguishable from a dark sky.
+  const std::size_t alpha_channel = names.size();
+  names.push_back("A");
   const std::size_t n_channels = names.size();
   const Imf::PixelType type = s.half ? Imf::HALF : Imf::FLOAT;
   const std::size_t sample_bytes = s.half ? 2 : 4;
@@ -137,6 +142,8 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
   header.insert("clearskyProjection", Imf::StringAttribute(s.projection_name));
   header.insert("sunZenithDeg", Imf::FloatAttribute(static_cast<float>(s.sun.zenith_deg)));
   header.insert("sunAzimuthDeg", Imf::FloatAttribute(static_cast<float>(s.sun.azimuth_deg)));
+  header.insert("clearskyAlpha",
+                Imf::StringAttribute("A = 1 where the model answered, 0 where it did not (colour 0)"));
   header.insert("observerAltitudeM",
                 Imf::FloatAttribute(static_cast<float>(s.viewpoint.altitude_m)));
   if (s.projection.projection() == Projection::latlong) Imf::addEnvmap(header, Imf::ENVMAP_LATLONG);
@@ -195,8 +202,9 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
               }
               const auto l = batch.spectrum(k);
               float* px = row + static_cast<std::size_t>(columns[k]) * n_channels;
+              px[alpha_channel] = 1.0f;
               if (s.channels == "spectral") {
-                for (std::size_t c = 0; c < n_channels; ++c)
+                for (std::size_t c = 0; c < alpha_channel; ++c)
                   px[c] = static_cast<float>(l[s.m.indices[c]]);
               } else if (s.method == "three") {
                 const LinearSrgb c =

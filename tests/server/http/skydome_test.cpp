@@ -85,8 +85,10 @@ TEST_F(SkydomeTest, RgbFisheyeEqualsDirectEvaluation) {
       SkyDirection d;
       if (!projection.direction(x, y, d)) {
         EXPECT_EQ(exr.channels.at("R")[i], 0.0f);
+        EXPECT_EQ(exr.channels.at("A")[i], 0.0f);
         continue;
       }
+      EXPECT_EQ(exr.channels.at("A")[i], 1.0f);
       std::vector<double> l(grid.size());
       for (std::size_t w = 0; w < grid.size(); ++w) l[w] = TestSky::radiance(1.0, grid[w], d, sun);
       const LinearSrgb c = xyz_to_linear_srgb(xyz.xyz(l));
@@ -106,8 +108,9 @@ TEST_F(SkydomeTest, SpectralLatlongCarriesFichetLayout) {
   ASSERT_EQ(exr.height, 16);
   EXPECT_EQ(exr.strings.at("spectralLayoutVersion"), "1.0");
   EXPECT_EQ(exr.strings.at("emissiveUnits"), "W.m^-2.sr^-1");
-  ASSERT_EQ(exr.channels.size(), 2u);
+  ASSERT_EQ(exr.channels.size(), 3u);  // two wavelengths and the coverage A
   const auto& c550 = exr.channels.at("S0.550,000000nm");
+  const auto& alpha = exr.channels.at("A");
   const api::SkydomeProjection projection(api::Projection::latlong, 32);
   for (int y = 0; y < 16; ++y) {
     for (int x = 0; x < 32; ++x) {
@@ -115,6 +118,9 @@ TEST_F(SkydomeTest, SpectralLatlongCarriesFichetLayout) {
       projection.direction(x, y, d);
       const double expected = d.zenith_rad <= kPi / 2 ? TestSky::radiance(1.0, 550.0, d, sun) : 0.0;
       EXPECT_NEAR(c550[static_cast<std::size_t>(y * 32 + x)], expected, 1e-7) << x << "," << y;
+      // The test sky answers views above the horizon only: below, no value, and A says so.
+      EXPECT_EQ(alpha[static_cast<std::size_t>(y * 32 + x)], d.zenith_rad <= kPi / 2 ? 1.0f : 0.0f)
+          << x << "," << y;
     }
   }
 }
@@ -128,7 +134,8 @@ TEST_F(SkydomeTest, LuminanceCubemapAndHalfRgb) {
   for (float v : cube.channels.at("Y")) largest = std::max(largest, v);
   EXPECT_GT(largest, 0.0f);
   const DecodedExr rgb = decode(fetch("projection=fisheye&size=16"));
-  EXPECT_EQ(rgb.channels.size(), 3u);
+  EXPECT_EQ(rgb.channels.size(), 4u);  // R, G, B and the coverage A
+  EXPECT_EQ(rgb.strings.count("clearskyAlpha"), 1u);
 }
 
 TEST_F(SkydomeTest, ErrorsComeBeforeTheStream) {
