@@ -25,6 +25,15 @@ storage::SampleErrorTable stored_sample_errors(const CaptureEvaluation& capture)
   return table;
 }
 
+ModelConfig options_for_model(const ModelDescriptor& descriptor, const ModelConfig& config) {
+  ModelConfig out = config;
+  std::erase_if(out.options, [&](const auto& option) {
+    const ParameterSpec* spec = descriptor.find_parameter(option.first);
+    return spec == nullptr || spec->atmosphere;
+  });
+  return out;
+}
+
 std::vector<const ModelFactory*> resolve_models(const std::vector<std::string>& requested,
                                                 std::span<const ModelFactory> available) {
   std::vector<const ModelFactory*> factories;
@@ -100,13 +109,14 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
     run.job_id = request.job_id;
     run.model_id = id;
     run.model_version = factory.descriptor->version;
-    run.parameters = request.config.canonical_string();
+    const ModelConfig config = options_for_model(*factory.descriptor, request.config);
+    run.parameters = config.canonical_string();
     run.software_version = request.software_version;
     run.min_wavelength_nm = request.options.min_wavelength_nm;
     run.max_wavelength_nm = request.options.max_wavelength_nm;
     const std::int64_t run_id = runs.start(run);
     try {
-      EvaluationResult result = evaluate_model(factory, request.config, captures, request.options);
+      EvaluationResult result = evaluate_model(factory, config, captures, request.options);
       std::vector<storage::RunCaptureResult> per_capture;
       for (std::size_t i = 0; i < result.captures.size(); ++i) {
         const CaptureEvaluation& c = result.captures[i];

@@ -46,6 +46,10 @@ storage::SampleErrorTable stored_sample_errors(const CaptureEvaluation& capture)
 
 // The factories named by a --models value: "all" (every one of `available`) or ids; throws
 // std::invalid_argument naming unknown ids (before anything is computed).
+// The request's configuration for one model: the options its descriptor lists, the others
+// (options of the other requested models) dropped.
+ModelConfig options_for_model(const ModelDescriptor& descriptor, const ModelConfig& config);
+
 std::vector<const ModelFactory*> resolve_models(const std::vector<std::string>& requested,
                                                 std::span<const ModelFactory> available);
 

@@ -57,7 +57,8 @@ std::int64_t parse_id(const std::string& text, const std::string& parameter) {
   return id;
 }
 
-ModelConfig parse_evaluation_parameters(const nlohmann::json& parameters) {
+ModelConfig parse_evaluation_parameters(const nlohmann::json& parameters,
+                                        std::span<const ModelFactory* const> models) {
   ModelConfig config;
   if (parameters.is_null()) return config;
   if (!parameters.is_object())
@@ -69,9 +70,26 @@ ModelConfig parse_evaluation_parameters(const nlohmann::json& parameters) {
     }
     if (!value.is_number())
       throw invalid_parameter(name, "must be a number");
-    if (!set_atmosphere_parameter(config.atmosphere, name, value.get<double>()))
-      throw unknown_parameter(name, "the evaluation parameters (the atmosphere parameters of "
-                                    "the sky endpoints: alpha, beta, g, turbidity, albedo, ...)");
+    const double number = value.get<double>();
+    if (set_atmosphere_parameter(config.atmosphere, name, number)) continue;
+    bool listed = models.empty();
+    for (const ModelFactory* model : models) {
+      const ParameterSpec* spec = model->descriptor->find_parameter(name);
+      if (spec == nullptr || spec->atmosphere) continue;
+      listed = true;
+      if (!(number >= spec->min_value && number <= spec->max_value) ||
+          (spec->integer && number != std::floor(number))) {
+        std::ostringstream range;
+        range << "must be " << (spec->integer ? "an integer " : "") << "in [" << spec->min_value << ", "
+              << spec->max_value << "] for " << model->descriptor->id;
+        throw invalid_parameter(name, range.str());
+      }
+    }
+    if (!listed)
+      throw unknown_parameter(name, "the evaluation parameters (the atmosphere parameters of the sky "
+                                    "endpoints: alpha, beta, g, turbidity, albedo, ..., or an option "
+                                    "of a requested model)");
+    config.options[name] = number;
   }
   try {
     config.atmosphere.validate();
@@ -114,12 +132,13 @@ EvaluationRequest parse_evaluation_request(storage::Database& db, const std::str
   } else {
     throw invalid_parameter("models", "\"all\" or a non-empty array of model ids");
   }
+  std::vector<const ModelFactory*> factories;
   try {
-    resolve_models(request.models, available);
+    factories = resolve_models(request.models, available);
   } catch (const std::invalid_argument& e) {
     throw ApiError(404, "unknown_model", "models", std::string("models: ") + e.what());
   }
-  request.config = parse_evaluation_parameters(j.value("parameters", nlohmann::json()));
+  request.config = parse_evaluation_parameters(j.value("parameters", nlohmann::json()), factories);
   return request;
 }
 

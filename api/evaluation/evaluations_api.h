@@ -43,8 +43,13 @@ EvaluationRequest parse_evaluation_request(storage::Database& db, const std::str
                                            std::span<const ModelFactory> available,
                                            const std::string& software_version);
 // The parameters object of a body or a job applied to the default configuration (400 naming
-// the parameter when unknown, not a number or out of range).
-ModelConfig parse_evaluation_parameters(const nlohmann::json& parameters);
+// the parameter when unknown, not a number or out of range): the shared atmosphere parameters,
+// and the options of the requested models (e.g. Bruneton's table sizes, Nishita93's
+// study_viewer_sample, Preetham's clamp_negative_fit), each applied to the models that list it
+// (options_for_model). With `models` empty, options are not checked here (a stored job, checked
+// when it was created; the model checks them again when it is built).
+ModelConfig parse_evaluation_parameters(const nlohmann::json& parameters,
+                                        std::span<const ModelFactory* const> models = {});
 
 struct EvaluationFilter {
   std::optional<std::string> model;

@@ -122,7 +122,9 @@ void add_data_paths(json& paths) {
       {{"summary",
         "Start an evaluation of models against a dataset on the background evaluation workers"},
        {"requestBody", json_body("{models: [ids] or \"all\", dataset, parameters: {turbidity, "
-                                 "alpha, beta, g, albedo, ...}}")},
+                                 "alpha, beta, g, albedo, ... and options of the requested "
+                                 "models, each applied to the models that list it, e.g. "
+                                 "study_viewer_sample, scattering_orders, clamp_negative_fit}}")},
        {"responses",
         {{"202", ok("{ticket, status, runs, location}")},
          {"404", error("Unknown dataset or model")},

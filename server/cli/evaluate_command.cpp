@@ -1,13 +1,16 @@
-// `clearsky evaluate --dataset NAME [--models all|a,b] [--json] [--samples[=spectra]]
-// [--db PATH]`: the paper's RMSE of models against a stored dataset; every run is stored with
+// `clearsky evaluate --dataset NAME [--models all|a,b] [--parameters JSON] [--json]
+// [--samples[=spectra]] [--db PATH]`: the paper's RMSE of models against a stored dataset; every run is stored with
 // its per-sample errors (api/evaluation/evaluation_runner.h). --samples adds each capture's
 // per-sample RMSE and bias (=spectra: and errors per wavelength) as GET
-// /v1/evaluations/{id}?samples=... does (api/encode/evaluation_json.h).
+// /v1/evaluations/{id}?samples=... does (api/encode/evaluation_json.h). --parameters is the
+// "parameters" object of POST /v1/evaluations (atmosphere parameters and model options).
 #include <iomanip>
 #include <iostream>
 
 #include "api/encode/evaluation_json.h"
 #include "api/evaluation/evaluation_runner.h"
+#include "api/evaluation/evaluations_api.h"
+#include "models/registry.h"
 #include "server/cli/commands.h"
 #include "server/cli/database_option.h"
 
@@ -22,6 +25,7 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
     std::string db = kDefaultDatabasePath;
     bool json = false;
     std::string samples = "false";
+    std::string parameters;
   };
   auto options = std::make_shared<Options>();
   command->add_option("--dataset", options->dataset, "Dataset name")->required();
@@ -29,6 +33,9 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
       ->delimiter(',')
       ->capture_default_str();
   add_database_option(*command, options->db);
+  command->add_option("--parameters", options->parameters,
+                      "JSON object of atmosphere parameters and model options, as the \"parameters\" of "
+                      "POST /v1/evaluations, e.g. '{\"turbidity\": 3, \"scattering_orders\": 2}'");
   command->add_flag("--json", options->json, "Print the results as JSON (DESIGN.md CLI contract)");
   command->add_flag("--samples{true}", options->samples,
                     "Per-sample RMSE and bias of each capture; --samples=spectra also the "
@@ -40,6 +47,21 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
     request.dataset = options->dataset;
     request.models = options->models;
     request.software_version = software_version;
+    if (!options->parameters.empty()) {
+      nlohmann::json parameters;
+      try {
+        parameters = nlohmann::json::parse(options->parameters);
+      } catch (const nlohmann::json::parse_error& e) {
+        throw CLI::ValidationError("--parameters", std::string("not valid JSON: ") + e.what());
+      }
+      std::vector<const ModelFactory*> factories;
+      try {
+        factories = api::resolve_models(request.models, registered_models());
+      } catch (const std::invalid_argument& e) {
+        throw CLI::ValidationError("--models", e.what());
+      }
+      request.config = api::parse_evaluation_parameters(parameters, factories);
+    }
     const api::EvaluationReport report = api::run_evaluation(db, request);
     const api::SampleDetail samples = options->samples == "spectra" ? api::SampleDetail::spectra
                                       : options->samples == "true"  ? api::SampleDetail::summary

@@ -14,6 +14,7 @@
 
 #include "api/error/api_error.h"
 #include "api/evaluation/evaluation_pool.h"
+#include "api/evaluation/evaluation_runner.h"
 #include "storage/repositories/capture_repository.h"
 #include "storage/repositories/dataset_repository.h"
 #include "storage/repositories/evaluation_run_repository.h"
@@ -119,6 +120,46 @@ TEST(EvaluationsApi, RequestIsCheckedBeforeQueueing) {
             400);
   EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "parameters": {"beta": -1}})"); }), 400);
   EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "parameters": {"sparkle": 1}})"); }), 400);
+}
+
+// Model options travel in "parameters" (e.g. Nishita93's study_viewer_sample): each applies to
+// the requested models that list it, is range-checked before queueing, and is stored with the
+// runs of those models only.
+TEST(EvaluationsApi, ModelOptionsApplyToTheModelsThatListThem) {
+  static const ModelDescriptor gain_d = [] {
+    ModelDescriptor d = with_id("gain");
+    d.parameters.push_back(ParameterSpec{"gain", "", "radiance factor", 1.0, 0.5, 4.0, false, false});
+    return d;
+  }();
+  static const std::vector<ModelFactory> models = {
+      factories()[0],
+      {&gain_d, [](const ModelConfig& c, const PrecomputeContext&) -> std::shared_ptr<const SkyModel> {
+         const double gain = option_or_default(gain_d, c, "gain");
+         return std::make_shared<testing::FunctionModel>(
+             [gain](const ViewDirection& v, double nm) { return gain * sky(v, nm); }, c, gain_d);
+       }}};
+  Fixture f;
+  const auto parse = [&](const std::string& body) {
+    return parse_evaluation_request(f.db, body, models, "t");
+  };
+  const EvaluationRequest r =
+      parse(R"({"models": ["exact", "gain"], "dataset": "synthetic", "parameters": {"gain": 2}})");
+  EXPECT_EQ(r.config.options.at("gain"), 2.0);
+  EXPECT_EQ(status_of([&] { parse(R"({"models": ["exact"], "dataset": "synthetic", "parameters": {"gain": 2}})"); }),
+            400);
+  EXPECT_EQ(status_of([&] { parse(R"({"models": ["gain"], "dataset": "synthetic", "parameters": {"gain": 9}})"); }),
+            400);
+
+  const EvaluationReport report = run_evaluation(f.db, r, models);
+  ASSERT_EQ(report.models.size(), 2u);
+  storage::EvaluationRunRepository runs(f.db);
+  const auto exact = runs.get(report.models[0].run_id);
+  const auto gain = runs.get(report.models[1].run_id);
+  ASSERT_TRUE(exact && gain);
+  EXPECT_EQ(exact->parameters.find("gain"), std::string::npos) << exact->parameters;
+  EXPECT_NE(gain->parameters.find(";gain=2"), std::string::npos) << gain->parameters;
+  EXPECT_NEAR(report.models[0].result.rmse, 0.0, 1e-9);
+  EXPECT_GT(report.models[1].result.rmse, 10.0);  // twice the sky: tens of mW/(m2.sr.nm)
 }
 
 TEST(EvaluationsApi, BackgroundRunsAreStoredListedAndComparedWithHistory) {
