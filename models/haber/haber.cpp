@@ -34,9 +34,12 @@ const ModelDescriptor kDescriptor = [] {
       {"shell_stride", "", "multiple scattering gathered on every n-th shell, interpolated between", 4, 1, 16, true,
        false},
       {"scattering_orders", "", "scattering orders (1: single scattering only)", 4, 1, 8, true, false},
-      {"sun_zenith_bucket_deg", "deg", "per-sun states are shared by suns within this zenith width (0: exact)", 0.0,
-       0.0, 5.0, false, false},
-      {"sun_state_cache_size", "", "per-sun states kept in memory", 32, 1, 1024, true, false},
+      {"sun_zenith_bucket_deg", "deg",
+       "per-sun states are shared by suns within this zenith width (0: exact, the study: RMSE 14.796 instead of "
+       "14.770; each new state costs seconds)",
+       1.0, 0.0, 5.0, false, false},
+      {"sun_state_cache_size", "", "per-sun states kept in memory (96: every 1-degree bucket of the day sky)", 96, 1,
+       1024, true, false},
   };
   d.capabilities.min_altitude_m = 0.0;
   d.capabilities.max_altitude_m = 0.0;

@@ -8,8 +8,8 @@
 // | layers                 | -    | 50      | [5, 200]  | layers of equal Rayleigh mass up to 35 km       |
 // | shell_stride           | -    | 4       | [1, 16]   | multiple scattering gathered on every n-th shell|
 // | scattering_orders      | -    | 4       | [1, 8]    | 1: single scattering only                       |
-// | sun_zenith_bucket_deg  | deg  | 0       | [0, 5]    | per-sun states shared within this width (0: exact) |
-// | sun_state_cache_size   | -    | 32      | [1, 1024] | per-sun states kept                             |
+// | sun_zenith_bucket_deg  | deg  | 1       | [0, 5]    | per-sun states shared within this width (0: exact) |
+// | sun_state_cache_size   | -    | 96      | [1, 1024] | per-sun states kept                             |
 #pragma once
 
 #include <memory>

@@ -20,10 +20,13 @@ TEST(PerSunAccuracy, HaberMatchesTheStudyOnThe15PublicCaptures) {
   ASSERT_NE(factory, nullptr);
   EvaluationOptions options;
   options.capture_threads = 1;  // each per-sun build already uses every core
+  // The default shares one dome per degree of sun zenith (measured 14.770; exact angles, the
+  // study's setting, 14.796): both within 5% of the study's 14.80, and the bucket costs < 0.5%.
   const EvaluationResult r = evaluate_model(*factory, ModelConfig{}, testing::public_captures(), options);
   for (const auto& c : r.captures) std::printf("haber %s zenith %.3f rmse %.3f\n", c.time_iso.c_str(), c.sun_zenith_deg, c.rmse);
   std::printf("haber total rmse %.3f, evaluate %.1f s\n", r.rmse, r.evaluate_seconds);
   EXPECT_NEAR(r.rmse, 14.80, 0.05 * 14.80);
+  EXPECT_NEAR(r.rmse, 14.796, 0.005 * 14.796);
 }
 
 }  // namespace
