@@ -1,10 +1,9 @@
 // /v1/evaluations handlers (evaluations_api.h).
 #include "api/evaluation/evaluations_api.h"
 
+#include <algorithm>
 #include <charconv>
-#include <cmath>
 #include <map>
-#include <sstream>
 
 #include "api/encode/iso8601_time.h"
 #include "api/error/api_error.h"
@@ -72,19 +71,10 @@ ModelConfig parse_evaluation_parameters(const nlohmann::json& parameters,
       throw invalid_parameter(name, "must be a number");
     const double number = value.get<double>();
     if (set_atmosphere_parameter(config.atmosphere, name, number)) continue;
-    bool listed = models.empty();
-    for (const ModelFactory* model : models) {
-      const ParameterSpec* spec = model->descriptor->find_parameter(name);
-      if (spec == nullptr || spec->atmosphere) continue;
-      listed = true;
-      if (!(number >= spec->min_value && number <= spec->max_value) ||
-          (spec->integer && number != std::floor(number))) {
-        std::ostringstream range;
-        range << "must be " << (spec->integer ? "an integer " : "") << "in [" << spec->min_value << ", "
-              << spec->max_value << "] for " << model->descriptor->id;
-        throw invalid_parameter(name, range.str());
-      }
-    }
+    const bool listed = models.empty() || std::ranges::any_of(models, [&](const ModelFactory* model) {
+                          const ParameterSpec* spec = model->descriptor->find_parameter(name);
+                          return spec != nullptr && !spec->atmosphere;
+                        });
     if (!listed)
       throw unknown_parameter(name, "the evaluation parameters (the atmosphere parameters of the sky "
                                     "endpoints: alpha, beta, g, turbidity, albedo, ..., or an option "
@@ -93,6 +83,9 @@ ModelConfig parse_evaluation_parameters(const nlohmann::json& parameters,
   }
   try {
     config.atmosphere.validate();
+    // Each option within the range of every requested model that lists it.
+    for (const ModelFactory* model : models)
+      validate_config(*model->descriptor, options_for_model(*model->descriptor, config));
   } catch (const std::invalid_argument& e) {
     throw from_invalid_argument(e);
   }

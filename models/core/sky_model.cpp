@@ -228,11 +228,19 @@ ScatteringAlongRay SkyModel::compute_aerial_perspective(const SunState&, const V
 Spectrum SkyModel::compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
                                           const PlaneOrientation& plane) const {
   if (descriptor().capabilities.view_below_horizon) return sky_irradiance_by_quadrature(sun, viewpoint, plane);
-  // Ground-view models: the sky a plane sees is a lune (sky_plane_quadrature.h).
-  return ground_view_sky_irradiance(
-      wavelengths().size(),
-      [&](std::span<const ViewDirection> views, SpectralBatch& out) { sky_radiance(sun, viewpoint, views, out); },
-      plane);
+  // Ground-view models: the sky a plane sees is a lune (sky_plane_quadrature.h). Horizontal:
+  // 24 x 48 directions, within 0.01% of a 200 x 400 rule; tilted: 32 x 32, within 0.4% of a
+  // fine rule up to a tilt of 150 degrees (measured on Preetham and Hosek, tests/models/*).
+  const SkyRadianceBatch radiance = [&](std::span<const ViewDirection> views, SpectralBatch& out) {
+    radiance_to_integrate(sun, viewpoint, views, out);
+  };
+  if (plane.tilt_rad < 1e-9) return sky_irradiance_on_plane(wavelengths().size(), radiance, plane, 24, 48);
+  return sky_irradiance_on_plane(wavelengths().size(), radiance, plane, 32, 32);
+}
+
+void SkyModel::radiance_to_integrate(const SunState& sun, const Viewpoint& viewpoint,
+                                     std::span<const ViewDirection> views, SpectralBatch& out) const {
+  sky_radiance(sun, viewpoint, views, out);
 }
 
 Spectrum SkyModel::sky_irradiance_by_quadrature(const SunState& sun, const Viewpoint& viewpoint,

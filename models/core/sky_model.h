@@ -137,9 +137,16 @@ class SkyModel {
                                     std::span<const ViewDirection> views,
                                     SpectralBatch& out) const = 0;
   virtual Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const = 0;
-  // Default: sky_irradiance_by_quadrature(). Models with an irradiance table override it.
+  // Default: sky_irradiance_by_quadrature(), or for ground-view models the lune rule of
+  // sky_plane_quadrature.h over radiance_to_integrate(). Models with an irradiance table
+  // override it.
   virtual Spectrum compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
                                           const PlaneOrientation& plane) const;
+  // The radiance the ground-view irradiance quadrature integrates, for views above the horizon
+  // (out already sized). Default: the checked answers of sky_radiance(). A model that refuses
+  // samples it can still integrate (fit_domain.h) overrides it.
+  virtual void radiance_to_integrate(const SunState& sun, const Viewpoint& viewpoint,
+                                     std::span<const ViewDirection> views, SpectralBatch& out) const;
   // Called only for models that declare capabilities.aerial_perspective, with checked inputs.
   // Default: throws std::logic_error (a descriptor that declares what the model lacks).
   virtual ScatteringAlongRay compute_aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,

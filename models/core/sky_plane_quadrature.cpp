@@ -55,21 +55,4 @@ Spectrum sky_irradiance_on_plane(std::size_t n_wavelengths, const SkyRadianceBat
   return irradiance;
 }
 
-Spectrum sky_irradiance_on_plane(const SkyModel& model, const SunState& sun,
-                                 const Viewpoint& viewpoint, const PlaneOrientation& plane,
-                                 int first_nodes, int second_nodes) {
-  return sky_irradiance_on_plane(
-      model.wavelengths().size(),
-      [&](std::span<const ViewDirection> views, SpectralBatch& out) {
-        model.sky_radiance(sun, viewpoint, views, out);
-      },
-      plane, first_nodes, second_nodes);
-}
-
-Spectrum ground_view_sky_irradiance(std::size_t n_wavelengths, const SkyRadianceBatch& radiance,
-                                    const PlaneOrientation& plane) {
-  if (plane.tilt_rad < 1e-9) return sky_irradiance_on_plane(n_wavelengths, radiance, plane, 24, 48);
-  return sky_irradiance_on_plane(n_wavelengths, radiance, plane, 32, 32);
-}
-
 }  // namespace clearsky

@@ -33,25 +33,13 @@ struct WeightedDirections {
 WeightedDirections sky_plane_quadrature(const PlaneOrientation& plane, int first_nodes,
                                         int second_nodes);
 
-// The sky irradiance (W/(m2.nm) on model.wavelengths()) of a ground-view model by that rule,
-// through model.sky_radiance(); samples the model does not answer contribute nothing.
-Spectrum sky_irradiance_on_plane(const SkyModel& model, const SunState& sun,
-                                 const Viewpoint& viewpoint, const PlaneOrientation& plane,
-                                 int first_nodes, int second_nodes);
-
-// The radiance of a batch of views above the horizon, for a model that integrates something
-// other than its public answers (e.g. a fit clamped at zero where it turns negative).
+// The radiance of a batch of views above the horizon (out already sized), e.g. a model's
+// SkyModel::radiance_to_integrate().
 using SkyRadianceBatch = std::function<void(std::span<const ViewDirection>, SpectralBatch&)>;
 
-// The same rule over `radiance` (n_wavelengths values per view); samples whose status is not
-// ok contribute nothing.
+// The sky irradiance (W/(m2.nm), n_wavelengths values) by that rule over `radiance`; samples
+// whose status is not ok contribute nothing.
 Spectrum sky_irradiance_on_plane(std::size_t n_wavelengths, const SkyRadianceBatch& radiance,
                                  const PlaneOrientation& plane, int first_nodes, int second_nodes);
-
-// The node counts ground-view models use: horizontal 24 x 48 directions (within 0.01% of a
-// 200 x 400 rule), tilted 32 x 32 (within 0.4% of a fine rule up to a tilt of 150 degrees;
-// measured on Preetham and Hosek, tests/models/*).
-Spectrum ground_view_sky_irradiance(std::size_t n_wavelengths, const SkyRadianceBatch& radiance,
-                                    const PlaneOrientation& plane);
 
 }  // namespace clearsky

@@ -1,6 +1,5 @@
 // Hosek-Wilkie: descriptor, per-sun state (cooked distributions) and the model queries.
 #include "models/core/fit_domain.h"
-#include "models/core/sky_plane_quadrature.h"
 #include "models/hosek/hosek.h"
 
 #include <algorithm>
@@ -214,14 +213,9 @@ void HosekModel::compute_sky_radiance(const SunState& sun, const Viewpoint&,
   fit_radiance(sun, clamp_negative_fit_, views, out);
 }
 
-Spectrum HosekModel::compute_sky_irradiance(const SunState& sun, const Viewpoint&,
-                                            const PlaneOrientation& plane) const {
-  // The views of the quadrature are above the horizon and the sun was checked by the caller;
-  // the integral takes the fit clamped at no light (fit_domain.h).
-  return ground_view_sky_irradiance(
-      wavelengths().size(),
-      [&](std::span<const ViewDirection> views, SpectralBatch& out) { fit_radiance(sun, true, views, out); },
-      plane);
+void HosekModel::radiance_to_integrate(const SunState& sun, const Viewpoint&,
+                                   std::span<const ViewDirection> views, SpectralBatch& out) const {
+  fit_radiance(sun, true, views, out);
 }
 
 void HosekModel::fit_radiance(const SunState& sun, bool clamp_negative,

@@ -9,7 +9,6 @@
 #include "models/colour/colour_spaces.h"
 #include "models/colour/daylight_spectrum.h"
 #include "models/core/fit_domain.h"
-#include "models/core/sky_plane_quadrature.h"
 
 namespace clearsky {
 namespace {
@@ -187,14 +186,9 @@ void PreethamModel::compute_sky_radiance(const SunState& sun, const Viewpoint&,
   fit_radiance(sun, clamp_negative_fit_, views, out);
 }
 
-Spectrum PreethamModel::compute_sky_irradiance(const SunState& sun, const Viewpoint&,
-                                               const PlaneOrientation& plane) const {
-  // The views of the quadrature are above the horizon and the sun was checked by the caller;
-  // the integral takes the fit clamped at no light (fit_domain.h).
-  return ground_view_sky_irradiance(
-      wavelengths().size(),
-      [&](std::span<const ViewDirection> views, SpectralBatch& out) { fit_radiance(sun, true, views, out); },
-      plane);
+void PreethamModel::radiance_to_integrate(const SunState& sun, const Viewpoint&,
+                                   std::span<const ViewDirection> views, SpectralBatch& out) const {
+  fit_radiance(sun, true, views, out);
 }
 
 

@@ -51,9 +51,10 @@ class PreethamModel final : public SkyModel {
                             std::span<const ViewDirection> views,
                             SpectralBatch& out) const override;
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
-  // The lune quadrature of the fit clamped at zero (fit_domain.h), whatever clamp_negative_fit.
-  Spectrum compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
-                                  const PlaneOrientation& plane) const override;
+  // The sky irradiance integrates the fit clamped at zero (fit_domain.h), whatever
+  // clamp_negative_fit.
+  void radiance_to_integrate(const SunState& sun, const Viewpoint& viewpoint,
+                             std::span<const ViewDirection> views, SpectralBatch& out) const override;
 
  private:
   explicit PreethamModel(const ModelConfig& config);
