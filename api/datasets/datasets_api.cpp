@@ -21,7 +21,8 @@ nlohmann::ordered_json number_or_null(double value) {
 
 storage::DatasetSummary find_dataset(storage::Database& db, const std::string& name) {
   auto dataset = storage::DatasetRepository(db).find(name);
-  if (!dataset) throw ApiError(404, "unknown_dataset", "dataset", "dataset: no dataset named '" + name + "'");
+  if (!dataset)
+    throw ApiError(404, "unknown_dataset", "dataset", "dataset: no dataset named '" + name + "'");
   return *dataset;
 }
 
@@ -59,18 +60,17 @@ nlohmann::ordered_json show_dataset(storage::Database& db, const std::string& na
     const MeasuredCapture& c = stored.capture;
     if (options.capture && c.label != *options.capture) continue;
     found = true;
-    nlohmann::ordered_json j{
-        {"label", c.label},
-        {"time", format_iso8601_time(c.unix_time_utc_s, c.utc_offset_minutes)},
-        {"time_utc", format_iso8601_time(c.unix_time_utc_s, 0, true)},
-        {"place",
-         {{"latitude", c.site.latitude_deg},
-          {"longitude", c.site.longitude_deg},
-          {"elevation_m", c.site.elevation_m}}},
-        {"sun_zenith", number_or_null(c.sun_zenith_computed_deg)},
-        {"sun_azimuth", number_or_null(c.sun_azimuth_computed_deg)},
-        {"sun_azimuth_estimated", number_or_null(c.sun_azimuth_estimated_deg)},
-        {"samples", c.samples.size()}};
+    nlohmann::ordered_json j{{"label", c.label},
+                             {"time", format_iso8601_time(c.unix_time_utc_s, c.utc_offset_minutes)},
+                             {"time_utc", format_iso8601_time(c.unix_time_utc_s, 0, true)},
+                             {"place",
+                              {{"latitude", c.site.latitude_deg},
+                               {"longitude", c.site.longitude_deg},
+                               {"elevation_m", c.site.elevation_m}}},
+                             {"sun_zenith", number_or_null(c.sun_zenith_computed_deg)},
+                             {"sun_azimuth", number_or_null(c.sun_azimuth_computed_deg)},
+                             {"sun_azimuth_estimated", number_or_null(c.sun_azimuth_estimated_deg)},
+                             {"samples", c.samples.size()}};
     if (options.samples || options.capture) {
       nlohmann::ordered_json samples = nlohmann::ordered_json::array();
       for (const MeasuredSample& s : c.samples)

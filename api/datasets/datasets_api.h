@@ -17,10 +17,9 @@
 
 #include <filesystem>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "storage/importers/kider_importer.h"
 #include "storage/sqlite/database.h"

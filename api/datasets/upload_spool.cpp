@@ -54,8 +54,8 @@ UploadSpool::~UploadSpool() {
 void UploadSpool::append(std::string_view chunk) {
   if (file_ == nullptr) throw std::logic_error("upload spool: append after finish");
   if (chunk.size() > max_bytes_ - size_)
-    throw too_large("body", "the upload is above the limit of " + std::to_string(max_bytes_) +
-                                " bytes");
+    throw too_large("body",
+                    "the upload is above the limit of " + std::to_string(max_bytes_) + " bytes");
   if (!chunk.empty() && std::fwrite(chunk.data(), 1, chunk.size(), file_) != chunk.size())
     throw std::runtime_error("cannot write upload file " + path_.string());
   size_ += chunk.size();

@@ -7,7 +7,9 @@ namespace clearsky::api {
 
 namespace {
 
-nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+nlohmann::json finite_or_null(double x) {
+  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
+}
 
 }  // namespace
 
@@ -30,7 +32,8 @@ nlohmann::json descriptor_to_json(const ModelDescriptor& d) {
           {"citation", d.citation},
           {"summary", d.summary},
           {"native_wavelengths_nm", d.native_wavelengths_nm},
-          {"wavelength_range_nm", {finite_or_null(d.min_wavelength_nm), finite_or_null(d.max_wavelength_nm)}},
+          {"wavelength_range_nm",
+           {finite_or_null(d.min_wavelength_nm), finite_or_null(d.max_wavelength_nm)}},
           {"parameters", parameters},
           {"capabilities",
            {{"altitude_range_m", {c.min_altitude_m, finite_or_null(c.max_altitude_m)}},
@@ -39,7 +42,8 @@ nlohmann::json descriptor_to_json(const ModelDescriptor& d) {
             {"aerial_perspective", c.aerial_perspective},
             {"max_sun_zenith_deg", c.max_sun_zenith_deg},
             {"sun_below_horizon", c.max_sun_zenith_deg > 90.0},
-            {"scattering_orders", c.scattering_orders < 0 ? nlohmann::json("all") : nlohmann::json(c.scattering_orders)},
+            {"scattering_orders",
+             c.scattering_orders < 0 ? nlohmann::json("all") : nlohmann::json(c.scattering_orders)},
             {"per_sun_precomputation", c.per_sun_precomputation},
             {"sun_irradiance", c.sun_irradiance},
             {"sky_irradiance", c.sky_irradiance}}}};

@@ -27,7 +27,7 @@ std::int64_t EvaluationPool::submit(EvaluationRequest request, Finished on_finis
   {
     std::lock_guard lock(mutex_);
     if (queue_.size() >= options_.max_queued)
-      throw ApiError(503, "busy",  "",
+      throw ApiError(503, "busy", "",
                      std::to_string(queue_.size()) + " evaluations are queued; try again later",
                      30);
     id = next_ticket_++;

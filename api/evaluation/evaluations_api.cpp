@@ -67,18 +67,19 @@ ModelConfig parse_evaluation_parameters(const nlohmann::json& parameters,
       config.atmosphere.ground_albedo.reset();
       continue;
     }
-    if (!value.is_number())
-      throw invalid_parameter(name, "must be a number");
+    if (!value.is_number()) throw invalid_parameter(name, "must be a number");
     const double number = value.get<double>();
     if (set_atmosphere_parameter(config.atmosphere, name, number)) continue;
-    const bool listed = models.empty() || std::ranges::any_of(models, [&](const ModelFactory* model) {
-                          const ParameterSpec* spec = model->descriptor->find_parameter(name);
-                          return spec != nullptr && !spec->atmosphere;
-                        });
+    const bool listed =
+        models.empty() || std::ranges::any_of(models, [&](const ModelFactory* model) {
+          const ParameterSpec* spec = model->descriptor->find_parameter(name);
+          return spec != nullptr && !spec->atmosphere;
+        });
     if (!listed)
-      throw unknown_parameter(name, "the evaluation parameters (the atmosphere parameters of the sky "
-                                    "endpoints: alpha, beta, g, turbidity, albedo, ..., or an option "
-                                    "of a requested model)");
+      throw unknown_parameter(name,
+                              "the evaluation parameters (the atmosphere parameters of the sky "
+                              "endpoints: alpha, beta, g, turbidity, albedo, ..., or an option "
+                              "of a requested model)");
     config.options[name] = number;
   }
   try {
@@ -139,16 +140,22 @@ EvaluationFilter parse_evaluation_filter(
     const std::vector<std::pair<std::string, std::string>>& query) {
   EvaluationFilter f;
   for (const auto& [name, value] : query) {
-    if (name == "model") f.model = value;
-    else if (name == "dataset") f.dataset = value;
-    else if (name == "since") f.since_unix_s = time_of(value, name);
-    else if (name == "until") f.until_unix_s = time_of(value, name);
+    if (name == "model")
+      f.model = value;
+    else if (name == "dataset")
+      f.dataset = value;
+    else if (name == "since")
+      f.since_unix_s = time_of(value, name);
+    else if (name == "until")
+      f.until_unix_s = time_of(value, name);
     else if (name == "status") {
       if (value != "running" && value != "succeeded" && value != "failed")
         throw invalid_parameter(name, "one of running, succeeded, failed");
       f.status = value;
-    } else if (name == "job") f.job_id = parse_id(value, name);
-    else throw unknown_parameter(name, "GET /v1/evaluations");
+    } else if (name == "job")
+      f.job_id = parse_id(value, name);
+    else
+      throw unknown_parameter(name, "GET /v1/evaluations");
   }
   return f;
 }
@@ -201,7 +208,8 @@ nlohmann::ordered_json list_evaluations(storage::Database& db, const EvaluationF
     }
   }
   std::sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) {
-    if (a.first.started_utc != b.first.started_utc) return a.first.started_utc > b.first.started_utc;
+    if (a.first.started_utc != b.first.started_utc)
+      return a.first.started_utc > b.first.started_utc;
     return a.first.id > b.first.id;
   });
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
@@ -222,11 +230,12 @@ nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_i
   storage::EvaluationRunRepository repository(db);
   const auto run = repository.get(run_id, options.samples != SampleDetail::none);
   if (!run)
-    throw ApiError(404, "unknown_evaluation", "id", "id: no evaluation run " + std::to_string(run_id));
+    throw ApiError(404, "unknown_evaluation", "id",
+                   "id: no evaluation run " + std::to_string(run_id));
   const auto names = dataset_names(db);
 
-  nlohmann::ordered_json history{{"previous_run", nullptr}, {"previous_rmse", nullptr},
-                                 {"rmse_changed", nullptr}};
+  nlohmann::ordered_json history{
+      {"previous_run", nullptr}, {"previous_rmse", nullptr}, {"rmse_changed", nullptr}};
   if (run->status == "succeeded" && run->rmse) {
     // list() is newest first: the first earlier succeeded run with the same setup.
     for (const storage::RunRecord& other : repository.list(run->dataset_id)) {
@@ -261,9 +270,9 @@ nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_i
     captures.push_back(std::move(capture));
   }
   if (options.capture && captures.empty())
-    throw ApiError(404, "unknown_capture", "capture",
-                   "capture: run " + std::to_string(run_id) + " has no capture '" +
-                       *options.capture + "'");
+    throw ApiError(
+        404, "unknown_capture", "capture",
+        "capture: run " + std::to_string(run_id) + " has no capture '" + *options.capture + "'");
   const auto dataset = names.find(run->dataset_id);
   nlohmann::ordered_json out = {
       {"id", run->id},

@@ -25,11 +25,10 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "api/encode/evaluation_json.h"
 #include "api/evaluation/evaluation_runner.h"

@@ -90,8 +90,9 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
     body["integrated_range_nm"] = {grid.lower_edge_nm(0), grid.upper_edge_nm(grid.size() - 1)};
     if (partial) {
       body["integrated_range_nm"] = {lo, hi};
-      body["warning"] = "the model answers only part of the grid; the CIE integral covers [" + std::to_string(lo) +
-                        ", " + std::to_string(hi) + "] nm (missing light counts as zero)";
+      body["warning"] = "the model answers only part of the grid; the CIE integral covers [" +
+                        std::to_string(lo) + ", " + std::to_string(hi) +
+                        "] nm (missing light counts as zero)";
     }
   }
   ApiResponse response = json_response(body);

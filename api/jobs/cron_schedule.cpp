@@ -21,8 +21,8 @@ struct FieldSpec {
   const char* const* names;  // three-letter names of min, min + 1, ...; nullptr when none
 };
 
-constexpr const char* kMonthNames[] = {"jan", "feb", "mar", "apr", "may", "jun",
-                                       "jul", "aug", "sep", "oct", "nov", "dec", nullptr};
+constexpr const char* kMonthNames[] = {"jan", "feb", "mar", "apr", "may", "jun",  "jul",
+                                       "aug", "sep", "oct", "nov", "dec", nullptr};
 constexpr const char* kWeekdayNames[] = {"sun", "mon", "tue", "wed", "thu", "fri", "sat", nullptr};
 
 constexpr std::array<FieldSpec, 5> kFields = {{
@@ -51,11 +51,12 @@ int parse_value(const FieldSpec& field, std::string_view text, std::string_view 
   int value = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (text.empty() || error != std::errc() || end != text.data() + text.size())
-    fail(field, whole, "\"" + std::string(text) + "\" is not a number" +
-                           (field.names ? " or a name" : ""));
+    fail(field, whole,
+         "\"" + std::string(text) + "\" is not a number" + (field.names ? " or a name" : ""));
   if (value < field.min || value > field.max)
-    fail(field, whole, std::to_string(value) + " is outside " + std::to_string(field.min) + "-" +
-                           std::to_string(field.max));
+    fail(field, whole,
+         std::to_string(value) + " is outside " + std::to_string(field.min) + "-" +
+             std::to_string(field.max));
   return value;
 }
 
@@ -91,8 +92,7 @@ std::vector<bool> parse_field(const FieldSpec& field, std::string_view text) {
       } else {
         first = parse_value(field, range.substr(0, dash), text);
         last = parse_value(field, range.substr(dash + 1), text);
-        if (last < first)
-          fail(field, text, "the range " + std::string(range) + " runs backwards");
+        if (last < first) fail(field, text, "the range " + std::string(range) + " runs backwards");
       }
     }
     for (int v = first; v <= last; v += step) selected[static_cast<std::size_t>(v)] = true;

@@ -52,13 +52,13 @@ nlohmann::ordered_json job_json(storage::Database& db, const storage::JobRecord&
   std::set<std::string> seen;
   for (const auto& run : storage::EvaluationRunRepository(db).list(job.dataset_id)) {
     if (run.job_id != job.id || !seen.insert(run.model_id).second) continue;
-    last_result.push_back({{"run", run.id},
-                           {"model", run.model_id},
-                           {"status", run.status},
-                           {"started", run.started_utc},
-                           {"rmse", run.rmse && std::isfinite(*run.rmse)
-                                        ? nlohmann::ordered_json(*run.rmse)
-                                        : nlohmann::ordered_json(nullptr)}});
+    last_result.push_back(
+        {{"run", run.id},
+         {"model", run.model_id},
+         {"status", run.status},
+         {"started", run.started_utc},
+         {"rmse", run.rmse && std::isfinite(*run.rmse) ? nlohmann::ordered_json(*run.rmse)
+                                                       : nlohmann::ordered_json(nullptr)}});
   }
   return {{"id", job.id},
           {"name", job.name},
@@ -110,21 +110,22 @@ nlohmann::ordered_json create_job(storage::Database& db, const std::string& body
   try {
     CronSchedule::parse(job.schedule);
   } catch (const std::invalid_argument& e) {
-    throw invalid_parameter("schedule", std::string(e.what()).substr(std::string("schedule: ").size()));
+    throw invalid_parameter("schedule",
+                            std::string(e.what()).substr(std::string("schedule: ").size()));
   }
   // The evaluation part is checked as POST /v1/evaluations checks it.
   nlohmann::json evaluation{{"dataset", j.value("dataset", nlohmann::json())},
                             {"models", j.value("models", nlohmann::json("all"))}};
   if (j.contains("parameters")) evaluation["parameters"] = j["parameters"];
-  const EvaluationRequest request =
-      parse_evaluation_request(db, evaluation.dump(), available, "");
+  const EvaluationRequest request = parse_evaluation_request(db, evaluation.dump(), available, "");
   job.dataset_id = storage::DatasetRepository(db).find(request.dataset)->id;
   if (request.models.size() == 1 && request.models[0] == "all") {
     job.models = "all";
   } else {
     for (const std::string& m : request.models) job.models += (job.models.empty() ? "" : ",") + m;
   }
-  job.parameters = j.contains("parameters") && !j["parameters"].is_null() ? j["parameters"].dump() : "";
+  job.parameters =
+      j.contains("parameters") && !j["parameters"].is_null() ? j["parameters"].dump() : "";
   job.next_run_utc = next_run_text(job.schedule, now_unix_s);
   storage::JobRepository jobs(db);
   for (const auto& existing : jobs.list())

@@ -14,9 +14,9 @@ json ok(const std::string& description) {
 }
 
 json error(const std::string& description) {
-  return {{"description", description},
-          {"content",
-           {{"application/json", {{"schema", {{"$ref", "#/components/schemas/Error"}}}}}}}};
+  return {
+      {"description", description},
+      {"content", {{"application/json", {{"schema", {{"$ref", "#/components/schemas/Error"}}}}}}}};
 }
 
 json query(const std::string& name, const std::string& type, const std::string& description,
@@ -70,12 +70,16 @@ void add_data_paths(json& paths) {
                      query("path", "string", "Server-side archive or folder (no body)")})},
        {"requestBody",
         {{"required", false},
-         {"content", {{"application/octet-stream", {{"schema", {{"type", "string"}, {"format", "binary"}}}}}}}}},
+         {"content",
+          {{"application/octet-stream",
+            {{"schema", {{"type", "string"}, {"format", "binary"}}}}}}}}},
        {"responses",
-        {{"202", {{"description", "Queued: the import's state (as GET /v1/imports/{id})"},
-                  {"headers", {{"Location", {{"description", "/v1/imports/{id}"},
-                                             {"schema", {{"type", "string"}}}}}}},
-                  {"content", {{"application/json", {{"schema", {{"type", "object"}}}}}}}}},
+        {{"202",
+          {{"description", "Queued: the import's state (as GET /v1/imports/{id})"},
+           {"headers",
+            {{"Location",
+              {{"description", "/v1/imports/{id}"}, {"schema", {{"type", "string"}}}}}}},
+           {"content", {{"application/json", {{"schema", {{"type", "object"}}}}}}}}},
          {"400", error("Bad parameter, unknown format, no body and no path, or no such path")},
          {"413", error("Body above the upload limit")},
          {"503", error("Too many imports queued")}}}});
@@ -93,17 +97,19 @@ void add_data_paths(json& paths) {
        "interrupted. Failures of the import itself: invalid_archive (not Kider content), "
        "conflict (a label held with other content)"},
       {"parameters", json::array({in_path("id", "Import id")})},
-      {"responses", {{"200", ok("{id, dataset, status, progress, timings, report, error, ...}")},
-                     {"404", error("Unknown import")}}}};
+      {"responses",
+       {{"200", ok("{id, dataset, status, progress, timings, report, error, ...}")},
+        {"404", error("Unknown import")}}}};
   paths["/v1/datasets/{name}"]["get"] = {
       {"summary",
        "A dataset's captures: time, place, sun angles used; samples=true adds sample "
        "directions, capture=LABEL one capture with spectra"},
-      {"parameters", json::array({in_path("name", "Dataset name"),
-                                  query("samples", "boolean", "Include samples"),
-                                  query("capture", "string", "One capture by label, with spectra")})},
-      {"responses", {{"200", ok("{name, format, created, captures: [...]}")},
-                     {"404", error("Unknown dataset or capture")}}}};
+      {"parameters",
+       json::array({in_path("name", "Dataset name"), query("samples", "boolean", "Include samples"),
+                    query("capture", "string", "One capture by label, with spectra")})},
+      {"responses",
+       {{"200", ok("{name, format, created, captures: [...]}")},
+        {"404", error("Unknown dataset or capture")}}}};
   paths["/v1/datasets/{name}"]["delete"] =
       write({{"summary", "Delete a dataset with its captures and evaluation runs"},
              {"parameters", json::array({in_path("name", "Dataset name")})},
@@ -143,9 +149,8 @@ void add_data_paths(json& paths) {
        "One run: total and per-capture RMSE (mW/(m2.sr.nm)), per-sample errors on request, "
        "timings, parameters, software version, and whether the RMSE changed against the last "
        "run with the same model and parameters"},
-      {"parameters",
-       json::array({in_path("id", "Run id"), samples,
-                    query("capture", "string", "Only the capture with this label")})},
+      {"parameters", json::array({in_path("id", "Run id"), samples,
+                                  query("capture", "string", "Only the capture with this label")})},
       {"responses",
        {{"200", ok("Run: {id, dataset, model, ..., wavelength_range_nm, [wavelengths_nm], "
                    "rmse, timings, captures: [{label, time, sun_zenith, sun_azimuth, rmse, "
@@ -155,19 +160,21 @@ void add_data_paths(json& paths) {
   paths["/v1/evaluations/tickets/{ticket}"]["get"] = {
       {"summary", "State of a started evaluation: queued, running, succeeded or failed, run ids"},
       {"parameters", json::array({in_path("ticket", "Ticket from POST /v1/evaluations")})},
-      {"responses", {{"200", ok("{ticket, status, runs, error}")}, {"404", error("Unknown ticket")}}}};
+      {"responses",
+       {{"200", ok("{ticket, status, runs, error}")}, {"404", error("Unknown ticket")}}}};
 
   paths["/v1/jobs"]["get"] = {
       {"summary", "Scheduled evaluations with their next run time and last result"},
       {"responses", {{"200", ok("[job]")}}}};
-  paths["/v1/jobs"]["post"] = write(
-      {{"summary", "Schedule an evaluation (5-field cron schedule, UTC)"},
-       {"requestBody",
-        json_body("{name, schedule, dataset, models: [ids] or \"all\", parameters}")},
-       {"responses", {{"201", ok("job")}, {"409", error("Name taken")}}}});
-  paths["/v1/jobs/{id}"]["get"] = {{"summary", "One scheduled evaluation"},
-                                   {"parameters", json::array({in_path("id", "Job id")})},
-                                   {"responses", {{"200", ok("job")}, {"404", error("Unknown job")}}}};
+  paths["/v1/jobs"]["post"] =
+      write({{"summary", "Schedule an evaluation (5-field cron schedule, UTC)"},
+             {"requestBody",
+              json_body("{name, schedule, dataset, models: [ids] or \"all\", parameters}")},
+             {"responses", {{"201", ok("job")}, {"409", error("Name taken")}}}});
+  paths["/v1/jobs/{id}"]["get"] = {
+      {"summary", "One scheduled evaluation"},
+      {"parameters", json::array({in_path("id", "Job id")})},
+      {"responses", {{"200", ok("job")}, {"404", error("Unknown job")}}}};
   paths["/v1/jobs/{id}"]["delete"] =
       write({{"summary", "Delete a scheduled evaluation (its runs stay)"},
              {"parameters", json::array({in_path("id", "Job id")})},

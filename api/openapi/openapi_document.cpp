@@ -1,10 +1,10 @@
 // The OpenAPI document, built once.
 #include "api/openapi/openapi_document.h"
 
-#include "api/openapi/data_paths.h"
-
 #include <string>
 #include <vector>
+
+#include "api/openapi/data_paths.h"
 
 namespace clearsky::api {
 

@@ -14,9 +14,9 @@ SolarPosition solar_position_checked(const SolarPositionInput& input) {
   } catch (const std::invalid_argument& e) {
     const std::string message = e.what();
     static const std::pair<const char*, const char*> kNames[] = {
-        {"unix_time_utc_s", "time"},       {"latitude_deg", "lat"},
-        {"longitude_deg", "lon"},          {"elevation_m", "altitude"},
-        {"pressure_mbar", "pressure"},     {"temperature_c", "temperature"},
+        {"unix_time_utc_s", "time"},   {"latitude_deg", "lat"},
+        {"longitude_deg", "lon"},      {"elevation_m", "altitude"},
+        {"pressure_mbar", "pressure"}, {"temperature_c", "temperature"},
         {"delta_t_s", "delta_t"}};
     for (const auto& [field, parameter] : kNames) {
       if (message.rfind(field, 0) == 0) throw invalid_parameter(parameter, message);

@@ -142,8 +142,9 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
   header.insert("clearskyProjection", Imf::StringAttribute(s.projection_name));
   header.insert("sunZenithDeg", Imf::FloatAttribute(static_cast<float>(s.sun.zenith_deg)));
   header.insert("sunAzimuthDeg", Imf::FloatAttribute(static_cast<float>(s.sun.azimuth_deg)));
-  header.insert("clearskyAlpha",
-                Imf::StringAttribute("A = 1 where the model answered, 0 where it did not (colour 0)"));
+  header.insert(
+      "clearskyAlpha",
+      Imf::StringAttribute("A = 1 where the model answered, 0 where it did not (colour 0)"));
   header.insert("observerAltitudeM",
                 Imf::FloatAttribute(static_cast<float>(s.viewpoint.altitude_m)));
   if (s.projection.projection() == Projection::latlong) Imf::addEnvmap(header, Imf::ENVMAP_LATLONG);

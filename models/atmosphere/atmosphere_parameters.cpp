@@ -16,12 +16,14 @@ void require(bool ok, const char* name, const char* range) {
 }  // namespace
 
 void AtmosphereParameters::validate() const {
-  require(std::isfinite(earth_radius_m) && earth_radius_m > 0.0, "earth_radius_m", "finite and > 0");
+  require(std::isfinite(earth_radius_m) && earth_radius_m > 0.0, "earth_radius_m",
+          "finite and > 0");
   require(std::isfinite(top_radius_m) && top_radius_m > earth_radius_m, "top_radius_m",
           "finite and > earth_radius_m");
-  require(rayleigh_scale_height_m > 0.0 && rayleigh_scale_height_m <= 1e5, "rayleigh_scale_height_m",
+  require(rayleigh_scale_height_m > 0.0 && rayleigh_scale_height_m <= 1e5,
+          "rayleigh_scale_height_m", "in (0, 100000]");
+  require(mie_scale_height_m > 0.0 && mie_scale_height_m <= 1e5, "mie_scale_height_m",
           "in (0, 100000]");
-  require(mie_scale_height_m > 0.0 && mie_scale_height_m <= 1e5, "mie_scale_height_m", "in (0, 100000]");
   require(rayleigh_temperature_celsius >= -100.0 && rayleigh_temperature_celsius <= 100.0,
           "rayleigh_temperature_celsius", "in [-100, 100]");
   require(angstrom_alpha >= 0.0 && angstrom_alpha <= 4.0, "alpha", "in [0, 4]");
@@ -39,8 +41,8 @@ std::string AtmosphereParameters::canonical_string() const {
   out << "R=" << earth_radius_m << ";top=" << top_radius_m << ";HR=" << rayleigh_scale_height_m
       << ";HM=" << mie_scale_height_m << ";T=" << rayleigh_temperature_celsius
       << ";alpha=" << angstrom_alpha << ";beta=" << angstrom_beta
-      << ";ssa=" << mie_single_scattering_albedo << ";g=" << mie_phase_g << ";turbidity=" << turbidity
-      << ";albedo=";
+      << ";ssa=" << mie_single_scattering_albedo << ";g=" << mie_phase_g
+      << ";turbidity=" << turbidity << ";albedo=";
   if (ground_albedo) {
     out << *ground_albedo;
   } else {

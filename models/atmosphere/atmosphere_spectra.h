@@ -22,10 +22,11 @@ struct AtmosphereSpectra {
   Spectrum mie_extinction_per_m;       // at sea level
   Spectrum mie_scattering_per_m;       // at sea level
   Spectrum ground_albedo;
-  Spectrum solar_irradiance_w_m2_nm;   // extraterrestrial, normal incidence
+  Spectrum solar_irradiance_w_m2_nm;  // extraterrestrial, normal incidence
 
   // Validates the parameters (std::invalid_argument naming the parameter).
-  static AtmosphereSpectra build(const AtmosphereParameters& parameters, const WavelengthGrid& grid);
+  static AtmosphereSpectra build(const AtmosphereParameters& parameters,
+                                 const WavelengthGrid& grid);
 
   double rayleigh_density(double altitude_m) const;
   double mie_density(double altitude_m) const;

@@ -16,15 +16,16 @@ namespace {
 double mean_of_rows(double lo_nm, double hi_nm) {
   const auto& astm = ReferenceSpectra::get().astm_g173_extraterrestrial;
   if (lo_nm < astm.min_nm() || hi_nm > astm.max_nm() + 5.0) {
-    throw std::out_of_range("solar spectrum: [" + std::to_string(lo_nm) + ", " + std::to_string(hi_nm) +
-                            "] nm is outside ASTM G-173 (280..4000 nm)");
+    throw std::out_of_range("solar spectrum: [" + std::to_string(lo_nm) + ", " +
+                            std::to_string(hi_nm) + "] nm is outside ASTM G-173 (280..4000 nm)");
   }
   const auto& nm = astm.wavelengths_nm();
   const auto first = std::lower_bound(nm.begin(), nm.end(), lo_nm);
   const auto last = std::lower_bound(nm.begin(), nm.end(), hi_nm);
   if (first == last) return astm.at(0.5 * (lo_nm + hi_nm), OutOfRange::hold_end_values);
   double sum = 0.0;
-  for (auto it = first; it != last; ++it) sum += astm.values()[static_cast<std::size_t>(it - nm.begin())];
+  for (auto it = first; it != last; ++it)
+    sum += astm.values()[static_cast<std::size_t>(it - nm.begin())];
   return sum / static_cast<double>(last - first);
 }
 
@@ -44,8 +45,9 @@ double solar_spectrum_at_point_nm(double wavelength_nm) {
 Spectrum solar_irradiance_on(const WavelengthGrid& grid) {
   Spectrum out(grid.size());
   for (std::size_t i = 0; i < grid.size(); ++i) {
-    out[i] = grid.kind() == WavelengthGrid::Kind::bins ? mean_of_rows(grid.lower_edge_nm(i), grid.upper_edge_nm(i))
-                                                       : solar_spectrum_at_point_nm(grid[i]);
+    out[i] = grid.kind() == WavelengthGrid::Kind::bins
+                 ? mean_of_rows(grid.lower_edge_nm(i), grid.upper_edge_nm(i))
+                 : solar_spectrum_at_point_nm(grid[i]);
   }
   return out;
 }

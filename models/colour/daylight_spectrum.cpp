@@ -13,8 +13,10 @@ DaylightWeights daylight_weights(double x, double y) {
 Spectrum daylight_relative_spectrum(const DaylightWeights& w, const WavelengthGrid& grid) {
   const auto& ref = ReferenceSpectra::get();
   Spectrum s = ref.daylight_s0.resample(grid, Resampling::point, OutOfRange::hold_end_values);
-  const Spectrum s1 = ref.daylight_s1.resample(grid, Resampling::point, OutOfRange::hold_end_values);
-  const Spectrum s2 = ref.daylight_s2.resample(grid, Resampling::point, OutOfRange::hold_end_values);
+  const Spectrum s1 =
+      ref.daylight_s1.resample(grid, Resampling::point, OutOfRange::hold_end_values);
+  const Spectrum s2 =
+      ref.daylight_s2.resample(grid, Resampling::point, OutOfRange::hold_end_values);
   for (std::size_t i = 0; i < grid.size(); ++i) s[i] += w.m1 * s1[i] + w.m2 * s2[i];
   return s;
 }

@@ -23,10 +23,11 @@ class ThreeSampleSky final : public SkyModel {
   std::size_t table_bytes() const override { return inner_->table_bytes(); }
 
  protected:
-  std::shared_ptr<const SunState> compute_sun_state(const SunPosition& sun,
-                                                    const PrecomputeContext& context) const override;
+  std::shared_ptr<const SunState> compute_sun_state(
+      const SunPosition& sun, const PrecomputeContext& context) const override;
   void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
-                            std::span<const ViewDirection> views, SpectralBatch& out) const override;
+                            std::span<const ViewDirection> views,
+                            SpectralBatch& out) const override;
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
 
  private:

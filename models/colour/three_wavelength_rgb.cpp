@@ -43,7 +43,8 @@ LinearSrgb ThreeWavelengthRgb::rgb(const Spectrum& on_grid) const {
   return rgb(on_grid[2], on_grid[1], on_grid[0]);
 }
 
-Spectrum ThreeWavelengthRgb::reconstruct_spectrum(const Spectrum& on_grid, const WavelengthGrid& target) const {
+Spectrum ThreeWavelengthRgb::reconstruct_spectrum(const Spectrum& on_grid,
+                                                  const WavelengthGrid& target) const {
   return daylight_spectrum(xyz_to_xyy(linear_srgb_to_xyz(rgb(on_grid))), target);
 }
 

@@ -8,7 +8,8 @@
 
 namespace clearsky {
 
-inline std::uint64_t fnv1a_64(std::string_view bytes, std::uint64_t seed = 14695981039346656037ull) {
+inline std::uint64_t fnv1a_64(std::string_view bytes,
+                              std::uint64_t seed = 14695981039346656037ull) {
   std::uint64_t h = seed;
   for (unsigned char c : bytes) {
     h ^= c;

@@ -56,17 +56,20 @@ CLEARSKY_VECTOR_CLONES void exp_nonpositive_in_place(double* values, std::size_t
   for (std::size_t i = 0; i < n; ++i) values[i] = exp_core(values[i]);
 }
 
-CLEARSKY_VECTOR_CLONES void transmittance_from_lengths(std::size_t n, const double* beta_rayleigh_per_m,
-                                                       const double* beta_mie_per_m, double rayleigh_m,
-                                                       double mie_m, double* out) {
+CLEARSKY_VECTOR_CLONES void transmittance_from_lengths(std::size_t n,
+                                                       const double* beta_rayleigh_per_m,
+                                                       const double* beta_mie_per_m,
+                                                       double rayleigh_m, double mie_m,
+                                                       double* out) {
   for (std::size_t i = 0; i < n; ++i) {
-    out[i] = std::clamp(-(beta_rayleigh_per_m[i] * rayleigh_m + beta_mie_per_m[i] * mie_m), -708.0, 0.0);
+    out[i] =
+        std::clamp(-(beta_rayleigh_per_m[i] * rayleigh_m + beta_mie_per_m[i] * mie_m), -708.0, 0.0);
   }
   for (std::size_t i = 0; i < n; ++i) out[i] = exp_core(out[i]);
 }
 
-CLEARSKY_VECTOR_CLONES void add_scaled_pair(std::size_t n, const double* values, double scale_a, double scale_b,
-                                            double* sum_a, double* sum_b) {
+CLEARSKY_VECTOR_CLONES void add_scaled_pair(std::size_t n, const double* values, double scale_a,
+                                            double scale_b, double* sum_a, double* sum_b) {
   for (std::size_t i = 0; i < n; ++i) {
     sum_a[i] += scale_a * values[i];
     sum_b[i] += scale_b * values[i];

@@ -21,12 +21,13 @@ void exp_nonpositive_in_place(double* values, std::size_t n);
 
 // out[i] = exp(-(beta_rayleigh[i] rayleigh_m + beta_mie[i] mie_m)): the transmittance of the
 // optical lengths (optical_depth.h) on n wavelengths, in one vector pass.
-void transmittance_from_lengths(std::size_t n, const double* beta_rayleigh_per_m, const double* beta_mie_per_m,
-                                double rayleigh_m, double mie_m, double* out);
+void transmittance_from_lengths(std::size_t n, const double* beta_rayleigh_per_m,
+                                const double* beta_mie_per_m, double rayleigh_m, double mie_m,
+                                double* out);
 
 // sum_a[i] += scale_a values[i]; sum_b[i] += scale_b values[i] (the Rayleigh and Mie
 // integrals of the numerical models share each transmittance).
-void add_scaled_pair(std::size_t n, const double* values, double scale_a, double scale_b, double* sum_a,
-                     double* sum_b);
+void add_scaled_pair(std::size_t n, const double* values, double scale_a, double scale_b,
+                     double* sum_a, double* sum_b);
 
 }  // namespace clearsky

@@ -31,9 +31,7 @@ struct SkyDirection {
     const double s = std::sin(zenith_rad);
     return {s * std::sin(azimuth_rad), s * std::cos(azimuth_rad), std::cos(zenith_rad)};
   }
-  static SkyDirection from_unit_vector(Vec3 v) {
-    return {safe_acos(v.z), std::atan2(v.x, v.y)};
-  }
+  static SkyDirection from_unit_vector(Vec3 v) { return {safe_acos(v.z), std::atan2(v.x, v.y)}; }
 };
 
 using SunPosition = SkyDirection;

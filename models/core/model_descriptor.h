@@ -10,12 +10,12 @@
 namespace clearsky {
 
 struct ParameterSpec {
-  std::string name;         // as in requests, e.g. "turbidity"
-  std::string unit;         // "" for dimensionless
+  std::string name;  // as in requests, e.g. "turbidity"
+  std::string unit;  // "" for dimensionless
   std::string description;
   double default_value = 0;
-  double min_value = 0;     // inclusive
-  double max_value = 0;     // inclusive
+  double min_value = 0;  // inclusive
+  double max_value = 0;  // inclusive
   bool integer = false;
   // True for the shared atmosphere parameters (alpha, beta, g, turbidity, albedo), which map to
   // AtmosphereParameters; false for options of this model (ModelConfig::options).
@@ -23,8 +23,8 @@ struct ParameterSpec {
 };
 
 struct ModelCapabilities {
-  double min_altitude_m = 0;   // observer altitudes answered
-  double max_altitude_m = 0;   // 0: ground only; > top of atmosphere: space views
+  double min_altitude_m = 0;  // observer altitudes answered
+  double max_altitude_m = 0;  // 0: ground only; > top of atmosphere: space views
   bool view_from_space = false;
   bool view_below_horizon = false;   // views with zenith > 90 degrees
   bool aerial_perspective = false;   // radiance/transmittance to a point at a distance
@@ -36,13 +36,13 @@ struct ModelCapabilities {
 };
 
 struct ModelDescriptor {
-  std::string id;        // "bruneton"
-  std::string name;      // "Bruneton 2008"
-  std::string version;   // bumped when numbers change; part of every cache key
+  std::string id;       // "bruneton"
+  std::string name;     // "Bruneton 2008"
+  std::string version;  // bumped when numbers change; part of every cache key
   std::string citation;
-  std::string summary;   // one paragraph: method and the 2016 study's choices
+  std::string summary;                        // one paragraph: method and the 2016 study's choices
   std::vector<double> native_wavelengths_nm;  // empty: any wavelength
-  double min_wavelength_nm = 0;   // answered spectral range
+  double min_wavelength_nm = 0;               // answered spectral range
   double max_wavelength_nm = std::numeric_limits<double>::infinity();
   std::vector<ParameterSpec> parameters;
   ModelCapabilities capabilities;

@@ -23,8 +23,9 @@ namespace clearsky {
 // Integral of exp(-(radius - bottom_radius_m) / scale_height_m) along the ray (r_m, mu) over
 // distances [0, distance_m] (ray_scattering.h parameterisation), in metres. No top: the
 // caller chooses distance_m (e.g. to the top of the atmosphere).
-double exponential_optical_length_m(double r_m, double mu, double distance_m, double bottom_radius_m,
-                                    double scale_height_m, const RayQuadratureOptions& options = {});
+double exponential_optical_length_m(double r_m, double mu, double distance_m,
+                                    double bottom_radius_m, double scale_height_m,
+                                    const RayQuadratureOptions& options = {});
 
 // Closed form of the same integral along a vertical ray from altitude h0_m up to h1_m:
 // H (exp(-h0/H) - exp(-h1/H)).
@@ -41,8 +42,8 @@ struct OpticalLengths {
 };
 
 // Both optical lengths along the ray (r_m, mu) over [0, distance_m].
-OpticalLengths optical_lengths(const AtmosphereSpectra& atmosphere, double r_m, double mu, double distance_m,
-                               const RayQuadratureOptions& options = {});
+OpticalLengths optical_lengths(const AtmosphereSpectra& atmosphere, double r_m, double mu,
+                               double distance_m, const RayQuadratureOptions& options = {});
 
 // Whether the ray (r_m, mu) from a point at or above the ground meets the ground sphere: the
 // sun seen along it is hidden by the Earth.
@@ -51,13 +52,15 @@ bool ray_hits_ground(double r_m, double mu, double bottom_radius_m);
 // Optical lengths from the point (r_m, mu) to space along the ray, through the part of it
 // inside the top sphere (zero when it misses the atmosphere); nothing when the ray meets the
 // ground (the point is in the Earth's shadow for a light source in that direction).
-std::optional<OpticalLengths> optical_lengths_to_space(const AtmosphereSpectra& atmosphere, double r_m, double mu,
+std::optional<OpticalLengths> optical_lengths_to_space(const AtmosphereSpectra& atmosphere,
+                                                       double r_m, double mu,
                                                        const RayQuadratureOptions& options = {});
 
 // exp(-(beta_R L_R + beta_M,ext L_M)) on the atmosphere's grid.
 Spectrum transmittance(const AtmosphereSpectra& atmosphere, const OpticalLengths& lengths);
 // The same, written into out (size = grid size); no allocation.
-void transmittance_into(const AtmosphereSpectra& atmosphere, const OpticalLengths& lengths, double* out);
+void transmittance_into(const AtmosphereSpectra& atmosphere, const OpticalLengths& lengths,
+                        double* out);
 
 // Transmittance from the point (r_m, mu) to space; zero in the Earth's shadow.
 Spectrum transmittance_to_space(const AtmosphereSpectra& atmosphere, double r_m, double mu,

@@ -23,8 +23,8 @@ inline unsigned worker_count(unsigned requested) {
 // Calls body(i) for every i in [0, count), dynamically scheduled in chunks of `grain`.
 inline void parallel_for(std::size_t count, const std::function<void(std::size_t)>& body,
                          unsigned threads = 0, std::size_t grain = 1) {
-  const unsigned n_threads = static_cast<unsigned>(
-      std::min<std::size_t>(worker_count(threads), (count + grain - 1) / std::max<std::size_t>(grain, 1)));
+  const unsigned n_threads = static_cast<unsigned>(std::min<std::size_t>(
+      worker_count(threads), (count + grain - 1) / std::max<std::size_t>(grain, 1)));
   if (n_threads <= 1) {
     for (std::size_t i = 0; i < count; ++i) body(i);
     return;

@@ -37,7 +37,8 @@ void append_level_crossings(double r, double mu, double d_from, double d_to, dou
 
 std::vector<double> ray_breakpoints(double r_m, double mu, double d0_m, double d1_m,
                                     double altitude_step_m) {
-  if (!(altitude_step_m > 0.0)) throw std::invalid_argument("ray_breakpoints: altitude step must be > 0");
+  if (!(altitude_step_m > 0.0))
+    throw std::invalid_argument("ray_breakpoints: altitude step must be > 0");
   std::vector<double> out;
   if (!(d1_m > d0_m)) return out;
   out.push_back(d0_m);

@@ -25,8 +25,8 @@ struct RaySunGeometry {
 
   // From the query types: observer at viewpoint.altitude_m above a ground sphere of radius
   // bottom_radius_m, looking along view, sun in direction sun.
-  static RaySunGeometry from(double bottom_radius_m, const Viewpoint& viewpoint, const ViewDirection& view,
-                             const SunPosition& sun) {
+  static RaySunGeometry from(double bottom_radius_m, const Viewpoint& viewpoint,
+                             const ViewDirection& view, const SunPosition& sun) {
     return {bottom_radius_m + viewpoint.altitude_m, clamp_cosine(std::cos(view.zenith_rad)),
             clamp_cosine(std::cos(sun.zenith_rad)), cos_angle_between(view, sun)};
   }
@@ -41,9 +41,9 @@ struct RaySunGeometry {
 // transmittance of that segment: what aerial perspective needs (the radiance of an object at
 // the end of the segment reaches the observer as L_object * transmittance + radiance).
 struct ScatteringAlongRay {
-  Spectrum radiance;       // in-scattered spectral radiance, W/(m2.sr.nm)
-  Spectrum transmittance;  // observer to the end of the segment, dimensionless
-  double length_m = 0;     // length of the segment inside the atmosphere
+  Spectrum radiance;         // in-scattered spectral radiance, W/(m2.sr.nm)
+  Spectrum transmittance;    // observer to the end of the segment, dimensionless
+  double length_m = 0;       // length of the segment inside the atmosphere
   bool hits_ground = false;  // the segment ends on the ground
 };
 

@@ -27,7 +27,8 @@ inline bool ray_hits_sphere_from_outside(double r, double mu, double sphere_radi
 // Distance to the first intersection with a sphere the origin is outside of (r >= R);
 // infinity when the ray misses it.
 inline double distance_to_sphere_from_outside(double r, double mu, double sphere_radius) {
-  if (!ray_hits_sphere_from_outside(r, mu, sphere_radius)) return std::numeric_limits<double>::infinity();
+  if (!ray_hits_sphere_from_outside(r, mu, sphere_radius))
+    return std::numeric_limits<double>::infinity();
   return std::max(-r * mu - safe_sqrt(ray_sphere_discriminant(r, mu, sphere_radius)), 0.0);
 }
 
@@ -48,12 +49,13 @@ inline double mu_at_distance(double r, double mu, double d) {
 // Segment of a ray inside the atmosphere shell [bottom, top]: from the entry distance (0 when
 // the origin is inside) to where it reaches the ground or leaves through the top.
 struct AtmosphereSegment {
-  double start = 0;      // m
-  double end = 0;        // m; start == end when the ray misses the atmosphere
+  double start = 0;  // m
+  double end = 0;    // m; start == end when the ray misses the atmosphere
   bool hits_ground = false;
 };
 
-inline AtmosphereSegment atmosphere_segment(double r, double mu, double bottom_radius, double top_radius) {
+inline AtmosphereSegment atmosphere_segment(double r, double mu, double bottom_radius,
+                                            double top_radius) {
   AtmosphereSegment s;
   if (r > top_radius) {
     if (!ray_hits_sphere_from_outside(r, mu, top_radius)) return s;  // misses the atmosphere

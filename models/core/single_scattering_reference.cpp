@@ -12,13 +12,15 @@
 
 namespace clearsky {
 
-ScatteringAlongRay single_scattering_reference(const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray,
-                                               double max_distance_m, const RayQuadratureOptions& options) {
+ScatteringAlongRay single_scattering_reference(const AtmosphereSpectra& atmosphere,
+                                               const RaySunGeometry& ray, double max_distance_m,
+                                               const RayQuadratureOptions& options) {
   const auto& p = atmosphere.parameters;
   const std::size_t n_wavelengths = atmosphere.rayleigh_scattering_per_m.size();
   ScatteringAlongRay result{Spectrum(n_wavelengths, 0.0), Spectrum(n_wavelengths, 1.0), 0.0, false};
 
-  const AtmosphereSegment segment = atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);
+  const AtmosphereSegment segment =
+      atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);
   const double end = std::min(segment.end, max_distance_m);
   if (!(end > segment.start)) return result;
   result.length_m = end - segment.start;
@@ -46,7 +48,8 @@ ScatteringAlongRay single_scattering_reference(const AtmosphereSpectra& atmosphe
     for (const auto& [u, w] : unit) {
       const double d = a + (b - a) * u;
       const double radius = radius_at_distance(ray.r_m, ray.mu, d);
-      const auto to_sun = optical_lengths_to_space(atmosphere, radius, ray.mu_s_at(d, radius), options);
+      const auto to_sun =
+          optical_lengths_to_space(atmosphere, radius, ray.mu_s_at(d, radius), options);
       if (!to_sun) continue;  // in the Earth's shadow
       OpticalLengths total = before_piece;
       total += lengths_between(a, d);
@@ -66,9 +69,10 @@ ScatteringAlongRay single_scattering_reference(const AtmosphereSpectra& atmosphe
   const double phase_rayleigh = rayleigh_phase(ray.nu);
   const double phase_mie = cornette_shanks_phase(ray.nu, p.mie_phase_g);
   for (std::size_t i = 0; i < n_wavelengths; ++i) {
-    result.radiance[i] = atmosphere.solar_irradiance_w_m2_nm[i] *
-                         (atmosphere.rayleigh_scattering_per_m[i] * phase_rayleigh * rayleigh_integral[i] +
-                          atmosphere.mie_scattering_per_m[i] * phase_mie * mie_integral[i]);
+    result.radiance[i] =
+        atmosphere.solar_irradiance_w_m2_nm[i] *
+        (atmosphere.rayleigh_scattering_per_m[i] * phase_rayleigh * rayleigh_integral[i] +
+         atmosphere.mie_scattering_per_m[i] * phase_mie * mie_integral[i]);
   }
   result.transmittance = transmittance(atmosphere, before_piece);
   return result;

@@ -27,7 +27,8 @@ void SpectralBatch::resize(std::size_t samples, std::size_t wavelengths) {
 }
 
 SkyModel::SkyModel(ModelConfig config)
-    : config_(std::move(config)), atmosphere_(AtmosphereSpectra::build(config_.atmosphere, config_.wavelengths)) {}
+    : config_(std::move(config)),
+      atmosphere_(AtmosphereSpectra::build(config_.atmosphere, config_.wavelengths)) {}
 
 bool SkyModel::answers_wavelength(std::size_t i) const {
   const double w = config_.wavelengths[i];
@@ -48,15 +49,16 @@ SampleStatus SkyModel::check_sun(const SunPosition& sun) const {
 SampleStatus SkyModel::check_viewpoint(const Viewpoint& viewpoint) const {
   const auto& caps = descriptor().capabilities;
   if (!std::isfinite(viewpoint.altitude_m)) return SampleStatus::invalid_input;
-  if (viewpoint.altitude_m < caps.min_altitude_m - 1e-9 || viewpoint.altitude_m > caps.max_altitude_m + 1e-9) {
+  if (viewpoint.altitude_m < caps.min_altitude_m - 1e-9 ||
+      viewpoint.altitude_m > caps.max_altitude_m + 1e-9) {
     return SampleStatus::viewpoint_unsupported;
   }
   return SampleStatus::ok;
 }
 
 SampleStatus SkyModel::check_view(const ViewDirection& view) const {
-  if (!(std::isfinite(view.zenith_rad) && std::isfinite(view.azimuth_rad)) || view.zenith_rad < 0.0 ||
-      view.zenith_rad > kPi) {
+  if (!(std::isfinite(view.zenith_rad) && std::isfinite(view.azimuth_rad)) ||
+      view.zenith_rad < 0.0 || view.zenith_rad > kPi) {
     return SampleStatus::invalid_input;
   }
   if (view.zenith_rad > 0.5 * kPi + 1e-12 && !descriptor().capabilities.view_below_horizon) {
@@ -149,7 +151,8 @@ void SkyModel::sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
     partial.resize(answerable.size(), n_wavelengths);
     compute_sky_radiance(sun, viewpoint, answerable, partial);
     for (std::size_t k = 0; k < index.size(); ++k) {
-      std::copy(partial.spectrum(k).begin(), partial.spectrum(k).end(), out.spectrum(index[k]).begin());
+      std::copy(partial.spectrum(k).begin(), partial.spectrum(k).end(),
+                out.spectrum(index[k]).begin());
       out.status[index[k]] = partial.status[k];
     }
   }
@@ -183,8 +186,8 @@ SpectralSample SkyModel::sky_irradiance(const SunState& sun, const Viewpoint& vi
                                         const PlaneOrientation& plane) const {
   SpectralSample sample{Spectrum(wavelengths().size(), 0.0), check_viewpoint(viewpoint)};
   if (sample.status == SampleStatus::ok) sample.status = check_sun(sun.sun());
-  if (!(std::isfinite(plane.tilt_rad) && std::isfinite(plane.azimuth_rad)) || plane.tilt_rad < 0.0 ||
-      plane.tilt_rad > kPi) {
+  if (!(std::isfinite(plane.tilt_rad) && std::isfinite(plane.azimuth_rad)) ||
+      plane.tilt_rad < 0.0 || plane.tilt_rad > kPi) {
     sample.status = SampleStatus::invalid_input;
   }
   if (sample.status != SampleStatus::ok) return sample;
@@ -195,8 +198,10 @@ SpectralSample SkyModel::sky_irradiance(const SunState& sun, const Viewpoint& vi
   return sample;
 }
 
-AerialPerspectiveSample SkyModel::aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
-                                                     const ViewDirection& view, double distance_m) const {
+AerialPerspectiveSample SkyModel::aerial_perspective(const SunState& sun,
+                                                     const Viewpoint& viewpoint,
+                                                     const ViewDirection& view,
+                                                     double distance_m) const {
   const std::size_t n = wavelengths().size();
   AerialPerspectiveSample sample{Spectrum(n, 0.0), Spectrum(n, 0.0), check_viewpoint(viewpoint)};
   if (sample.status == SampleStatus::ok) sample.status = check_sun(sun.sun());
@@ -220,26 +225,30 @@ AerialPerspectiveSample SkyModel::aerial_perspective(const SunState& sun, const 
   return sample;
 }
 
-ScatteringAlongRay SkyModel::compute_aerial_perspective(const SunState&, const Viewpoint&, const ViewDirection&,
-                                                        double) const {
-  throw std::logic_error("model " + descriptor().id + " declares aerial perspective but does not implement it");
+ScatteringAlongRay SkyModel::compute_aerial_perspective(const SunState&, const Viewpoint&,
+                                                        const ViewDirection&, double) const {
+  throw std::logic_error("model " + descriptor().id +
+                         " declares aerial perspective but does not implement it");
 }
 
 Spectrum SkyModel::compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
                                           const PlaneOrientation& plane) const {
-  if (descriptor().capabilities.view_below_horizon) return sky_irradiance_by_quadrature(sun, viewpoint, plane);
+  if (descriptor().capabilities.view_below_horizon)
+    return sky_irradiance_by_quadrature(sun, viewpoint, plane);
   // Ground-view models: the sky a plane sees is a lune (sky_plane_quadrature.h). Horizontal:
   // 24 x 48 directions, within 0.01% of a 200 x 400 rule; tilted: 32 x 32, within 0.4% of a
   // fine rule up to a tilt of 150 degrees (measured on Preetham and Hosek, tests/models/*).
   const SkyRadianceBatch radiance = [&](std::span<const ViewDirection> views, SpectralBatch& out) {
     radiance_to_integrate(sun, viewpoint, views, out);
   };
-  if (plane.tilt_rad < 1e-9) return sky_irradiance_on_plane(wavelengths().size(), radiance, plane, 24, 48);
+  if (plane.tilt_rad < 1e-9)
+    return sky_irradiance_on_plane(wavelengths().size(), radiance, plane, 24, 48);
   return sky_irradiance_on_plane(wavelengths().size(), radiance, plane, 32, 32);
 }
 
 void SkyModel::radiance_to_integrate(const SunState& sun, const Viewpoint& viewpoint,
-                                     std::span<const ViewDirection> views, SpectralBatch& out) const {
+                                     std::span<const ViewDirection> views,
+                                     SpectralBatch& out) const {
   sky_radiance(sun, viewpoint, views, out);
 }
 
@@ -264,7 +273,8 @@ Spectrum SkyModel::sky_irradiance_by_quadrature(const SunState& sun, const Viewp
     const double sin_theta = safe_sqrt(1.0 - mu * mu);
     for (int j = 0; j < azimuth_nodes; ++j) {
       const double phi = 2.0 * kPi * (j + 0.5) / azimuth_nodes;
-      const Vec3 d = (sin_theta * std::cos(phi)) * t + (sin_theta * std::sin(phi)) * b + mu * normal;
+      const Vec3 d =
+          (sin_theta * std::cos(phi)) * t + (sin_theta * std::sin(phi)) * b + mu * normal;
       views.push_back(SkyDirection::from_unit_vector(d));
       weights.push_back(w_mu * mu * 2.0 * kPi / azimuth_nodes);
     }
@@ -302,7 +312,8 @@ double option_or_default(const ModelDescriptor& descriptor, const ModelConfig& c
                          const std::string& name) {
   if (auto it = config.options.find(name); it != config.options.end()) return it->second;
   const ParameterSpec* spec = descriptor.find_parameter(name);
-  if (spec == nullptr) throw std::logic_error("model " + descriptor.id + " has no parameter " + name);
+  if (spec == nullptr)
+    throw std::logic_error("model " + descriptor.id + " has no parameter " + name);
   return spec->default_value;
 }
 

@@ -136,7 +136,8 @@ class SkyModel {
   virtual void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
                                     std::span<const ViewDirection> views,
                                     SpectralBatch& out) const = 0;
-  virtual Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const = 0;
+  virtual Spectrum compute_sun_irradiance(const SunState& sun,
+                                          const Viewpoint& viewpoint) const = 0;
   // Default: sky_irradiance_by_quadrature(), or for ground-view models the lune rule of
   // sky_plane_quadrature.h over radiance_to_integrate(). Models with an irradiance table
   // override it.
@@ -146,11 +147,14 @@ class SkyModel {
   // (out already sized). Default: the checked answers of sky_radiance(). A model that refuses
   // samples it can still integrate (fit_domain.h) overrides it.
   virtual void radiance_to_integrate(const SunState& sun, const Viewpoint& viewpoint,
-                                     std::span<const ViewDirection> views, SpectralBatch& out) const;
+                                     std::span<const ViewDirection> views,
+                                     SpectralBatch& out) const;
   // Called only for models that declare capabilities.aerial_perspective, with checked inputs.
   // Default: throws std::logic_error (a descriptor that declares what the model lacks).
-  virtual ScatteringAlongRay compute_aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
-                                                        const ViewDirection& view, double distance_m) const;
+  virtual ScatteringAlongRay compute_aerial_perspective(const SunState& sun,
+                                                        const Viewpoint& viewpoint,
+                                                        const ViewDirection& view,
+                                                        double distance_m) const;
 
   // Gauss-Legendre quadrature of L cos(theta) over the plane's hemisphere (restricted to the
   // directions the model answers), zenith_nodes x azimuth_nodes directions.

@@ -26,8 +26,8 @@
 namespace clearsky {
 
 struct SunStateCacheStats {
-  std::size_t hits = 0;       // served from a finished or in-flight entry
-  std::size_t builds = 0;     // builder calls
+  std::size_t hits = 0;    // served from a finished or in-flight entry
+  std::size_t builds = 0;  // builder calls
   std::size_t evictions = 0;
 };
 

@@ -27,7 +27,8 @@ extern const ModelFactory kFactory;
 // bucket) and the exact sun.
 class HaberSunState final : public SunState {
  public:
-  HaberSunState(const SunPosition& sun, std::shared_ptr<const HaberDome> dome, double dome_sun_zenith_rad)
+  HaberSunState(const SunPosition& sun, std::shared_ptr<const HaberDome> dome,
+                double dome_sun_zenith_rad)
       : SunState(sun), dome_(std::move(dome)), dome_sun_zenith_rad_(dome_sun_zenith_rad) {}
   const HaberDome& dome() const { return *dome_; }
   double dome_sun_zenith_rad() const { return dome_sun_zenith_rad_; }
@@ -40,7 +41,8 @@ class HaberSunState final : public SunState {
 
 class HaberModel final : public SkyModel {
  public:
-  static std::shared_ptr<const HaberModel> create(const ModelConfig& config, const PrecomputeContext& context = {});
+  static std::shared_ptr<const HaberModel> create(const ModelConfig& config,
+                                                  const PrecomputeContext& context = {});
 
   const ModelDescriptor& descriptor() const override { return kDescriptor; }
   std::size_t table_bytes() const override;
@@ -48,9 +50,10 @@ class HaberModel final : public SkyModel {
   SunStateCacheStats cache_stats() const { return cache_->stats(); }
 
  protected:
-  std::shared_ptr<const SunState> compute_sun_state(const SunPosition& sun,
-                                                    const PrecomputeContext& context) const override;
-  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint, std::span<const ViewDirection> views,
+  std::shared_ptr<const SunState> compute_sun_state(
+      const SunPosition& sun, const PrecomputeContext& context) const override;
+  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
+                            std::span<const ViewDirection> views,
                             SpectralBatch& out) const override;
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
 

@@ -17,7 +17,8 @@ LayeredAtmosphere::LayeredAtmosphere(double earth_radius_m, double top_height_m,
       rayleigh_scale_height_m_(rayleigh_scale_height_m),
       mass_step_((1.0 - std::exp(-top_height_m / rayleigh_scale_height_m)) / layer_count) {
   boundary_radius_m_.resize(static_cast<std::size_t>(layer_count) + 1);
-  for (int i = 0; i <= layer_count; ++i) boundary_radius_m_[i] = earth_radius_m + boundary_height_m(i);
+  for (int i = 0; i <= layer_count; ++i)
+    boundary_radius_m_[i] = earth_radius_m + boundary_height_m(i);
   for (int i = 0; i < layer_count; ++i) {
     const double middle = 0.5 * (boundary_height_m(i) + boundary_height_m(i + 1));
     rayleigh_density_.push_back(std::exp(-middle / rayleigh_scale_height_m));
@@ -31,7 +32,8 @@ double LayeredAtmosphere::boundary_height_m(int i) const {
 
 int LayeredAtmosphere::layer_index(double radius_m) const {
   const double height = radius_m - earth_radius_m_;
-  const double index = std::floor((1.0 - std::exp(-height / rayleigh_scale_height_m_)) / mass_step_);
+  const double index =
+      std::floor((1.0 - std::exp(-height / rayleigh_scale_height_m_)) / mass_step_);
   return static_cast<int>(std::clamp(index, 0.0, static_cast<double>(layer_count_ - 1)));
 }
 

@@ -14,14 +14,14 @@
 
 namespace clearsky::haber {
 
-HaberGrid::HaberGrid(const HaberSettings& settings, double earth_radius_m, double rayleigh_scale_height_m,
-                     double mie_scale_height_m)
+HaberGrid::HaberGrid(const HaberSettings& settings, double earth_radius_m,
+                     double rayleigh_scale_height_m, double mie_scale_height_m)
     : settings_(settings),
       layers_(earth_radius_m, settings.top_height_m, settings.layer_count, rayleigh_scale_height_m,
               mie_scale_height_m),
       angular_step_rad_(2.0 * kPi / settings.azimuth_sectors) {
-  if (settings.azimuth_sectors < 8 || settings.azimuth_sectors % 2 != 0 || settings.shell_stride < 1 ||
-      settings.layer_count < 1 || settings.scattering_orders < 1) {
+  if (settings.azimuth_sectors < 8 || settings.azimuth_sectors % 2 != 0 ||
+      settings.shell_stride < 1 || settings.layer_count < 1 || settings.scattering_orders < 1) {
     throw std::invalid_argument("haber: invalid grid settings");
   }
   const double n_phi = settings.azimuth_sectors;
@@ -30,10 +30,11 @@ HaberGrid::HaberGrid(const HaberSettings& settings, double earth_radius_m, doubl
   const double top = settings.top_height_m;
   // Distance from the viewer to the top of the layers seen at the horizon.
   const double max_shell = std::sqrt(top * top + 2.0 * earth_radius_m * top);
-  shell_count_ = static_cast<int>(std::ceil(std::log(max_shell / settings.min_shell_radius_m) / std::log(ratio)));
+  shell_count_ = static_cast<int>(
+      std::ceil(std::log(max_shell / settings.min_shell_radius_m) / std::log(ratio)));
   // Rings down to the zenith angle of that farthest point (just below the horizon).
-  ring_count_ = static_cast<int>(
-      std::ceil((0.5 * kPi + 2.0 * std::asin(max_shell / (2.0 * earth_radius_m))) / angular_step_rad_));
+  ring_count_ = static_cast<int>(std::ceil(
+      (0.5 * kPi + 2.0 * std::asin(max_shell / (2.0 * earth_radius_m))) / angular_step_rad_));
   const double sector_solid_fraction = 2.0 * kPi / n_phi;
   const double top_radius = earth_radius_m + top;
   for (int i = 0; i < ring_count_; ++i) {
@@ -45,14 +46,16 @@ HaberGrid::HaberGrid(const HaberSettings& settings, double earth_radius_m, doubl
       const double r_min = settings.min_shell_radius_m * std::pow(ratio, k);
       const double r_max = settings.min_shell_radius_m * std::pow(ratio, k + 1);
       const double r = 0.5 * (r_min + r_max);
-      const double centre_radius = length(Vec3{r * std::sin(theta), 0.0, earth_radius_m + r * std::cos(theta)});
+      const double centre_radius =
+          length(Vec3{r * std::sin(theta), 0.0, earth_radius_m + r * std::cos(theta)});
       if (centre_radius <= earth_radius_m) continue;
       if (centre_radius >= top_radius) break;
       RingCell cell;
       cell.ring = i;
       cell.shell = k;
       cell.radius_m = r;
-      cell.volume_m3 = (r_max * r_max * r_max - r_min * r_min * r_min) / 3.0 * sector_solid_fraction * (cos_min - cos_max);
+      cell.volume_m3 = (r_max * r_max * r_max - r_min * r_min * r_min) / 3.0 *
+                       sector_solid_fraction * (cos_min - cos_max);
       cell.radial_width_m = r_max - r_min;
       cell.layer = layers_.layer_index(centre_radius);
       ring_cells_.push_back(cell);
@@ -81,10 +84,12 @@ HaberGrid::HaberGrid(const HaberSettings& settings, double earth_radius_m, doubl
 Vec3 HaberGrid::centre(const RingCell& cell, double phi_rad) const {
   const double theta = (cell.ring + 0.5) * angular_step_rad_;
   const double s = cell.radius_m * std::sin(theta);
-  return {s * std::cos(phi_rad), s * std::sin(phi_rad), layers_.earth_radius_m() + cell.radius_m * std::cos(theta)};
+  return {s * std::cos(phi_rad), s * std::sin(phi_rad),
+          layers_.earth_radius_m() + cell.radius_m * std::cos(theta)};
 }
 
-void HaberDome::radiance(double view_zenith_rad, double view_sun_azimuth_rad, std::span<double> out) const {
+void HaberDome::radiance(double view_zenith_rad, double view_sun_azimuth_rad,
+                         std::span<double> out) const {
   // Texel centres at (i + 0.5) step: clamped bilinear interpolation.
   const double u = view_zenith_rad / step_ - 0.5;
   const double v = view_sun_azimuth_rad / step_ - 0.5;
@@ -92,12 +97,15 @@ void HaberDome::radiance(double view_zenith_rad, double view_sun_azimuth_rad, st
   const double fj = std::floor(v);
   const double a = u - fi;
   const double b = v - fj;
-  const auto clamp_index = [](double x, int n) { return static_cast<int>(std::clamp(x, 0.0, n - 1.0)); };
+  const auto clamp_index = [](double x, int n) {
+    return static_cast<int>(std::clamp(x, 0.0, n - 1.0));
+  };
   const int i0 = clamp_index(fi, rings_), i1 = clamp_index(fi + 1.0, rings_);
   const int j0 = clamp_index(fj, sectors_), j1 = clamp_index(fj + 1.0, sectors_);
   const auto l00 = node(i0, j0), l10 = node(i1, j0), l01 = node(i0, j1), l11 = node(i1, j1);
   for (std::size_t w = 0; w < out.size(); ++w) {
-    out[w] = (1 - a) * (1 - b) * l00[w] + a * (1 - b) * l10[w] + (1 - a) * b * l01[w] + a * b * l11[w];
+    out[w] =
+        (1 - a) * (1 - b) * l00[w] + a * (1 - b) * l10[w] + (1 - a) * b * l01[w] + a * b * l11[w];
   }
 }
 
@@ -113,10 +121,14 @@ struct CellSpectra {
 };
 
 // Transmittances exp(-(sigma_R l_R + sigma_M,ext l_M)) for the float arrays of the gathering.
-__attribute__((target_clones("avx2", "default"))) void transmittance(const float* sigma_rayleigh, const float* sigma_mie, float rayleigh_m, float mie_m,
-                   float weight, float* out, std::size_t n) {
+__attribute__((target_clones("avx2", "default"))) void transmittance(const float* sigma_rayleigh,
+                                                                     const float* sigma_mie,
+                                                                     float rayleigh_m, float mie_m,
+                                                                     float weight, float* out,
+                                                                     std::size_t n) {
   for (std::size_t w = 0; w < n; ++w) {
-    out[w] = weight * exp_nonpositive_float(-(sigma_rayleigh[w] * rayleigh_m + sigma_mie[w] * mie_m));
+    out[w] =
+        weight * exp_nonpositive_float(-(sigma_rayleigh[w] * rayleigh_m + sigma_mie[w] * mie_m));
   }
 }
 
@@ -160,7 +172,8 @@ __attribute__((target_clones("avx2", "default"))) void gather_isotropic(
         CLEARSKY_LOAD_CHUNK(x, source + static_cast<std::size_t>(jt + delta) * n_padded + w0);
         sum[0] += k * x;
       }
-      add_to(accumulator + static_cast<std::size_t>(jt) * n_padded + w0, (sum[0] + sum[1]) + (sum[2] + sum[3]));
+      add_to(accumulator + static_cast<std::size_t>(jt) * n_padded + w0,
+             (sum[0] + sum[1]) + (sum[2] + sum[3]));
     }
   }
 }
@@ -194,7 +207,8 @@ __attribute__((target_clones("avx2", "default"))) void gather_double(
         CLEARSKY_LOAD_CHUNK(sm, source_mie + offset);
         sum[delta & 3] += k * (si + phase[delta] * sm);
       }
-      add_to(accumulator + static_cast<std::size_t>(jt) * n_padded + w0, (sum[0] + sum[1]) + (sum[2] + sum[3]));
+      add_to(accumulator + static_cast<std::size_t>(jt) * n_padded + w0,
+             (sum[0] + sum[1]) + (sum[2] + sum[3]));
     }
   }
 }
@@ -208,8 +222,10 @@ int mirror(int j, int n_phi) {
 
 }  // namespace
 
-std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid, const AtmosphereSpectra& atmosphere,
-                                            double sun_zenith_rad, const PrecomputeContext& context) {
+std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid,
+                                            const AtmosphereSpectra& atmosphere,
+                                            double sun_zenith_rad,
+                                            const PrecomputeContext& context) {
   const std::size_t n = atmosphere.grid.size();
   const int n_phi = grid.settings().azimuth_sectors;
   if (n_phi > 256) throw std::invalid_argument("haber: at most 256 azimuth sectors");
@@ -229,7 +245,8 @@ std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid, const Atmosph
 
   // Single scattering: the power (W/nm) scattered in each cell, Rayleigh (isotropic, with
   // the orders >= 2 added later) and Mie (Cornette-Shanks) apart.
-  CellSpectra iso_power(cell_count, n), mie_power(cell_count, n), last(cell_count, n), current(cell_count, n);
+  CellSpectra iso_power(cell_count, n), mie_power(cell_count, n), last(cell_count, n),
+      current(cell_count, n);
   parallel_for(
       ring_cell_count,
       [&](std::size_t c) {
@@ -240,7 +257,8 @@ std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid, const Atmosph
           const OpticalLength l = optical_length(layers, p, exit_point(layers, p, sun));
           const std::size_t index = c * sectors + j;
           for (std::size_t w = 0; w < n; ++w) {
-            const double power = transmittance_of(l, w) * atmosphere.solar_irradiance_w_m2_nm[w] * cell.volume_m3;
+            const double power =
+                transmittance_of(l, w) * atmosphere.solar_irradiance_w_m2_nm[w] * cell.volume_m3;
             iso_power.at(index)[w] = power * sigma_r[w] * layers.rayleigh_density(cell.layer);
             mie_power.at(index)[w] = power * sigma_m[w] * layers.mie_density(cell.layer);
           }
@@ -269,7 +287,8 @@ std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid, const Atmosph
   // Centres of the active cells in all n_phi sectors.
   std::vector<Vec3> positions(n_active * n_phi);
   for (std::size_t s = 0; s < n_active; ++s) {
-    for (int j = 0; j < n_phi; ++j) positions[s * n_phi + j] = grid.centre(cells[active[s]], grid.sector_azimuth_rad(j));
+    for (int j = 0; j < n_phi; ++j)
+      positions[s * n_phi + j] = grid.centre(cells[active[s]], grid.sector_azimuth_rad(j));
   }
   // The optical length between target t in sector 0 and source s in sector delta is, by
   // rotation about the vertical, that between s in sector 0 and t in sector -delta: each
@@ -287,7 +306,8 @@ std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid, const Atmosph
               float rayleigh = -1.0f;
               float mie = 0.0f;
               if (!(s == t && delta == 0)) {
-                const OpticalLength l = optical_length(layers, positions[s * n_phi + delta], positions[t * n_phi]);
+                const OpticalLength l =
+                    optical_length(layers, positions[s * n_phi + delta], positions[t * n_phi]);
                 rayleigh = l.blocked ? -1.0f : static_cast<float>(l.rayleigh_m);
                 mie = static_cast<float>(l.mie_m);
               }
@@ -319,10 +339,11 @@ std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid, const Atmosph
             si[w] = static_cast<float>(iso_power.at(index)[w] * iso * to_radiance);
             sm[w] = static_cast<float>(mie_power.at(index)[w] * to_radiance);
           }
-          a_source[s * 2 * n_phi + js] =
-              static_cast<float>(dot(grid.centre(cell, grid.sector_azimuth_rad(mirror(js, n_phi))), sun));
+          a_source[s * 2 * n_phi + js] = static_cast<float>(
+              dot(grid.centre(cell, grid.sector_azimuth_rad(mirror(js, n_phi))), sun));
         } else {
-          for (std::size_t w = 0; w < n; ++w) si[w] = static_cast<float>(last.at(index)[w] * iso * to_radiance);
+          for (std::size_t w = 0; w < n; ++w)
+            si[w] = static_cast<float>(last.at(index)[w] * iso * to_radiance);
         }
       }
     }
@@ -338,7 +359,8 @@ std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid, const Atmosph
           std::vector<float> inverse_distance(n_phi);
           std::vector<float> a_target(sectors);
           for (int jt = 0; jt < sectors; ++jt) {
-            a_target[jt] = static_cast<float>(dot(grid.centre(target, grid.sector_azimuth_rad(jt)), sun));
+            a_target[jt] =
+                static_cast<float>(dot(grid.centre(target, grid.sector_azimuth_rad(jt)), sun));
           }
           for (std::size_t s = 0; s < n_active; ++s) {
             const RingCell& source = cells[active[s]];
@@ -347,7 +369,8 @@ std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid, const Atmosph
               const Vec3 p = positions[s * n_phi + delta];
               const Vec3 d = p - target0;
               const double distance2 = dot(d, d);
-              inverse_distance[delta] = distance2 > 0.0 ? static_cast<float>(1.0 / std::sqrt(distance2)) : 0.0f;
+              inverse_distance[delta] =
+                  distance2 > 0.0 ? static_cast<float>(1.0 / std::sqrt(distance2)) : 0.0f;
               float* k = kernel.data() + static_cast<std::size_t>(delta) * np;
               if (lengths[2 * delta] < 0.0f) {
                 std::fill(k, k + np, 0.0f);
@@ -355,19 +378,21 @@ std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid, const Atmosph
               }
               // Solid angle of the source cell seen from the target over 4 pi, as the study's
               // code computes it: (volume / radial width) / (4 pi distance^2).
-              const auto solid_angle_fraction =
-                  static_cast<float>(source.volume_m3 / (source.radial_width_m * 4.0 * kPi * distance2));
-              transmittance(sigma_r_f.data(), sigma_m_ext_f.data(), lengths[2 * delta], lengths[2 * delta + 1],
-                            solid_angle_fraction, k, np);
+              const auto solid_angle_fraction = static_cast<float>(
+                  source.volume_m3 / (source.radial_width_m * 4.0 * kPi * distance2));
+              transmittance(sigma_r_f.data(), sigma_m_ext_f.data(), lengths[2 * delta],
+                            lengths[2 * delta + 1], solid_angle_fraction, k, np);
             }
             std::fill(acc.begin(), acc.end(), 0.0f);
             if (second) {
               gather_double(kernel.data(), source_iso.data() + s * source_stride,
                             source_mie.data() + s * source_stride, a_source.data() + s * 2 * n_phi,
-                            a_target.data(), inverse_distance.data(), static_cast<float>(atmosphere.parameters.mie_phase_g),
-                            n_phi, np, acc.data());
+                            a_target.data(), inverse_distance.data(),
+                            static_cast<float>(atmosphere.parameters.mie_phase_g), n_phi, np,
+                            acc.data());
             } else {
-              gather_isotropic(kernel.data(), source_iso.data() + s * source_stride, n_phi, np, acc.data());
+              gather_isotropic(kernel.data(), source_iso.data() + s * source_stride, n_phi, np,
+                               acc.data());
             }
             for (int jt = 0; jt < sectors; ++jt) {
               for (std::size_t w = 0; w < n; ++w) total[jt * n + w] += acc[jt * np + w];
@@ -383,7 +408,8 @@ std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid, const Atmosph
             }
           }
           const std::size_t finished = ++done;
-          context.report(static_cast<double>(finished) / (n_active * (orders - 1)), "multiple scattering");
+          context.report(static_cast<double>(finished) / (n_active * (orders - 1)),
+                         "multiple scattering");
         },
         context.threads);
 
@@ -410,8 +436,14 @@ std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid, const Atmosph
       if (cell.shell % grid.settings().shell_stride == 0) continue;
       for (int j = 0; j < sectors; ++j) {
         double* out = current.at(c * sectors + j);
-        const double* lower = cell.lower_active >= 0 ? current.at(static_cast<std::size_t>(cell.lower_active) * sectors + j) : nullptr;
-        const double* upper = cell.upper_active >= 0 ? current.at(static_cast<std::size_t>(cell.upper_active) * sectors + j) : nullptr;
+        const double* lower =
+            cell.lower_active >= 0
+                ? current.at(static_cast<std::size_t>(cell.lower_active) * sectors + j)
+                : nullptr;
+        const double* upper =
+            cell.upper_active >= 0
+                ? current.at(static_cast<std::size_t>(cell.upper_active) * sectors + j)
+                : nullptr;
         for (std::size_t w = 0; w < n; ++w) {
           if (lower != nullptr && upper != nullptr) {
             out[w] = (1.0 - cell.upper_weight) * lower[w] + cell.upper_weight * upper[w];
@@ -446,8 +478,9 @@ std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid, const Atmosph
         const int j = static_cast<int>(x) % sectors;
         const double view_zenith = (i + 0.5) * grid.angular_step_rad();
         const double view_azimuth = grid.sector_azimuth_rad(j);
-        const double mu = clamp_cosine(std::cos(sun_zenith_rad) * std::cos(view_zenith) +
-                                       std::sin(sun_zenith_rad) * std::sin(view_zenith) * std::cos(view_azimuth));
+        const double mu =
+            clamp_cosine(std::cos(sun_zenith_rad) * std::cos(view_zenith) +
+                         std::sin(sun_zenith_rad) * std::sin(view_zenith) * std::cos(view_azimuth));
         const double mie_phase = cornette_shanks_phase(mu, g);
         double* out = dome.data() + x * n;
         for (int c = grid.ring_begin()[i]; c < grid.ring_begin()[i + 1]; ++c) {
@@ -456,14 +489,16 @@ std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid, const Atmosph
           const OpticalLength l = optical_length(layers, viewer, grid.centre(cell, view_azimuth));
           const double to_radiance = cell.radial_width_m / cell.volume_m3;
           for (std::size_t w = 0; w < n; ++w) {
-            out[w] += transmittance_of(l, w) * (iso_power.at(index)[w] * iso + mie_power.at(index)[w] * mie_phase) *
+            out[w] += transmittance_of(l, w) *
+                      (iso_power.at(index)[w] * iso + mie_power.at(index)[w] * mie_phase) *
                       to_radiance;
           }
         }
       },
       context.threads);
   context.report(1.0, "done");
-  return std::make_shared<const HaberDome>(rings, sectors, grid.angular_step_rad(), n, std::move(dome));
+  return std::make_shared<const HaberDome>(rings, sectors, grid.angular_step_rad(), n,
+                                           std::move(dome));
 }
 
 }  // namespace clearsky::haber

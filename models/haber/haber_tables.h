@@ -41,8 +41,8 @@ struct HaberSettings {
 struct RingCell {
   int ring = 0;
   int shell = 0;
-  double radius_m = 0;        // distance of the centre from the viewer
-  double volume_m3 = 0;       // of each of its n_phi cells
+  double radius_m = 0;   // distance of the centre from the viewer
+  double volume_m3 = 0;  // of each of its n_phi cells
   double radial_width_m = 0;
   int layer = 0;
   // For a shell that does not gather: the gathering ring cells below and above it on the
@@ -70,7 +70,9 @@ class HaberGrid {
   // First ring cell of each ring, and one past the last (ring_count() + 1 entries).
   const std::vector<int>& ring_begin() const { return ring_begin_; }
   // Total number of cells (ring cells x stored sectors).
-  std::size_t cell_count() const { return ring_cells_.size() * static_cast<std::size_t>(stored_sectors()); }
+  std::size_t cell_count() const {
+    return ring_cells_.size() * static_cast<std::size_t>(stored_sectors());
+  }
   // Centre of a ring cell at azimuth phi from the sun's vertical plane.
   Vec3 centre(const RingCell& cell, double phi_rad) const;
   // Azimuth of the centre of sector j (any integer; sectors beyond n_phi / 2 are mirrors).
@@ -93,13 +95,17 @@ class HaberDome {
  public:
   HaberDome(int rings, int sectors, double angular_step_rad, std::size_t wavelengths,
             std::vector<double> radiance)
-      : rings_(rings), sectors_(sectors), step_(angular_step_rad), wavelengths_(wavelengths),
+      : rings_(rings),
+        sectors_(sectors),
+        step_(angular_step_rad),
+        wavelengths_(wavelengths),
         radiance_(std::move(radiance)) {}
 
   // Bilinear between the centres, clamped at the edges; view_sun_azimuth in [0, pi].
   void radiance(double view_zenith_rad, double view_sun_azimuth_rad, std::span<double> out) const;
   std::span<const double> node(int ring, int sector) const {
-    return {radiance_.data() + (static_cast<std::size_t>(ring) * sectors_ + sector) * wavelengths_, wavelengths_};
+    return {radiance_.data() + (static_cast<std::size_t>(ring) * sectors_ + sector) * wavelengths_,
+            wavelengths_};
   }
   int rings() const { return rings_; }
   int sectors() const { return sectors_; }
@@ -114,7 +120,9 @@ class HaberDome {
 };
 
 // Runs the per-sun precomputation on all workers of `context` (cancellable, with progress).
-std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid, const AtmosphereSpectra& atmosphere,
-                                            double sun_zenith_rad, const PrecomputeContext& context);
+std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid,
+                                            const AtmosphereSpectra& atmosphere,
+                                            double sun_zenith_rad,
+                                            const PrecomputeContext& context);
 
 }  // namespace clearsky::haber

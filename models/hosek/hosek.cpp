@@ -1,5 +1,4 @@
 // Hosek-Wilkie: descriptor, per-sun state (cooked distributions) and the model queries.
-#include "models/core/fit_domain.h"
 #include "models/hosek/hosek.h"
 
 #include <algorithm>
@@ -8,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "models/core/fit_domain.h"
 #include "models/core/quadrature.h"
 #include "models/spectral/reference_spectra.h"
 
@@ -55,10 +55,12 @@ ModelDescriptor make_descriptor() {
           "1: cook the 11 fitted bands once each (albedo at the band's wavelength) and interpolate "
           "their radiances; 0: the study's one state per grid wavelength",
           0.0, 0.0, 1.0, true, false},
-      ParameterSpec{kClampNegativeFitOption, "",
-                    "1: where the fit turns negative (the sun within a few degrees of the horizon, views near "
-                    "the horizon) answer 0 there; 0: refuse those samples (status outside_fit_domain)",
-                    0.0, 0.0, 1.0, true, false},
+      ParameterSpec{
+          kClampNegativeFitOption, "",
+          "1: where the fit turns negative (the sun within a few degrees of the horizon, views "
+          "near "
+          "the horizon) answer 0 there; 0: refuse those samples (status outside_fit_domain)",
+          0.0, 0.0, 1.0, true, false},
   };
   ModelCapabilities& c = d.capabilities;
   c.min_altitude_m = 0.0;
@@ -132,7 +134,8 @@ std::shared_ptr<const SkyModel> HosekModel::create(const ModelConfig& config,
 
 HosekModel::HosekModel(const ModelConfig& config) : SkyModel(config) {
   native_bands_ = option_or_default(hosek_descriptor(), config, "native_bands") != 0.0;
-  clamp_negative_fit_ = option_or_default(hosek_descriptor(), config, kClampNegativeFitOption) != 0.0;
+  clamp_negative_fit_ =
+      option_or_default(hosek_descriptor(), config, kClampNegativeFitOption) != 0.0;
   const auto& tables = hosek::Tables::get();
   const auto& grass = ReferenceSpectra::get().grass_albedo;
   std::array<double, hosek::kBandCount> disc_solid_angle{};
@@ -214,7 +217,8 @@ void HosekModel::compute_sky_radiance(const SunState& sun, const Viewpoint&,
 }
 
 void HosekModel::radiance_to_integrate(const SunState& sun, const Viewpoint&,
-                                   std::span<const ViewDirection> views, SpectralBatch& out) const {
+                                       std::span<const ViewDirection> views,
+                                       SpectralBatch& out) const {
   fit_radiance(sun, true, views, out);
 }
 
@@ -324,6 +328,5 @@ Spectrum HosekModel::compute_sun_irradiance(const SunState& sun, const Viewpoint
   }
   return irradiance;
 }
-
 
 }  // namespace clearsky

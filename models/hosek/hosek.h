@@ -59,7 +59,8 @@ class HosekModel final : public SkyModel {
   // The sky irradiance integrates the fit clamped at zero (fit_domain.h), whatever
   // clamp_negative_fit.
   void radiance_to_integrate(const SunState& sun, const Viewpoint& viewpoint,
-                             std::span<const ViewDirection> views, SpectralBatch& out) const override;
+                             std::span<const ViewDirection> views,
+                             SpectralBatch& out) const override;
 
  private:
   explicit HosekModel(const ModelConfig& config);

@@ -31,7 +31,8 @@ ModelFactory nishita93_factory();
 
 class Nishita93Model final : public SkyModel {
  public:
-  static std::shared_ptr<const SkyModel> create(const ModelConfig& config, const PrecomputeContext& context);
+  static std::shared_ptr<const SkyModel> create(const ModelConfig& config,
+                                                const PrecomputeContext& context);
 
   const ModelDescriptor& descriptor() const override { return nishita93_descriptor(); }
   std::size_t table_bytes() const override { return tables_.memory_bytes(); }
@@ -39,12 +40,14 @@ class Nishita93Model final : public SkyModel {
   bool study_viewer_sample() const { return study_viewer_sample_; }
 
  protected:
-  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint, std::span<const ViewDirection> views,
+  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
+                            std::span<const ViewDirection> views,
                             SpectralBatch& out) const override;
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
   // The same integration as the sky radiance, stopped at distance_m.
   ScatteringAlongRay compute_aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
-                                                const ViewDirection& view, double distance_m) const override;
+                                                const ViewDirection& view,
+                                                double distance_m) const override;
 
  private:
   Nishita93Model(const ModelConfig& config, const PrecomputeContext& context);

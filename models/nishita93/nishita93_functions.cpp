@@ -17,8 +17,8 @@ namespace {
 // ray (r, mu), in increasing distance: start, the sphere crossings strictly inside, the
 // tangent point if the segment passes it without meeting the ground, and end.
 template <typename Emit>
-void for_each_sample(const Nishita93Tables& tables, double r, double mu, double start, double end, int start_sphere,
-                     int end_sphere, Emit&& emit) {
+void for_each_sample(const Nishita93Tables& tables, double r, double mu, double start, double end,
+                     int start_sphere, int end_sphere, Emit&& emit) {
   const std::vector<double>& radius = tables.sphere_radii_m();
   const int n = tables.sphere_count();
   emit(start, start_sphere);
@@ -30,13 +30,17 @@ void for_each_sample(const Nishita93Tables& tables, double r, double mu, double 
     return tangent + sign * safe_sqrt(rk * rk - c2);
   };
   int lowest = 0;  // lowest sphere the line crosses
-  while (lowest < n && radius[static_cast<std::size_t>(lowest)] * radius[static_cast<std::size_t>(lowest)] <= c2) {
+  while (lowest < n &&
+         radius[static_cast<std::size_t>(lowest)] * radius[static_cast<std::size_t>(lowest)] <=
+             c2) {
     ++lowest;
   }
   if (tangent > start) {
     // Going down: near crossings of the spheres below the start, highest first.
     const double r_start = radius_at_distance(r, mu, start);
-    int k = static_cast<int>(std::lower_bound(radius.begin(), radius.end(), r_start) - radius.begin()) - 1;
+    int k =
+        static_cast<int>(std::lower_bound(radius.begin(), radius.end(), r_start) - radius.begin()) -
+        1;
     for (; k >= lowest; --k) {
       const double d = crossing(k, -1.0);
       if (d >= end) break;
@@ -59,8 +63,8 @@ void for_each_sample(const Nishita93Tables& tables, double r, double mu, double 
 
 }  // namespace
 
-void sun_transmittance(const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere, double r_m, double mu_s,
-                       std::span<double> out) {
+void sun_transmittance(const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere,
+                       double r_m, double mu_s, std::span<double> out) {
   const auto lengths = tables.sun_optical_lengths(r_m, mu_s);
   if (!lengths) {
     std::fill(out.begin(), out.end(), 0.0);
@@ -69,14 +73,16 @@ void sun_transmittance(const Nishita93Tables& tables, const AtmosphereSpectra& a
   transmittance_into(atmosphere, *lengths, out.data());
 }
 
-bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray,
-                       double max_distance_m, std::span<double> radiance_out, std::span<double> transmittance_out,
+bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere,
+                       const RaySunGeometry& ray, double max_distance_m,
+                       std::span<double> radiance_out, std::span<double> transmittance_out,
                        const RayWorkspace& workspace, bool study_viewer_sample) {
   const auto& p = atmosphere.parameters;
   const std::size_t n_wavelengths = radiance_out.size();
   std::fill(radiance_out.begin(), radiance_out.end(), 0.0);
   std::fill(transmittance_out.begin(), transmittance_out.end(), 1.0);
-  const AtmosphereSegment segment = atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);
+  const AtmosphereSegment segment =
+      atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);
   const bool limited = max_distance_m < segment.end;
   const double end = std::min(segment.end, max_distance_m);
   if (!(end > segment.start)) return false;
@@ -113,15 +119,16 @@ bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& a
     const double half = first ? 0.0 : 0.5 * (d - previous_d);
     if (!first) {
       const double weight = pending_half_before + half;
-      add_scaled_pair(n_wavelengths, pending, weight * previous_rho_r, weight * previous_rho_m, rayleigh_integral,
-                      mie_integral);
+      add_scaled_pair(n_wavelengths, pending, weight * previous_rho_r, weight * previous_rho_m,
+                      rayleigh_integral, mie_integral);
     }
     view.rayleigh_m += half * (rho_r + previous_rho_r);
     view.mie_m += half * (rho_m + previous_rho_m);
     const auto sun = tables.sun_optical_lengths(radius, ray.mu_s_at(d, radius), sphere);
     if (sun && !(first && study_viewer_sample)) {
-      transmittance_from_lengths(n_wavelengths, beta_rayleigh, beta_mie_extinction, view.rayleigh_m + sun->rayleigh_m,
-                                 view.mie_m + sun->mie_m, pending);
+      transmittance_from_lengths(n_wavelengths, beta_rayleigh, beta_mie_extinction,
+                                 view.rayleigh_m + sun->rayleigh_m, view.mie_m + sun->mie_m,
+                                 pending);
     } else {
       std::fill_n(pending, n_wavelengths, 0.0);
     }
@@ -131,9 +138,10 @@ bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& a
     previous_rho_m = rho_m;
     first = false;
   };
-  for_each_sample(tables, ray.r_m, ray.mu, segment.start, end, start_sphere, end_sphere, add_sample);
-  add_scaled_pair(n_wavelengths, pending, pending_half_before * previous_rho_r, pending_half_before * previous_rho_m,
-                  rayleigh_integral, mie_integral);
+  for_each_sample(tables, ray.r_m, ray.mu, segment.start, end, start_sphere, end_sphere,
+                  add_sample);
+  add_scaled_pair(n_wavelengths, pending, pending_half_before * previous_rho_r,
+                  pending_half_before * previous_rho_m, rayleigh_integral, mie_integral);
 
   const double phase_rayleigh = rayleigh_phase(ray.nu);
   const double phase_mie = cornette_shanks_phase(ray.nu, p.mie_phase_g);
@@ -151,17 +159,20 @@ bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& a
 
 namespace clearsky::nishita93 {
 
-ScatteringAlongRay single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere,
-                                     const RaySunGeometry& ray, double max_distance_m, bool study_viewer_sample) {
+ScatteringAlongRay single_scattering(const Nishita93Tables& tables,
+                                     const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray,
+                                     double max_distance_m, bool study_viewer_sample) {
   const std::size_t n = atmosphere.rayleigh_scattering_per_m.size();
   std::vector<double> scratch(3 * n);
   const std::span<double> all(scratch);
   const RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n), all.subspan(2 * n, n)};
   ScatteringAlongRay result{Spectrum(n), Spectrum(n), 0.0, false};
-  result.hits_ground = single_scattering(tables, atmosphere, ray, max_distance_m, {result.radiance.data(), n},
-                                         {result.transmittance.data(), n}, workspace, study_viewer_sample);
+  result.hits_ground =
+      single_scattering(tables, atmosphere, ray, max_distance_m, {result.radiance.data(), n},
+                        {result.transmittance.data(), n}, workspace, study_viewer_sample);
   const auto& p = atmosphere.parameters;
-  const AtmosphereSegment segment = atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);
+  const AtmosphereSegment segment =
+      atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);
   result.length_m = std::max(0.0, std::min(segment.end, max_distance_m) - segment.start);
   return result;
 }

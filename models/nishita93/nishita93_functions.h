@@ -36,18 +36,19 @@ struct RayWorkspace {
 // into transmittance_out (both of the atmosphere's grid size; transmittance_out may be
 // empty). The segment ends at the ground, the top of the atmosphere, or max_distance_m.
 // Returns whether it ends on the ground.
-bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray,
-                       double max_distance_m, std::span<double> radiance_out, std::span<double> transmittance_out,
+bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere,
+                       const RaySunGeometry& ray, double max_distance_m,
+                       std::span<double> radiance_out, std::span<double> transmittance_out,
                        const RayWorkspace& workspace, bool study_viewer_sample = false);
 
 // Convenience form that allocates its results.
-ScatteringAlongRay single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere,
-                                     const RaySunGeometry& ray,
-                                     double max_distance_m = std::numeric_limits<double>::infinity(),
-                                     bool study_viewer_sample = false);
+ScatteringAlongRay single_scattering(
+    const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray,
+    double max_distance_m = std::numeric_limits<double>::infinity(),
+    bool study_viewer_sample = false);
 
 // Transmittance from a point to the sun through the tables (0 in the Earth's shadow).
-void sun_transmittance(const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere, double r_m, double mu_s,
-                       std::span<double> out);
+void sun_transmittance(const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere,
+                       double r_m, double mu_s, std::span<double> out);
 
 }  // namespace clearsky::nishita93

@@ -32,8 +32,8 @@ double half_chord(double r, double c) { return safe_sqrt((r - c) * (r + c)); }
 
 }  // namespace
 
-Nishita93Tables Nishita93Tables::build(const AtmosphereParameters& atmosphere, int spheres, int cylinders,
-                                       const PrecomputeContext& context) {
+Nishita93Tables Nishita93Tables::build(const AtmosphereParameters& atmosphere, int spheres,
+                                       int cylinders, const PrecomputeContext& context) {
   atmosphere.validate();
   if (spheres < 2 || cylinders < 2) throw std::invalid_argument("spheres, cylinders: must be >= 2");
   Nishita93Tables t;
@@ -53,7 +53,9 @@ Nishita93Tables Nishita93Tables::build(const AtmosphereParameters& atmosphere, i
   for (std::size_t i = 0; i < n_s; ++i) {
     const double x = static_cast<double>(i) / static_cast<double>(n_s - 1);
     // The end spheres exactly on the ground and the top, whatever the rounding of the log.
-    const double r = i == 0 ? r_ground : i + 1 == n_s ? r_top : r_ground - h_r * std::log1p(t.density_step_ * x);
+    const double r = i == 0         ? r_ground
+                     : i + 1 == n_s ? r_top
+                                    : r_ground - h_r * std::log1p(t.density_step_ * x);
     t.sphere_radius_m_[i] = r;
     t.sphere_rayleigh_density_[i] = std::exp(-(r - r_ground) / h_r);
     t.sphere_mie_density_[i] = std::exp(-(r - r_ground) / h_m);
@@ -71,7 +73,8 @@ Nishita93Tables Nishita93Tables::build(const AtmosphereParameters& atmosphere, i
         context.check_cancelled();
         const double r = radius[i];
         for (int j = 0; j < cylinders; ++j) {
-          const std::size_t cell = i * static_cast<std::size_t>(cylinders) + static_cast<std::size_t>(j);
+          const std::size_t cell =
+              i * static_cast<std::size_t>(cylinders) + static_cast<std::size_t>(j);
           const double cylinder = r_top * j / (cylinders - 1.0);
           // Sun along the axis: from the point up through the exits of the spheres above it.
           {
@@ -79,7 +82,8 @@ Nishita93Tables Nishita93Tables::build(const AtmosphereParameters& atmosphere, i
             const double start = half_chord(r, c);
             TrapezoidLengths path{0.0, t.sphere_rayleigh_density_[i], t.sphere_mie_density_[i], {}};
             for (std::size_t k = i + 1; k < n_s; ++k) {
-              path.add(half_chord(radius[k], c) - start, t.sphere_rayleigh_density_[k], t.sphere_mie_density_[k]);
+              path.add(half_chord(radius[k], c) - start, t.sphere_rayleigh_density_[k],
+                       t.sphere_mie_density_[k]);
             }
             t.along_rayleigh_m_[cell] = path.sum.rayleigh_m;
             t.along_mie_m_[cell] = path.sum.mie_m;
@@ -93,7 +97,8 @@ Nishita93Tables Nishita93Tables::build(const AtmosphereParameters& atmosphere, i
             std::size_t lowest = i;  // lowest sphere above the tangent point
             for (std::size_t k = i; k-- > 0;) {
               if (radius[k] <= c) break;
-              path.add(tangent - half_chord(radius[k], c), t.sphere_rayleigh_density_[k], t.sphere_mie_density_[k]);
+              path.add(tangent - half_chord(radius[k], c), t.sphere_rayleigh_density_[k],
+                       t.sphere_mie_density_[k]);
               lowest = k;
             }
             if (tangent > path.distance) {
@@ -102,7 +107,8 @@ Nishita93Tables Nishita93Tables::build(const AtmosphereParameters& atmosphere, i
             for (std::size_t k = lowest; k < n_s; ++k) {
               if (radius[k] <= c) continue;
               const double d = tangent + half_chord(radius[k], c);
-              if (d > path.distance) path.add(d, t.sphere_rayleigh_density_[k], t.sphere_mie_density_[k]);
+              if (d > path.distance)
+                path.add(d, t.sphere_rayleigh_density_[k], t.sphere_mie_density_[k]);
             }
             t.against_rayleigh_m_[cell] = path.sum.rayleigh_m;
             t.against_mie_m_[cell] = path.sum.mie_m;
@@ -125,7 +131,8 @@ double Nishita93Tables::lookup(const std::vector<double>& table, double u, doubl
          fu * ((1.0 - fv) * table[row1 + col] + fv * table[row1 + col + 1]);
 }
 
-std::optional<OpticalLengths> Nishita93Tables::sun_optical_lengths(double r_m, double mu_s, int sphere_index) const {
+std::optional<OpticalLengths> Nishita93Tables::sun_optical_lengths(double r_m, double mu_s,
+                                                                   int sphere_index) const {
   double r = std::max(r_m, bottom_radius_m_);
   if (r > top_radius_m_) {
     // Above the atmosphere: nothing in the way unless the ray to the sun crosses it; then the
@@ -139,12 +146,15 @@ std::optional<OpticalLengths> Nishita93Tables::sun_optical_lengths(double r_m, d
   }
   if (mu_s < 0.0 && ray_hits_ground(r, mu_s, bottom_radius_m_)) return std::nullopt;
   const double max_u = sphere_count_ - 1.0, max_v = cylinder_count_ - 1.0;
-  const double u = sphere_index >= 0
-                       ? static_cast<double>(sphere_index)
-                       : std::clamp(max_u * std::expm1(-(r - bottom_radius_m_) / rayleigh_scale_height_m_) / density_step_,
-                                    0.0, max_u);
+  const double u =
+      sphere_index >= 0
+          ? static_cast<double>(sphere_index)
+          : std::clamp(max_u * std::expm1(-(r - bottom_radius_m_) / rayleigh_scale_height_m_) /
+                           density_step_,
+                       0.0, max_u);
   const double v = std::clamp(max_v * r * safe_sqrt(1.0 - mu_s * mu_s) / top_radius_m_, 0.0, max_v);
-  if (mu_s >= 0.0) return OpticalLengths{lookup(along_rayleigh_m_, u, v), lookup(along_mie_m_, u, v)};
+  if (mu_s >= 0.0)
+    return OpticalLengths{lookup(along_rayleigh_m_, u, v), lookup(along_mie_m_, u, v)};
   return OpticalLengths{lookup(against_rayleigh_m_, u, v), lookup(against_mie_m_, u, v)};
 }
 
@@ -156,7 +166,8 @@ OpticalLengths Nishita93Tables::node(int i, int j, bool against_axis) const {
 }
 
 std::size_t Nishita93Tables::memory_bytes() const {
-  return sizeof(*this) + sizeof(double) * (3 * sphere_radius_m_.size() + 4 * along_rayleigh_m_.size());
+  return sizeof(*this) +
+         sizeof(double) * (3 * sphere_radius_m_.size() + 4 * along_rayleigh_m_.size());
 }
 
 }  // namespace clearsky

@@ -40,15 +40,20 @@ class Nishita93Tables {
   int cylinder_count() const { return cylinder_count_; }
   double sphere_radius_m(int i) const { return sphere_radius_m_[static_cast<std::size_t>(i)]; }
   const std::vector<double>& sphere_radii_m() const { return sphere_radius_m_; }
-  double sphere_rayleigh_density(int i) const { return sphere_rayleigh_density_[static_cast<std::size_t>(i)]; }
-  double sphere_mie_density(int i) const { return sphere_mie_density_[static_cast<std::size_t>(i)]; }
+  double sphere_rayleigh_density(int i) const {
+    return sphere_rayleigh_density_[static_cast<std::size_t>(i)];
+  }
+  double sphere_mie_density(int i) const {
+    return sphere_mie_density_[static_cast<std::size_t>(i)];
+  }
   double bottom_radius_m() const { return bottom_radius_m_; }
   double top_radius_m() const { return top_radius_m_; }
 
   // Optical lengths from a point at radius r_m (any radius >= the ground) to the sun, whose
   // zenith cosine there is mu_s; nothing when the Earth hides the sun. sphere_index >= 0 says
   // the point lies on that sphere (saves the density coordinate's exp).
-  std::optional<OpticalLengths> sun_optical_lengths(double r_m, double mu_s, int sphere_index = -1) const;
+  std::optional<OpticalLengths> sun_optical_lengths(double r_m, double mu_s,
+                                                    int sphere_index = -1) const;
 
   // Raw node values (tests): optical lengths stored at sphere i, cylinder j.
   OpticalLengths node(int i, int j, bool against_axis) const;

@@ -20,34 +20,51 @@ ModelDescriptor make_descriptor() {
   d.name = "Nishita96";
   d.version = "1";
   d.citation =
-      "T. Nishita, Y. Dobashi, K. Kaneda, H. Yamashita. Display Method of the Sky Color Taking into Account "
-      "Multiple Scattering. Pacific Graphics 1996, pages 117-132. As implemented in E. Bruneton, A Qualitative "
-      "and Quantitative Evaluation of 8 Clear Sky Models, IEEE TVCG 2016 (nearest-direction binning fixed).";
+      "T. Nishita, Y. Dobashi, K. Kaneda, H. Yamashita. Display Method of the Sky Color Taking "
+      "into Account "
+      "Multiple Scattering. Pacific Graphics 1996, pages 117-132. As implemented in E. Bruneton, A "
+      "Qualitative "
+      "and Quantitative Evaluation of 8 Clear Sky Models, IEEE TVCG 2016 (nearest-direction "
+      "binning fixed).";
   d.summary =
-      "Nishita93 single scattering plus double scattering: 8 sampling directions in the sun's vertical plane "
-      "(zenith, nadir, horizontals, sun, anti-sun, sun +-90 degrees), each with a per-sun 33^3 table of "
-      "single-scattered radiance (ground reflection included) on a box of +-875.7 km x +-875.7 km x 60 km "
-      "sheared along the direction, computed incrementally along it; phase functions integrated over 32 x 64 "
-      "directions binned to the nearest sampling direction; the paper's corrected double-scattering equation; "
+      "Nishita93 single scattering plus double scattering: 8 sampling directions in the sun's "
+      "vertical plane "
+      "(zenith, nadir, horizontals, sun, anti-sun, sun +-90 degrees), each with a per-sun 33^3 "
+      "table of "
+      "single-scattered radiance (ground reflection included) on a box of +-875.7 km x +-875.7 km "
+      "x 60 km "
+      "sheared along the direction, computed incrementally along it; phase functions integrated "
+      "over 32 x 64 "
+      "directions binned to the nearest sampling direction; the paper's corrected "
+      "double-scattering equation; "
       "orders >= 3 ignored. Views from inside the atmosphere, upwards.";
   d.parameters = {
-      ParameterSpec{"spheres", "", "Nishita93 spheres n_s (tables and view-ray samples)", 64, 4, 1024, true, false},
-      ParameterSpec{"cylinders", "", "Nishita93 sun-aligned cylinders n_c", 64, 4, 1024, true, false},
+      ParameterSpec{"spheres", "", "Nishita93 spheres n_s (tables and view-ray samples)", 64, 4,
+                    1024, true, false},
+      ParameterSpec{"cylinders", "", "Nishita93 sun-aligned cylinders n_c", 64, 4, 1024, true,
+                    false},
       ParameterSpec{"study_viewer_sample", "",
-                    "1: start each view ray's single-scattering trapezoid with 0 at the observer, as the study's code",
+                    "1: start each view ray's single-scattering trapezoid with 0 at the observer, "
+                    "as the study's code",
                     1, 0, 1, true, false},
-      ParameterSpec{"table_nodes", "", "nodes per axis of each sampling table (odd; 33 = the paper's 32^3 voxels)", 33,
+      ParameterSpec{"table_nodes", "",
+                    "nodes per axis of each sampling table (odd; 33 = the paper's 32^3 voxels)", 33,
                     5, 65, true, false},
-      ParameterSpec{"phase_theta_cells", "", "theta cells of the phase-function integration (2x as many in phi)", 32,
-                    4, 256, true, false},
-      ParameterSpec{"sun_zenith_bucket_deg", "deg", "per-sun tables are shared by suns within this zenith width (0: exact)",
-                    0.0, 0.0, 5.0, false, false},
-      ParameterSpec{"sun_state_cache_size", "", "per-sun table sets kept in memory (24 MB each at 33 nodes)", 8, 1, 256,
+      ParameterSpec{"phase_theta_cells", "",
+                    "theta cells of the phase-function integration (2x as many in phi)", 32, 4, 256,
                     true, false},
-      ParameterSpec{"alpha", "", "Angstrom exponent of the aerosol optical depth", 0.8, 0.0, 4.0, false, true},
-      ParameterSpec{"beta", "", "Angstrom turbidity (aerosol optical depth at 1 um)", 0.04, 0.0, 2.0, false, true},
-      ParameterSpec{"g", "", "Cornette-Shanks asymmetry of the aerosol phase function", 0.7, -0.999, 0.999, false,
-                    true},
+      ParameterSpec{"sun_zenith_bucket_deg", "deg",
+                    "per-sun tables are shared by suns within this zenith width (0: exact)", 0.0,
+                    0.0, 5.0, false, false},
+      ParameterSpec{"sun_state_cache_size", "",
+                    "per-sun table sets kept in memory (24 MB each at 33 nodes)", 8, 1, 256, true,
+                    false},
+      ParameterSpec{"alpha", "", "Angstrom exponent of the aerosol optical depth", 0.8, 0.0, 4.0,
+                    false, true},
+      ParameterSpec{"beta", "", "Angstrom turbidity (aerosol optical depth at 1 um)", 0.04, 0.0,
+                    2.0, false, true},
+      ParameterSpec{"g", "", "Cornette-Shanks asymmetry of the aerosol phase function", 0.7, -0.999,
+                    0.999, false, true},
   };
   ModelCapabilities& c = d.capabilities;
   c.min_altitude_m = 0.0;
@@ -83,9 +100,11 @@ const ModelDescriptor& nishita96_descriptor() {
 
 ModelFactory nishita96_factory() { return {&nishita96_descriptor(), &Nishita96Model::create}; }
 
-std::shared_ptr<const SkyModel> Nishita96Model::create(const ModelConfig& config, const PrecomputeContext& context) {
+std::shared_ptr<const SkyModel> Nishita96Model::create(const ModelConfig& config,
+                                                       const PrecomputeContext& context) {
   validate_config(nishita96_descriptor(), config);
-  if (integer_option(config, "table_nodes") % 2 == 0) throw std::invalid_argument("table_nodes: must be odd");
+  if (integer_option(config, "table_nodes") % 2 == 0)
+    throw std::invalid_argument("table_nodes: must be odd");
   return std::shared_ptr<const SkyModel>(new Nishita96Model(config, context));
 }
 
@@ -96,35 +115,40 @@ Nishita96Model::Nishita96Model(const ModelConfig& config, const PrecomputeContex
       study_viewer_sample_(integer_option(config, "study_viewer_sample") != 0),
       table_nodes_(integer_option(config, "table_nodes")),
       phase_theta_cells_(integer_option(config, "phase_theta_cells")),
-      bucket_width_rad_(degrees_to_radians(option_or_default(nishita96_descriptor(), config, "sun_zenith_bucket_deg"))),
+      bucket_width_rad_(degrees_to_radians(
+          option_or_default(nishita96_descriptor(), config, "sun_zenith_bucket_deg"))),
       cache_prefix_(cache_prefix(this->config())),
       cache_(std::make_unique<SunStateCache<nishita96::SunTables>>(
           static_cast<std::size_t>(integer_option(config, "sun_state_cache_size")))) {}
 
-std::shared_ptr<const SunState> Nishita96Model::compute_sun_state(const SunPosition& sun,
-                                                                  const PrecomputeContext& context) const {
+std::shared_ptr<const SunState> Nishita96Model::compute_sun_state(
+    const SunPosition& sun, const PrecomputeContext& context) const {
   const double zenith = sun_zenith_bucket_centre(sun.zenith_rad, bucket_width_rad_);
   std::ostringstream key;
   key.precision(17);
   key << cache_prefix_ << ";sun_zenith_rad=" << zenith;
   auto tables = cache_->get_or_build(key.str(), [&] {
-    return nishita96::build_sun_tables(optical_lengths_, atmosphere(), zenith, table_nodes_, phase_theta_cells_, context);
+    return nishita96::build_sun_tables(optical_lengths_, atmosphere(), zenith, table_nodes_,
+                                       phase_theta_cells_, context);
   });
   return std::make_shared<const Nishita96SunState>(sun, std::move(tables));
 }
 
 void Nishita96Model::radiance_orders(const Nishita96SunState& state, const Viewpoint& viewpoint,
-                                     const ViewDirection& view, Nishita96Orders orders, std::span<double> out) const {
+                                     const ViewDirection& view, Nishita96Orders orders,
+                                     std::span<double> out) const {
   const auto& a = atmosphere();
   const std::size_t n = a.grid.size();
   std::fill(out.begin(), out.end(), 0.0);
   if (orders != Nishita96Orders::double_only) {
     std::vector<double> scratch(3 * n);
     const std::span<double> all(scratch);
-    const nishita93::RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n), all.subspan(2 * n, n)};
-    nishita93::single_scattering(optical_lengths_, a,
-                                 RaySunGeometry::from(a.parameters.earth_radius_m, viewpoint, view, state.sun()),
-                                 std::numeric_limits<double>::infinity(), out, {}, workspace, study_viewer_sample_);
+    const nishita93::RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n),
+                                            all.subspan(2 * n, n)};
+    nishita93::single_scattering(
+        optical_lengths_, a,
+        RaySunGeometry::from(a.parameters.earth_radius_m, viewpoint, view, state.sun()),
+        std::numeric_limits<double>::infinity(), out, {}, workspace, study_viewer_sample_);
   }
   if (orders == Nishita96Orders::single_only) return;
 
@@ -132,8 +156,10 @@ void Nishita96Model::radiance_orders(const Nishita96SunState& state, const Viewp
   const auto& tables = state.tables();
   const double azimuth = view.azimuth_rad - state.sun().azimuth_rad;
   const double sin_zenith = std::sin(view.zenith_rad);
-  const Vec3 view_dir{std::cos(azimuth) * sin_zenith, std::sin(azimuth) * sin_zenith, std::cos(view.zenith_rad)};
-  const nishita96::PhaseIntegrals phase = tables.phase_bins().integrate(view_dir, a.parameters.mie_phase_g);
+  const Vec3 view_dir{std::cos(azimuth) * sin_zenith, std::sin(azimuth) * sin_zenith,
+                      std::cos(view.zenith_rad)};
+  const nishita96::PhaseIntegrals phase =
+      tables.phase_bins().integrate(view_dir, a.parameters.mie_phase_g);
   const double r = a.parameters.earth_radius_m + viewpoint.altitude_m;
   const double rmu = r * view_dir.z;
   const Vec3 viewer{0.0, 0.0, r};
@@ -153,8 +179,8 @@ void Nishita96Model::radiance_orders(const Nishita96SunState& state, const Viewp
     const double half = 0.5 * (distance - previous_distance);
     rayleigh_length += (rayleigh + previous_rayleigh) * half;
     mie_length += (mie + previous_mie) * half;
-    transmittance_from_lengths(n, a.rayleigh_scattering_per_m.data(), a.mie_extinction_per_m.data(), rayleigh_length,
-                               mie_length, transmittance.data());
+    transmittance_from_lengths(n, a.rayleigh_scattering_per_m.data(), a.mie_extinction_per_m.data(),
+                               rayleigh_length, mie_length, transmittance.data());
     const Vec3 p = viewer + distance * view_dir;
     std::fill(sample.begin(), sample.end(), 0.0);
     for (int k = 0; k < nishita96::kSamplingDirections; ++k) {
@@ -167,7 +193,8 @@ void Nishita96Model::radiance_orders(const Nishita96SunState& state, const Viewp
       }
     }
     // The study's rule: each sample weighs the whole segment before it.
-    for (std::size_t w = 0; w < n; ++w) accumulated[w] += transmittance[w] * sample[w] * (2.0 * half);
+    for (std::size_t w = 0; w < n; ++w)
+      accumulated[w] += transmittance[w] * sample[w] * (2.0 * half);
     previous_rayleigh = rayleigh;
     previous_mie = mie;
     previous_distance = distance;
@@ -176,16 +203,20 @@ void Nishita96Model::radiance_orders(const Nishita96SunState& state, const Viewp
 }
 
 void Nishita96Model::compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
-                                          std::span<const ViewDirection> views, SpectralBatch& out) const {
+                                          std::span<const ViewDirection> views,
+                                          SpectralBatch& out) const {
   const auto& state = dynamic_cast<const Nishita96SunState&>(sun);
   for (std::size_t i = 0; i < views.size(); ++i) {
-    radiance_orders(state, viewpoint, views[i], Nishita96Orders::single_and_double, out.spectrum(i));
+    radiance_orders(state, viewpoint, views[i], Nishita96Orders::single_and_double,
+                    out.spectrum(i));
   }
 }
 
-Spectrum Nishita96Model::compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const {
+Spectrum Nishita96Model::compute_sun_irradiance(const SunState& sun,
+                                                const Viewpoint& viewpoint) const {
   Spectrum t(wavelengths().size());
-  nishita93::sun_transmittance(optical_lengths_, atmosphere(), config().atmosphere.earth_radius_m + viewpoint.altitude_m,
+  nishita93::sun_transmittance(optical_lengths_, atmosphere(),
+                               config().atmosphere.earth_radius_m + viewpoint.altitude_m,
                                clamp_cosine(std::cos(sun.sun().zenith_rad)), {t.data(), t.size()});
   return t * atmosphere().solar_irradiance_w_m2_nm;
 }

@@ -52,7 +52,8 @@ enum class Nishita96Orders { single_and_double, single_only, double_only };
 
 class Nishita96Model final : public SkyModel {
  public:
-  static std::shared_ptr<const SkyModel> create(const ModelConfig& config, const PrecomputeContext& context);
+  static std::shared_ptr<const SkyModel> create(const ModelConfig& config,
+                                                const PrecomputeContext& context);
 
   const ModelDescriptor& descriptor() const override { return nishita96_descriptor(); }
   std::size_t table_bytes() const override { return optical_lengths_.memory_bytes(); }
@@ -61,13 +62,15 @@ class Nishita96Model final : public SkyModel {
 
   // Radiance of the chosen orders for ground-or-above views inside the atmosphere (the
   // checked query sky_radiance() returns single_and_double).
-  void radiance_orders(const Nishita96SunState& state, const Viewpoint& viewpoint, const ViewDirection& view,
-                       Nishita96Orders orders, std::span<double> out) const;
+  void radiance_orders(const Nishita96SunState& state, const Viewpoint& viewpoint,
+                       const ViewDirection& view, Nishita96Orders orders,
+                       std::span<double> out) const;
 
  protected:
-  std::shared_ptr<const SunState> compute_sun_state(const SunPosition& sun,
-                                                    const PrecomputeContext& context) const override;
-  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint, std::span<const ViewDirection> views,
+  std::shared_ptr<const SunState> compute_sun_state(
+      const SunPosition& sun, const PrecomputeContext& context) const override;
+  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
+                            std::span<const ViewDirection> views,
                             SpectralBatch& out) const override;
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
 

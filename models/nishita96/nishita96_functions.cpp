@@ -11,7 +11,13 @@ namespace clearsky::nishita96 {
 
 std::array<double, kSamplingDirections> sampling_angles_rad(double sun_zenith_rad) {
   const double half_pi = 0.5 * kPi;
-  return {0.0,          kPi, half_pi, -half_pi, sun_zenith_rad, sun_zenith_rad + kPi, sun_zenith_rad - half_pi,
+  return {0.0,
+          kPi,
+          half_pi,
+          -half_pi,
+          sun_zenith_rad,
+          sun_zenith_rad + kPi,
+          sun_zenith_rad - half_pi,
           sun_zenith_rad + half_pi};
 }
 
@@ -33,7 +39,8 @@ int nearest_direction(Vec3 w, const std::array<Vec3, kSamplingDirections>& sampl
 
 // Sum over a bin of dOmega (1 + mu^2) / (1 + g^2 - 2 g mu)^(3/2), mu = v . w.
 __attribute__((target_clones("avx2", "default"))) double cornette_shanks_sum(
-    const double* x, const double* y, const double* z, const double* solid_angle, int count, Vec3 view, double g) {
+    const double* x, const double* y, const double* z, const double* solid_angle, int count,
+    Vec3 view, double g) {
   const double g2 = g * g;
   double sum = 0.0;
   for (int i = 0; i < count; ++i) {
@@ -47,8 +54,9 @@ __attribute__((target_clones("avx2", "default"))) double cornette_shanks_sum(
 
 }  // namespace
 
-PhaseIntegrals binned_phase_integrals(Vec3 view, const std::array<Vec3, kSamplingDirections>& sampling_directions,
-                                      double mie_g, int theta_cells) {
+PhaseIntegrals binned_phase_integrals(
+    Vec3 view, const std::array<Vec3, kSamplingDirections>& sampling_directions, double mie_g,
+    int theta_cells) {
   PhaseIntegrals result;
   const double d_theta = kPi / theta_cells;
   const double d_phi = kPi / theta_cells;
@@ -69,7 +77,8 @@ PhaseIntegrals binned_phase_integrals(Vec3 view, const std::array<Vec3, kSamplin
   return result;
 }
 
-PhaseBins::PhaseBins(const std::array<Vec3, kSamplingDirections>& sampling_directions, int theta_cells) {
+PhaseBins::PhaseBins(const std::array<Vec3, kSamplingDirections>& sampling_directions,
+                     int theta_cells) {
   std::array<std::vector<Vec3>, kSamplingDirections> directions;
   std::array<std::vector<double>, kSamplingDirections> solid_angles;
   const double d_theta = kPi / theta_cells;
@@ -117,8 +126,9 @@ PhaseIntegrals PhaseBins::integrate(Vec3 v, double mie_g) const {
                              2.0 * (m[3] * v.x * v.y + m[4] * v.x * v.z + m[5] * v.y * v.z);
     result.rayleigh[k] = 3.0 / (16.0 * kPi) * (bin_solid_angle_[k] + quadratic);
     const int b = begin_[k];
-    result.mie[k] = cs_scale * cornette_shanks_sum(x_.data() + b, y_.data() + b, z_.data() + b, solid_angle_.data() + b,
-                                                   begin_[k + 1] - b, v, mie_g);
+    result.mie[k] =
+        cs_scale * cornette_shanks_sum(x_.data() + b, y_.data() + b, z_.data() + b,
+                                       solid_angle_.data() + b, begin_[k + 1] - b, v, mie_g);
   }
   return result;
 }

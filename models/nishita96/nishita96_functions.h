@@ -30,8 +30,9 @@ struct PhaseIntegrals {
   std::array<double, kSamplingDirections> rayleigh{};
   std::array<double, kSamplingDirections> mie{};
 };
-PhaseIntegrals binned_phase_integrals(Vec3 view, const std::array<Vec3, kSamplingDirections>& sampling_directions,
-                                      double mie_g, int theta_cells = 32);
+PhaseIntegrals binned_phase_integrals(
+    Vec3 view, const std::array<Vec3, kSamplingDirections>& sampling_directions, double mie_g,
+    int theta_cells = 32);
 
 // The same integrals with the binning done once per sun (it does not depend on the view):
 // each bin keeps its directions w and solid angles; the Rayleigh integral of a bin is then

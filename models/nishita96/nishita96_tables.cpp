@@ -13,8 +13,8 @@
 
 namespace clearsky::nishita96 {
 
-SamplingTable::SamplingTable(double angle_rad, double earth_radius_m, double top_radius_m, int nodes,
-                             std::size_t wavelengths)
+SamplingTable::SamplingTable(double angle_rad, double earth_radius_m, double top_radius_m,
+                             int nodes, std::size_t wavelengths)
     : angle_rad_(angle_rad),
       earth_radius_m_(earth_radius_m),
       top_radius_m_(top_radius_m),
@@ -27,7 +27,8 @@ SamplingTable::SamplingTable(double angle_rad, double earth_radius_m, double top
       stored_rows_(nodes / 2 + 1),
       wavelengths_(wavelengths),
       values_(static_cast<std::size_t>(nodes) * (nodes / 2 + 1) * nodes * wavelengths, 0.0f) {
-  if (nodes < 3 || nodes % 2 == 0) throw std::invalid_argument("nishita96: table nodes must be odd and >= 3");
+  if (nodes < 3 || nodes % 2 == 0)
+    throw std::invalid_argument("nishita96: table nodes must be odd and >= 3");
 }
 
 Vec3 SamplingTable::node_position(int i, int j, int k) const {
@@ -36,7 +37,8 @@ Vec3 SamplingTable::node_position(int i, int j, int k) const {
   const double along = axis_against_height_ ? 1.0 - w : w;
   const double thickness = top_radius_m_ - earth_radius_m_;
   if (horizontal_) {
-    return {(2.0 * along - 1.0) * half_width_m_, (2.0 * v - 1.0) * half_width_m_, earth_radius_m_ + u * thickness};
+    return {(2.0 * along - 1.0) * half_width_m_, (2.0 * v - 1.0) * half_width_m_,
+            earth_radius_m_ + u * thickness};
   }
   const double height = along * thickness;
   return {(2.0 * u - 1.0) * half_width_m_ + tan_angle_ * height, (2.0 * v - 1.0) * half_width_m_,
@@ -53,8 +55,9 @@ std::span<const float> SamplingTable::node(int i, int j, int k) const {
 namespace {
 
 // The weighted sum of the 8 corner spectra of a voxel, in single precision (the tables').
-__attribute__((target_clones("avx2", "default"))) void trilinear(const float* const* corners, const float* weights,
-                                                                 float* out, std::size_t n) {
+__attribute__((target_clones("avx2", "default"))) void trilinear(const float* const* corners,
+                                                                 const float* weights, float* out,
+                                                                 std::size_t n) {
   for (std::size_t l = 0; l < n; ++l) {
     out[l] = weights[0] * corners[0][l] + weights[1] * corners[1][l] + weights[2] * corners[2][l] +
              weights[3] * corners[3][l] + weights[4] * corners[4][l] + weights[5] * corners[5][l] +
@@ -97,7 +100,8 @@ void SamplingTable::lookup(Vec3 p, std::span<float> out) const {
   for (int di = 0; di < 2; ++di) {
     for (int dj = 0; dj < 2; ++dj) {
       for (int dk = 0; dk < 2; ++dk, ++c) {
-        weights[c] = static_cast<float>((di ? fu : 1.0 - fu) * (dj ? fv : 1.0 - fv) * (dk ? fw : 1.0 - fw));
+        weights[c] =
+            static_cast<float>((di ? fu : 1.0 - fu) * (dj ? fv : 1.0 - fv) * (dk ? fw : 1.0 - fw));
         corners[c] = values_.data() + index(i0 + di, std::max(jj0 + dj, 0), k0 + dk);
       }
     }
@@ -109,13 +113,15 @@ namespace {
 
 std::array<Vec3, kSamplingDirections> directions_of(const std::vector<SamplingTable>& tables) {
   std::array<Vec3, kSamplingDirections> d;
-  for (int k = 0; k < kSamplingDirections; ++k) d[k] = direction_of_angle(tables[static_cast<std::size_t>(k)].angle_rad());
+  for (int k = 0; k < kSamplingDirections; ++k)
+    d[k] = direction_of_angle(tables[static_cast<std::size_t>(k)].angle_rad());
   return d;
 }
 
 }  // namespace
 
-SunTables::SunTables(double sun_zenith_rad, std::vector<SamplingTable> tables, int phase_theta_cells)
+SunTables::SunTables(double sun_zenith_rad, std::vector<SamplingTable> tables,
+                     int phase_theta_cells)
     : sun_zenith_rad_(sun_zenith_rad),
       tables_(std::move(tables)),
       directions_(directions_of(tables_)),
@@ -153,7 +159,8 @@ struct ColumnContext {
 
 void sun_transmittance_at(const ColumnContext& c, Vec3 p, std::span<double> out) {
   const double r = length(p);
-  nishita93::sun_transmittance(c.optical_lengths, c.atmosphere, r, clamp_cosine(dot(p, c.sun) / r), out);
+  nishita93::sun_transmittance(c.optical_lengths, c.atmosphere, r, clamp_cosine(dot(p, c.sun) / r),
+                               out);
 }
 
 // One column of a table: nodes k = 0 .. nodes - 1 along the axis, from p0 in direction d
@@ -186,13 +193,14 @@ void build_column(const ColumnContext& c, SamplingTable& table, int i, int j) {
   const double start_height = length(start) - earth;
   double previous_rayleigh = std::exp(-start_height / hr);
   double previous_mie = std::exp(-start_height / hm);
-  std::vector<double> previous_sun(n), sun_t(n), segment(n), rayleigh_integral(n, 0.0), mie_integral(n, 0.0),
-      background(n, 0.0);
+  std::vector<double> previous_sun(n), sun_t(n), segment(n), rayleigh_integral(n, 0.0),
+      mie_integral(n, 0.0), background(n, 0.0);
   sun_transmittance_at(c, start, previous_sun);
   // A ray that starts on the ground sees it: sunlit Lambertian ground, albedo / pi.
   if (start_height < c.ground_albedo_height_m) {
     const double cos_sun = std::max(0.0, dot(normalize(start), c.sun));
-    for (std::size_t w = 0; w < n; ++w) background[w] = previous_sun[w] * a.ground_albedo[w] / kPi * cos_sun;
+    for (std::size_t w = 0; w < n; ++w)
+      background[w] = previous_sun[w] * a.ground_albedo[w] / kPi * cos_sun;
   }
   const double nu = dot(-1.0 * d, c.sun);
   const double rayleigh_phase_value = rayleigh_phase(nu);
@@ -206,19 +214,23 @@ void build_column(const ColumnContext& c, SamplingTable& table, int i, int j) {
     const double mie = std::exp(-height / hm);
     const double half = 0.5 * (k == start_k ? k * step - start_t : step);
     transmittance_from_lengths(n, a.rayleigh_scattering_per_m.data(), a.mie_extinction_per_m.data(),
-                               (rayleigh + previous_rayleigh) * half, (mie + previous_mie) * half, segment.data());
+                               (rayleigh + previous_rayleigh) * half, (mie + previous_mie) * half,
+                               segment.data());
     sun_transmittance_at(c, pk, sun_t);
     for (std::size_t w = 0; w < n; ++w) {
-      rayleigh_integral[w] = (sun_t[w] * rayleigh + previous_sun[w] * segment[w] * previous_rayleigh) * half +
-                             segment[w] * rayleigh_integral[w];
-      mie_integral[w] = (sun_t[w] * mie + previous_sun[w] * segment[w] * previous_mie) * half + segment[w] * mie_integral[w];
+      rayleigh_integral[w] =
+          (sun_t[w] * rayleigh + previous_sun[w] * segment[w] * previous_rayleigh) * half +
+          segment[w] * rayleigh_integral[w];
+      mie_integral[w] = (sun_t[w] * mie + previous_sun[w] * segment[w] * previous_mie) * half +
+                        segment[w] * mie_integral[w];
       background[w] *= segment[w];
     }
     if (k >= 0) {
       auto out = table.node(i, j, k);
       for (std::size_t w = 0; w < n; ++w) {
-        out[w] = static_cast<float>(rayleigh_integral[w] * a.rayleigh_scattering_per_m[w] * rayleigh_phase_value +
-                                    mie_integral[w] * a.mie_scattering_per_m[w] * mie_phase_value + background[w]);
+        out[w] = static_cast<float>(
+            rayleigh_integral[w] * a.rayleigh_scattering_per_m[w] * rayleigh_phase_value +
+            mie_integral[w] * a.mie_scattering_per_m[w] * mie_phase_value + background[w]);
       }
     }
     previous_rayleigh = rayleigh;
@@ -230,17 +242,19 @@ void build_column(const ColumnContext& c, SamplingTable& table, int i, int j) {
 }  // namespace
 
 std::shared_ptr<const SunTables> build_sun_tables(const Nishita93Tables& optical_lengths,
-                                                  const AtmosphereSpectra& atmosphere, double sun_zenith_rad,
-                                                  int nodes, int phase_theta_cells,
+                                                  const AtmosphereSpectra& atmosphere,
+                                                  double sun_zenith_rad, int nodes,
+                                                  int phase_theta_cells,
                                                   const PrecomputeContext& context) {
   const auto angles = sampling_angles_rad(sun_zenith_rad);
   std::vector<SamplingTable> tables;
   for (double a : angles) {
-    tables.emplace_back(a, atmosphere.parameters.earth_radius_m, atmosphere.parameters.top_radius_m, nodes,
-                        atmosphere.grid.size());
+    tables.emplace_back(a, atmosphere.parameters.earth_radius_m, atmosphere.parameters.top_radius_m,
+                        nodes, atmosphere.grid.size());
   }
-  const ColumnContext c{optical_lengths, atmosphere, direction_of_angle(sun_zenith_rad),
-                        0.5 * (atmosphere.parameters.top_radius_m - atmosphere.parameters.earth_radius_m)};
+  const ColumnContext c{
+      optical_lengths, atmosphere, direction_of_angle(sun_zenith_rad),
+      0.5 * (atmosphere.parameters.top_radius_m - atmosphere.parameters.earth_radius_m)};
   const int rows = nodes / 2 + 1;
   const std::size_t columns_per_table = static_cast<std::size_t>(nodes) * rows;
   parallel_for(

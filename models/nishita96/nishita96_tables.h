@@ -35,7 +35,8 @@ namespace clearsky::nishita96 {
 
 class SamplingTable {
  public:
-  SamplingTable(double angle_rad, double earth_radius_m, double top_radius_m, int nodes, std::size_t wavelengths);
+  SamplingTable(double angle_rad, double earth_radius_m, double top_radius_m, int nodes,
+                std::size_t wavelengths);
 
   double angle_rad() const { return angle_rad_; }
   int nodes() const { return nodes_; }
@@ -86,8 +87,9 @@ class SunTables {
 
 // Builds the 8 tables on all workers of `context` (cancellable).
 std::shared_ptr<const SunTables> build_sun_tables(const Nishita93Tables& optical_lengths,
-                                                  const AtmosphereSpectra& atmosphere, double sun_zenith_rad,
-                                                  int nodes, int phase_theta_cells,
+                                                  const AtmosphereSpectra& atmosphere,
+                                                  double sun_zenith_rad, int nodes,
+                                                  int phase_theta_cells,
                                                   const PrecomputeContext& context);
 
 }  // namespace clearsky::nishita96

@@ -26,17 +26,20 @@ ModelFactory oneal_factory();
 
 class ONealModel final : public SkyModel {
  public:
-  static std::shared_ptr<const SkyModel> create(const ModelConfig& config, const PrecomputeContext& context);
+  static std::shared_ptr<const SkyModel> create(const ModelConfig& config,
+                                                const PrecomputeContext& context);
 
   const ModelDescriptor& descriptor() const override { return oneal_descriptor(); }
   int samples() const { return samples_; }
 
  protected:
-  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint, std::span<const ViewDirection> views,
+  void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
+                            std::span<const ViewDirection> views,
                             SpectralBatch& out) const override;
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
   ScatteringAlongRay compute_aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
-                                                const ViewDirection& view, double distance_m) const override;
+                                                const ViewDirection& view,
+                                                double distance_m) const override;
 
  private:
   explicit ONealModel(const ModelConfig& config);

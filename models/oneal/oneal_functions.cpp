@@ -24,7 +24,8 @@ double length_to_infinity(double r, double mu, double h, double bottom) {
   const double rho = std::exp(-(r - bottom) / h);
   if (mu >= 0.0) return rho * scale_m(h, bottom, mu);
   const double tangent_radius = r * safe_sqrt(1.0 - mu * mu);
-  return 2.0 * std::exp(-(tangent_radius - bottom) / h) * scale_m(h, bottom, 0.0) - rho * scale_m(h, bottom, -mu);
+  return 2.0 * std::exp(-(tangent_radius - bottom) / h) * scale_m(h, bottom, 0.0) -
+         rho * scale_m(h, bottom, -mu);
 }
 
 OpticalLengths lengths_to_infinity(const AtmosphereParameters& p, double r, double mu) {
@@ -35,11 +36,15 @@ OpticalLengths lengths_to_infinity(const AtmosphereParameters& p, double r, doub
 // Optical lengths between two points of the view, from the observer-side one (a) to b, as
 // differences of lengths to infinity: along the view when it escapes, along the reversed
 // view (upward from b through a) when it meets the ground.
-OpticalLengths lengths_between(const AtmosphereParameters& p, const Point& a, const Point& b, bool view_hits_ground) {
-  const OpticalLengths la = view_hits_ground ? lengths_to_infinity(p, a.radius, -a.mu) : lengths_to_infinity(p, a.radius, a.mu);
-  const OpticalLengths lb = view_hits_ground ? lengths_to_infinity(p, b.radius, -b.mu) : lengths_to_infinity(p, b.radius, b.mu);
+OpticalLengths lengths_between(const AtmosphereParameters& p, const Point& a, const Point& b,
+                               bool view_hits_ground) {
+  const OpticalLengths la = view_hits_ground ? lengths_to_infinity(p, a.radius, -a.mu)
+                                             : lengths_to_infinity(p, a.radius, a.mu);
+  const OpticalLengths lb = view_hits_ground ? lengths_to_infinity(p, b.radius, -b.mu)
+                                             : lengths_to_infinity(p, b.radius, b.mu);
   const double sign = view_hits_ground ? -1.0 : 1.0;
-  return {std::max(0.0, sign * (la.rayleigh_m - lb.rayleigh_m)), std::max(0.0, sign * (la.mie_m - lb.mie_m))};
+  return {std::max(0.0, sign * (la.rayleigh_m - lb.rayleigh_m)),
+          std::max(0.0, sign * (la.mie_m - lb.mie_m))};
 }
 
 }  // namespace
@@ -49,27 +54,29 @@ double scale_m(double scale_height_m, double bottom_radius_m, double mu) {
   return scale_height_m * c / (c * std::max(mu, 0.0) + 1.0);
 }
 
-std::optional<OpticalLengths> optical_lengths_to_infinity(const AtmosphereParameters& atmosphere, double r_m,
-                                                          double mu) {
+std::optional<OpticalLengths> optical_lengths_to_infinity(const AtmosphereParameters& atmosphere,
+                                                          double r_m, double mu) {
   if (ray_hits_ground(r_m, mu, atmosphere.earth_radius_m)) return std::nullopt;
   return lengths_to_infinity(atmosphere, std::max(r_m, atmosphere.earth_radius_m), mu);
 }
 
 bool single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray, int samples,
-                       double max_distance_m, std::span<double> radiance_out, std::span<double> transmittance_out,
-                       const RayWorkspace& workspace) {
+                       double max_distance_m, std::span<double> radiance_out,
+                       std::span<double> transmittance_out, const RayWorkspace& workspace) {
   const auto& p = atmosphere.parameters;
   const std::size_t n_wavelengths = radiance_out.size();
   std::fill(radiance_out.begin(), radiance_out.end(), 0.0);
   std::fill(transmittance_out.begin(), transmittance_out.end(), 1.0);
-  const AtmosphereSegment segment = atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);
+  const AtmosphereSegment segment =
+      atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);
   const double end = std::min(segment.end, max_distance_m);
   if (!(end > segment.start) || samples < 1) return false;
   // Whether the whole line of the view meets the ground (then lengths go along the reversed ray).
   const bool line_hits_ground = segment.hits_ground;
 
   auto point_at = [&](double d) {
-    return Point{std::max(radius_at_distance(ray.r_m, ray.mu, d), p.earth_radius_m), mu_at_distance(ray.r_m, ray.mu, d)};
+    return Point{std::max(radius_at_distance(ray.r_m, ray.mu, d), p.earth_radius_m),
+                 mu_at_distance(ray.r_m, ray.mu, d)};
   };
   const Point start = point_at(segment.start);
   const double sample_length = (end - segment.start) / samples;
@@ -104,22 +111,25 @@ bool single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry
                                   beta_mie_scattering[w] * phase_mie * mie_integral[w]);
   }
   if (!transmittance_out.empty()) {
-    transmittance_into(atmosphere, lengths_between(p, start, point_at(end), line_hits_ground), transmittance_out.data());
+    transmittance_into(atmosphere, lengths_between(p, start, point_at(end), line_hits_ground),
+                       transmittance_out.data());
   }
   return segment.hits_ground && end >= segment.end;
 }
 
-ScatteringAlongRay single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray, int samples,
-                                     double max_distance_m) {
+ScatteringAlongRay single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray,
+                                     int samples, double max_distance_m) {
   const std::size_t n = atmosphere.rayleigh_scattering_per_m.size();
   std::vector<double> scratch(3 * n);
   const std::span<double> all(scratch);
   ScatteringAlongRay result{Spectrum(n), Spectrum(n), 0.0, false};
-  result.hits_ground = single_scattering(atmosphere, ray, samples, max_distance_m, {result.radiance.data(), n},
-                                         {result.transmittance.data(), n},
-                                         {all.subspan(0, n), all.subspan(n, n), all.subspan(2 * n, n)});
+  result.hits_ground =
+      single_scattering(atmosphere, ray, samples, max_distance_m, {result.radiance.data(), n},
+                        {result.transmittance.data(), n},
+                        {all.subspan(0, n), all.subspan(n, n), all.subspan(2 * n, n)});
   const auto& p = atmosphere.parameters;
-  const AtmosphereSegment segment = atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);
+  const AtmosphereSegment segment =
+      atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);
   result.length_m = std::max(0.0, std::min(segment.end, max_distance_m) - segment.start);
   return result;
 }

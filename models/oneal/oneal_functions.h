@@ -35,8 +35,8 @@ double scale_m(double scale_height_m, double bottom_radius_m, double mu);
 
 // Optical lengths from the point (r_m, mu) to infinity along the ray, by the approximation
 // above; nothing when the ray meets the ground.
-std::optional<OpticalLengths> optical_lengths_to_infinity(const AtmosphereParameters& atmosphere, double r_m,
-                                                          double mu);
+std::optional<OpticalLengths> optical_lengths_to_infinity(const AtmosphereParameters& atmosphere,
+                                                          double r_m, double mu);
 
 // Scratch space for one ray, each of the grid size.
 struct RayWorkspace {
@@ -48,10 +48,11 @@ struct RayWorkspace {
 // ends at the ground, the top of the atmosphere, or max_distance_m. Returns whether it ends
 // on the ground.
 bool single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray, int samples,
-                       double max_distance_m, std::span<double> radiance_out, std::span<double> transmittance_out,
-                       const RayWorkspace& workspace);
+                       double max_distance_m, std::span<double> radiance_out,
+                       std::span<double> transmittance_out, const RayWorkspace& workspace);
 
-ScatteringAlongRay single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray, int samples,
-                                     double max_distance_m = std::numeric_limits<double>::infinity());
+ScatteringAlongRay single_scattering(
+    const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray, int samples,
+    double max_distance_m = std::numeric_limits<double>::infinity());
 
 }  // namespace clearsky::oneal

@@ -37,10 +37,11 @@ ModelDescriptor make_descriptor() {
   d.parameters = {
       ParameterSpec{"turbidity", "", "atmospheric turbidity (the study: 2.53)", 2.53, 2.0, 10.0,
                     false, true},
-      ParameterSpec{kClampNegativeFitOption, "",
-                    "1: where the fitted spectrum turns negative (a low sun, views near the horizon towards "
-                    "it) answer 0 there; 0: refuse those samples (status outside_fit_domain)",
-                    0.0, 0.0, 1.0, true, false},
+      ParameterSpec{
+          kClampNegativeFitOption, "",
+          "1: where the fitted spectrum turns negative (a low sun, views near the horizon towards "
+          "it) answer 0 there; 0: refuse those samples (status outside_fit_domain)",
+          0.0, 0.0, 1.0, true, false},
   };
   ModelCapabilities& c = d.capabilities;
   c.min_altitude_m = 0.0;
@@ -129,7 +130,8 @@ std::shared_ptr<const SkyModel> PreethamModel::create(const ModelConfig& config,
 
 PreethamModel::PreethamModel(const ModelConfig& config)
     : SkyModel(config),
-      clamp_negative_fit_(option_or_default(preetham_descriptor(), config, kClampNegativeFitOption) != 0.0) {
+      clamp_negative_fit_(
+          option_or_default(preetham_descriptor(), config, kClampNegativeFitOption) != 0.0) {
   // The basis on the query grid, and its Y where the study integrates it: its 40 bins.
   const auto basis = [](const WavelengthGrid& grid) {
     const Spectrum s0 = daylight_relative_spectrum({0.0, 0.0}, grid);
@@ -159,8 +161,7 @@ PreethamModel::LuminanceChromaticity PreethamModel::luminance_chromaticity(
 }
 
 void PreethamModel::fit_radiance(const SunState& sun, bool clamp_negative,
-                                         std::span<const ViewDirection> views,
-                                         SpectralBatch& out) const {
+                                 std::span<const ViewDirection> views, SpectralBatch& out) const {
   const PreethamSunState& state = as_preetham_state(sun);
   const Vec3 sun_direction = state.sun().unit_vector();
   const std::size_t n = s0_.size();
@@ -187,10 +188,10 @@ void PreethamModel::compute_sky_radiance(const SunState& sun, const Viewpoint&,
 }
 
 void PreethamModel::radiance_to_integrate(const SunState& sun, const Viewpoint&,
-                                   std::span<const ViewDirection> views, SpectralBatch& out) const {
+                                          std::span<const ViewDirection> views,
+                                          SpectralBatch& out) const {
   fit_radiance(sun, true, views, out);
 }
-
 
 Spectrum PreethamModel::compute_sun_irradiance(const SunState& sun, const Viewpoint&) const {
   Spectrum irradiance = atmosphere().solar_irradiance_w_m2_nm;
@@ -200,6 +201,5 @@ Spectrum PreethamModel::compute_sun_irradiance(const SunState& sun, const Viewpo
   }
   return irradiance;
 }
-
 
 }  // namespace clearsky

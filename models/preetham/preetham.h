@@ -54,7 +54,8 @@ class PreethamModel final : public SkyModel {
   // The sky irradiance integrates the fit clamped at zero (fit_domain.h), whatever
   // clamp_negative_fit.
   void radiance_to_integrate(const SunState& sun, const Viewpoint& viewpoint,
-                             std::span<const ViewDirection> views, SpectralBatch& out) const override;
+                             std::span<const ViewDirection> views,
+                             SpectralBatch& out) const override;
 
  private:
   explicit PreethamModel(const ModelConfig& config);

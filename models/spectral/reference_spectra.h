@@ -7,12 +7,12 @@
 namespace clearsky {
 
 struct ReferenceSpectra {
-  TabulatedSpectrum cie_x_bar, cie_y_bar, cie_z_bar;   // CIE 1931 2-degree, 5 nm
+  TabulatedSpectrum cie_x_bar, cie_y_bar, cie_z_bar;        // CIE 1931 2-degree, 5 nm
   TabulatedSpectrum daylight_s0, daylight_s1, daylight_s2;  // CIE 15:2004 Table T.2
-  TabulatedSpectrum astm_g173_extraterrestrial;        // W/(m2.nm), 280..4000 nm
-  TabulatedSpectrum solar_irradiance_40_bins;          // W/(m2.nm), bin starts 360..818.25 nm
-  TabulatedSpectrum rayleigh_penndorf_0c_per_m;        // 1/m, sea level, 0 C
-  TabulatedSpectrum grass_albedo;                      // Feister and Grewe 1995
+  TabulatedSpectrum astm_g173_extraterrestrial;             // W/(m2.nm), 280..4000 nm
+  TabulatedSpectrum solar_irradiance_40_bins;               // W/(m2.nm), bin starts 360..818.25 nm
+  TabulatedSpectrum rayleigh_penndorf_0c_per_m;             // 1/m, sea level, 0 C
+  TabulatedSpectrum grass_albedo;                           // Feister and Grewe 1995
 
   static const ReferenceSpectra& get();
 };

@@ -30,10 +30,18 @@ class Spectrum {
   auto end() const { return v_.end(); }
   const std::vector<double>& values() const { return v_; }
 
-  Spectrum& operator+=(const Spectrum& o) { return apply(o, [](double a, double b) { return a + b; }); }
-  Spectrum& operator-=(const Spectrum& o) { return apply(o, [](double a, double b) { return a - b; }); }
-  Spectrum& operator*=(const Spectrum& o) { return apply(o, [](double a, double b) { return a * b; }); }
-  Spectrum& operator/=(const Spectrum& o) { return apply(o, [](double a, double b) { return a / b; }); }
+  Spectrum& operator+=(const Spectrum& o) {
+    return apply(o, [](double a, double b) { return a + b; });
+  }
+  Spectrum& operator-=(const Spectrum& o) {
+    return apply(o, [](double a, double b) { return a - b; });
+  }
+  Spectrum& operator*=(const Spectrum& o) {
+    return apply(o, [](double a, double b) { return a * b; });
+  }
+  Spectrum& operator/=(const Spectrum& o) {
+    return apply(o, [](double a, double b) { return a / b; });
+  }
   Spectrum& operator*=(double s) {
     for (double& x : v_) x *= s;
     return *this;

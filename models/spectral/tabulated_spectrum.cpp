@@ -13,7 +13,8 @@ namespace clearsky {
 TabulatedSpectrum::TabulatedSpectrum(std::vector<double> wavelengths_nm, std::vector<double> values)
     : nm_(std::move(wavelengths_nm)), v_(std::move(values)) {
   if (nm_.empty() || nm_.size() != v_.size()) {
-    throw std::invalid_argument("tabulated spectrum: wavelengths and values must be non-empty and of equal length");
+    throw std::invalid_argument(
+        "tabulated spectrum: wavelengths and values must be non-empty and of equal length");
   }
   for (std::size_t i = 0; i < nm_.size(); ++i) {
     if (!std::isfinite(nm_[i]) || !std::isfinite(v_[i])) {
@@ -30,8 +31,8 @@ namespace {
 void check_range(const TabulatedSpectrum& s, double lo, double hi) {
   if (lo < s.min_nm() - 1e-9 || hi > s.max_nm() + 1e-9) {
     std::ostringstream msg;
-    msg << "wavelength range [" << lo << ", " << hi << "] nm is outside the table's ["
-        << s.min_nm() << ", " << s.max_nm() << "] nm";
+    msg << "wavelength range [" << lo << ", " << hi << "] nm is outside the table's [" << s.min_nm()
+        << ", " << s.max_nm() << "] nm";
     throw std::out_of_range(msg.str());
   }
 }
@@ -42,14 +43,18 @@ double TabulatedSpectrum::at(double wavelength_nm, OutOfRange policy) const {
   if (!std::isfinite(wavelength_nm)) throw std::invalid_argument("wavelength is not finite");
   if (wavelength_nm < nm_.front() || wavelength_nm > nm_.back()) {
     switch (policy) {
-      case OutOfRange::zero: return 0.0;
-      case OutOfRange::hold_end_values: return wavelength_nm < nm_.front() ? v_.front() : v_.back();
-      case OutOfRange::error: check_range(*this, wavelength_nm, wavelength_nm);
+      case OutOfRange::zero:
+        return 0.0;
+      case OutOfRange::hold_end_values:
+        return wavelength_nm < nm_.front() ? v_.front() : v_.back();
+      case OutOfRange::error:
+        check_range(*this, wavelength_nm, wavelength_nm);
     }
   }
   if (nm_.size() == 1) return v_.front();
   const auto it = std::upper_bound(nm_.begin(), nm_.end(), wavelength_nm);
-  const std::size_t i1 = std::min<std::size_t>(static_cast<std::size_t>(it - nm_.begin()), nm_.size() - 1);
+  const std::size_t i1 =
+      std::min<std::size_t>(static_cast<std::size_t>(it - nm_.begin()), nm_.size() - 1);
   const std::size_t i0 = i1 - 1;
   const double t = (wavelength_nm - nm_[i0]) / (nm_[i1] - nm_[i0]);
   return v_[i0] + t * (v_[i1] - v_[i0]);
@@ -92,7 +97,8 @@ double TabulatedSpectrum::bin_average(double lo, double hi, OutOfRange policy) c
   return integral(lo, hi, policy) / (hi - lo);
 }
 
-Spectrum TabulatedSpectrum::resample(const WavelengthGrid& grid, Resampling how, OutOfRange policy) const {
+Spectrum TabulatedSpectrum::resample(const WavelengthGrid& grid, Resampling how,
+                                     OutOfRange policy) const {
   Spectrum out(grid.size());
   for (std::size_t i = 0; i < grid.size(); ++i) {
     out[i] = how == Resampling::point
@@ -132,9 +138,13 @@ std::vector<std::string_view> split_fields(std::string_view line) {
   std::vector<std::string_view> fields;
   std::size_t i = 0;
   while (i < line.size()) {
-    while (i < line.size() && (line[i] == ',' || line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    while (i < line.size() &&
+           (line[i] == ',' || line[i] == ' ' || line[i] == '\t' || line[i] == '\r'))
+      ++i;
     std::size_t j = i;
-    while (j < line.size() && line[j] != ',' && line[j] != ' ' && line[j] != '\t' && line[j] != '\r') ++j;
+    while (j < line.size() && line[j] != ',' && line[j] != ' ' && line[j] != '\t' &&
+           line[j] != '\r')
+      ++j;
     if (j > i) fields.push_back(line.substr(i, j - i));
     i = j;
   }
@@ -173,14 +183,16 @@ NumericTable read_numeric_table(std::istream& in, const std::string& source) {
         for (auto field : fields) table.columns.emplace_back(field);
         continue;
       }
-      throw std::runtime_error(source + ":" + std::to_string(line_number) + ": malformed row '" + line + "'");
+      throw std::runtime_error(source + ":" + std::to_string(line_number) + ": malformed row '" +
+                               line + "'");
     }
     const std::size_t expected = !table.columns.empty() ? table.columns.size()
                                  : table.rows.empty()   ? row.size()
                                                         : table.rows.front().size();
     if (row.size() != expected) {
       throw std::runtime_error(source + ":" + std::to_string(line_number) + ": expected " +
-                               std::to_string(expected) + " fields, found " + std::to_string(row.size()));
+                               std::to_string(expected) + " fields, found " +
+                               std::to_string(row.size()));
     }
     table.rows.push_back(std::move(row));
   }

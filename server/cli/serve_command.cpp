@@ -85,7 +85,8 @@ void run_server(const server::ServerConfig& config, const std::string& software_
     storage::Database db = storage::Database::open(config.db_path);
     const int interrupted = storage::EvaluationRunRepository(db).fail_unfinished(
         "interrupted: the server stopped during the run");
-    if (interrupted > 0) spdlog::warn("{} evaluation runs were interrupted; marked failed", interrupted);
+    if (interrupted > 0)
+      spdlog::warn("{} evaluation runs were interrupted; marked failed", interrupted);
     const int imports = api::fail_interrupted_imports(db);
     if (imports > 0) spdlog::warn("{} imports were interrupted; marked failed", imports);
   }
@@ -93,13 +94,14 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   const auto open_database = [db_path] { return storage::Database::open(db_path); };
   api::EvaluationPool evaluations(open_database, registered,
                                   {config.evaluation_workers, config.evaluation_queue, 1});
-  const server::WriteAuthorizer auth =
-      server::WriteAuthorizer::from_option_or_environment(config.token, std::getenv("CLEARSKY_TOKEN"));
+  const server::WriteAuthorizer auth = server::WriteAuthorizer::from_option_or_environment(
+      config.token, std::getenv("CLEARSKY_TOKEN"));
   if (!auth.writes_enabled())
     spdlog::warn("no token (--token or CLEARSKY_TOKEN): write endpoints are disabled");
   server::DataServices data;
   data.db_path = db_path;
-  data.upload_dir = (db_path.has_parent_path() ? db_path.parent_path() : std::filesystem::path(".")) / "uploads";
+  data.upload_dir =
+      (db_path.has_parent_path() ? db_path.parent_path() : std::filesystem::path(".")) / "uploads";
   if (const int stale = api::remove_stale_uploads(data.upload_dir); stale > 0)
     spdlog::info("removed {} upload files left by an earlier process", stale);
   data.upload_max_bytes = config.max_upload_bytes;
@@ -227,17 +229,15 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
       ->add_option("--prebuild-three", config->prebuild_three,
                    "Also build the 3-wavelength tables of rgb method=three at start")
       ->capture_default_str();
-  command
-      ->add_option("--token", config->token,
-                   "Bearer token of the write endpoints (default: CLEARSKY_TOKEN; none: writes "
-                   "disabled)");
+  command->add_option("--token", config->token,
+                      "Bearer token of the write endpoints (default: CLEARSKY_TOKEN; none: writes "
+                      "disabled)");
   command
       ->add_option("--evaluation-workers", config->evaluation_workers,
                    "Background evaluation threads")
       ->capture_default_str()
       ->check(CLI::Range(1u, 64u));
-  command
-      ->add_option("--import-workers", config->import_workers, "Background import threads")
+  command->add_option("--import-workers", config->import_workers, "Background import threads")
       ->capture_default_str()
       ->check(CLI::Range(1u, 16u));
   command

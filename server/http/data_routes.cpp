@@ -76,8 +76,7 @@ template <typename Action>
 void write(const DataServices& s, const httplib::Request& req, httplib::Response& res,
            Action&& action) {
   try {
-    s.auth->authorize(req.method, req.path, req.get_header_value("Authorization"),
-                      req.remote_addr);
+    s.auth->authorize(req.method, req.path, req.get_header_value("Authorization"), req.remote_addr);
   } catch (const api::ApiError& e) {
     if (e.status() != 401) throw;
     const api::ApiResponse r = api::error_response(e);
@@ -88,15 +87,15 @@ void write(const DataServices& s, const httplib::Request& req, httplib::Response
   }
   try {
     action();
-    audit_logger()->info("write done: {} {} from {} -> {}", req.method, req.path,
-                               req.remote_addr, res.status);
+    audit_logger()->info("write done: {} {} from {} -> {}", req.method, req.path, req.remote_addr,
+                         res.status);
   } catch (const api::ApiError& e) {
     audit_logger()->info("write failed: {} {} from {} -> {} {}", req.method, req.path,
-                               req.remote_addr, e.status(), e.code());
+                         req.remote_addr, e.status(), e.code());
     throw;
   } catch (...) {
     audit_logger()->info("write failed: {} {} from {} -> 500", req.method, req.path,
-                               req.remote_addr);
+                         req.remote_addr);
     throw;
   }
 }
@@ -126,13 +125,14 @@ void install_data_routes(httplib::Server& server, const DataServices& services,
     storage::Database db = connect(*s);
     send_json(res, api::show_dataset(db, req.matches[1], options));
   });
-  server.Delete(R"(/v1/datasets/([^/]+))", [s](const httplib::Request& req, httplib::Response& res) {
-    write(*s, req, res, [&] {
-      only_parameters(req, {}, "DELETE /v1/datasets/{name}");
-      storage::Database db = connect(*s);
-      send_json(res, api::delete_dataset(db, req.matches[1]));
-    });
-  });
+  server.Delete(R"(/v1/datasets/([^/]+))",
+                [s](const httplib::Request& req, httplib::Response& res) {
+                  write(*s, req, res, [&] {
+                    only_parameters(req, {}, "DELETE /v1/datasets/{name}");
+                    storage::Database db = connect(*s);
+                    send_json(res, api::delete_dataset(db, req.matches[1]));
+                  });
+                });
   // The body is the archive, spooled to disk as it arrives; or no body and path=SERVER_PATH
   // (an archive or folder on the server: the token holder is the administrator). Checked here
   // (parameters, format, path, size), then imported on the ImportPool: 202 with the import's
@@ -167,8 +167,7 @@ void install_data_routes(httplib::Server& server, const DataServices& services,
       }
       std::filesystem::path source;
       if (req.has_param("path")) {
-        if (spool->size_bytes() > 0)
-          throw api::conflicting_parameters("path", "an uploaded body");
+        if (spool->size_bytes() > 0) throw api::conflicting_parameters("path", "an uploaded body");
         spool.reset();
         what.source = "path";
         what.path = query_value(req, "path");
@@ -224,12 +223,12 @@ void install_data_routes(httplib::Server& server, const DataServices& services,
                send_json(res, api::ticket_to_json(*ticket));
              });
   server.Post("/v1/evaluations", [s, read_body](const httplib::Request& req, httplib::Response& res,
-                                           const httplib::ContentReader& content) {
+                                                const httplib::ContentReader& content) {
     write(*s, req, res, [&] {
       const std::string text = read_body(req, content);
       storage::Database db = connect(*s);
-      const std::int64_t ticket = s->pool->submit(
-          api::parse_evaluation_request(db, text, s->models, s->software_version));
+      const std::int64_t ticket =
+          s->pool->submit(api::parse_evaluation_request(db, text, s->models, s->software_version));
       nlohmann::ordered_json body = api::ticket_to_json(*s->pool->ticket(ticket));
       body["location"] = "/v1/evaluations/tickets/" + std::to_string(ticket);
       send_json(res, body, 202);
@@ -246,7 +245,7 @@ void install_data_routes(httplib::Server& server, const DataServices& services,
     send_json(res, api::show_job(db, api::parse_id(req.matches[1], "id")));
   });
   server.Post("/v1/jobs", [s, read_body](const httplib::Request& req, httplib::Response& res,
-                                    const httplib::ContentReader& content) {
+                                         const httplib::ContentReader& content) {
     write(*s, req, res, [&] {
       const std::string text = read_body(req, content);
       storage::Database db = connect(*s);
@@ -261,7 +260,7 @@ void install_data_routes(httplib::Server& server, const DataServices& services,
   });
   server.Post(R"(/v1/jobs/([^/]+)/(pause|resume))",
               [s, read_body](const httplib::Request& req, httplib::Response& res,
-                        const httplib::ContentReader& content) {
+                             const httplib::ContentReader& content) {
                 write(*s, req, res, [&] {
                   read_body(req, content);
                   storage::Database db = connect(*s);

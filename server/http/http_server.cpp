@@ -320,9 +320,9 @@ void HttpServer::install_routes() {
                       "application/json");
       return;
     }
-    api::ApiResponse response = api::error_response(api::ApiError(
-        503, "not_ready", "", "the default tables of some models are being built",
-        config_.retry_after_s));
+    api::ApiResponse response = api::error_response(
+        api::ApiError(503, "not_ready", "", "the default tables of some models are being built",
+                      config_.retry_after_s));
     nlohmann::json body = nlohmann::json::parse(response.body);
     body["models"] = models;
     response.body = body.dump();

@@ -80,13 +80,13 @@ TickReport Scheduler::tick(std::int64_t now_unix_s) {
       }
       const std::int64_t job_id = job.id;
       const std::string name = job.name;
-      pool_.submit(std::move(request), [in_flight = in_flight_, job_id, name](
-                                           const api::TicketState& done) {
-        if (done.status != "succeeded")
-          spdlog::error("job {} ({}): evaluation failed: {}", job_id, name, done.error);
-        std::lock_guard lock(in_flight->mutex);
-        in_flight->jobs.erase(job_id);
-      });
+      pool_.submit(
+          std::move(request), [in_flight = in_flight_, job_id, name](const api::TicketState& done) {
+            if (done.status != "succeeded")
+              spdlog::error("job {} ({}): evaluation failed: {}", job_id, name, done.error);
+            std::lock_guard lock(in_flight->mutex);
+            in_flight->jobs.erase(job_id);
+          });
       spdlog::info("job {} ({}): started; next run {}", job.id, job.name,
                    next_text.value_or("never"));
       ++report.started;
@@ -111,7 +111,8 @@ void Scheduler::start() {
   thread_ = std::thread([this] {
     using namespace std::chrono;
     for (;;) {
-      const std::int64_t now = duration_cast<seconds>(system_clock::now().time_since_epoch()).count();
+      const std::int64_t now =
+          duration_cast<seconds>(system_clock::now().time_since_epoch()).count();
       try {
         tick(now);
       } catch (const std::exception& e) {

@@ -26,9 +26,9 @@
 namespace clearsky::server {
 
 struct TickReport {
-  int started = 0;             // jobs handed to the pool
-  int skipped_running = 0;     // due but still running from before
-  int failed_to_start = 0;     // due but their evaluation could not be built or queued
+  int started = 0;          // jobs handed to the pool
+  int skipped_running = 0;  // due but still running from before
+  int failed_to_start = 0;  // due but their evaluation could not be built or queued
 };
 
 class Scheduler {

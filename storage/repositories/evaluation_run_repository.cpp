@@ -57,8 +57,8 @@ RunRecord read_run(const Statement& row) {
 std::int64_t store_sample_errors(Database& db, const std::vector<std::byte>& bytes) {
   const auto hash = static_cast<std::int64_t>(
       fnv1a_64(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())));
-  auto find = db.prepare(
-      "SELECT id FROM evaluation_sample_errors WHERE content_hash = ? AND data = ?");
+  auto find =
+      db.prepare("SELECT id FROM evaluation_sample_errors WHERE content_hash = ? AND data = ?");
   find.bind(1, hash).bind_blob(2, bytes);
   if (find.step()) return find.column_int64(0);
   auto insert =
@@ -100,8 +100,7 @@ void EvaluationRunRepository::finish(std::int64_t run_id, double rmse, double pr
     if (c.samples && c.samples->wavelength_count != wavelengths_nm.size())
       throw std::invalid_argument("run " + std::to_string(run_id) + ": sample errors of " +
                                   std::to_string(c.samples->wavelength_count) +
-                                  " wavelengths, run of " +
-                                  std::to_string(wavelengths_nm.size()));
+                                  " wavelengths, run of " + std::to_string(wavelengths_nm.size()));
   Transaction transaction(db_);
   auto insert = db_.prepare(
       "INSERT INTO evaluation_capture_results (run_id, capture_id, sun_zenith_deg, "
@@ -162,13 +161,13 @@ std::optional<RunRecord> EvaluationRunRepository::get(std::int64_t run_id, bool 
   query.bind(1, run_id);
   if (!query.step()) return std::nullopt;
   RunRecord run = read_run(query);
-  auto results = db_.prepare(
-      std::string("SELECT r.capture_id, c.label, c.time_utc_s, c.utc_offset_minutes, "
-                  "r.sun_zenith_deg, r.sun_azimuth_deg, r.rmse, r.values_compared, ") +
-      (with_samples ? "e.data" : "NULL") +
-      " FROM evaluation_capture_results r JOIN captures c ON r.capture_id = c.id"
-      " LEFT JOIN evaluation_sample_errors e ON e.id = r.sample_errors_id"
-      " WHERE r.run_id = ? ORDER BY c.time_utc_s, c.label");
+  auto results =
+      db_.prepare(std::string("SELECT r.capture_id, c.label, c.time_utc_s, c.utc_offset_minutes, "
+                              "r.sun_zenith_deg, r.sun_azimuth_deg, r.rmse, r.values_compared, ") +
+                  (with_samples ? "e.data" : "NULL") +
+                  " FROM evaluation_capture_results r JOIN captures c ON r.capture_id = c.id"
+                  " LEFT JOIN evaluation_sample_errors e ON e.id = r.sample_errors_id"
+                  " WHERE r.run_id = ? ORDER BY c.time_utc_s, c.label");
   results.bind(1, run_id);
   while (results.step()) {
     RunCaptureResult c;

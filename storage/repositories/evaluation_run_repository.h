@@ -53,7 +53,7 @@ struct RunRecord {
   std::string status;  // running, succeeded, failed
   std::optional<std::string> error;
   std::optional<double> rmse, precompute_seconds, evaluate_seconds;
-  std::string processing_steps;            // one step per line
+  std::string processing_steps;  // one step per line
   // The compared wavelengths (columns of the per-sample errors); empty for runs stored before
   // schema version 2 and runs not finished.
   std::optional<std::vector<double>> wavelengths_nm;

@@ -69,8 +69,8 @@ SampleErrorTable decode_sample_errors(std::span<const std::byte> bytes) {
   if ((n > 0 && (n > bytes.size() / kRecordFixedBytes || w > bytes.size() / 4)) ||
       bytes.size() != kHeaderBytes + n * (kRecordFixedBytes + 4 * w))
     throw std::runtime_error("corrupt sample errors blob: " + std::to_string(bytes.size()) +
-                             " bytes for " + std::to_string(n) + " samples x " +
-                             std::to_string(w) + " wavelengths");
+                             " bytes for " + std::to_string(n) + " samples x " + std::to_string(w) +
+                             " wavelengths");
   SampleErrorTable table;
   table.wavelength_count = static_cast<std::uint32_t>(w);
   table.samples.resize(n);

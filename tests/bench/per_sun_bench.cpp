@@ -24,7 +24,8 @@ std::vector<ViewDirection> measured_directions() {
   const double zenith_deg[] = {0.0, 18.0813, 36.6335, 56.2510, 77.8849};
   const int count[] = {1, 8, 16, 24, 32};
   for (int ring = 0; ring < 5; ++ring) {
-    for (int k = 0; k < count[ring]; ++k) views.push_back({degrees_to_radians(zenith_deg[ring]), 2.0 * kPi * k / count[ring]});
+    for (int k = 0; k < count[ring]; ++k)
+      views.push_back({degrees_to_radians(zenith_deg[ring]), 2.0 * kPi * k / count[ring]});
   }
   return views;
 }
@@ -37,14 +38,21 @@ ModelConfig haber_config(int sectors, int stride) {
 }
 
 void BM_HaberPerSun(benchmark::State& state) {
-  const ModelConfig config = haber_config(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+  const ModelConfig config =
+      haber_config(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
   for (auto _ : state) {
     const auto model = haber::HaberModel::create(config);
     benchmark::DoNotOptimize(model->prepare_sun(kSun));
   }
 }
-BENCHMARK(BM_HaberPerSun)->Args({72, 4})->Args({72, 8})->Args({48, 4})->Args({36, 4})->Unit(benchmark::kMillisecond)
-    ->UseRealTime()->Iterations(1);
+BENCHMARK(BM_HaberPerSun)
+    ->Args({72, 4})
+    ->Args({72, 8})
+    ->Args({48, 4})
+    ->Args({36, 4})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
 
 void BM_Nishita96PerSun(benchmark::State& state) {
   ModelConfig config;
@@ -54,7 +62,8 @@ void BM_Nishita96PerSun(benchmark::State& state) {
   int i = 0;
   for (auto _ : state) {
     // A new sun every iteration: every build misses the cache.
-    const auto sun_state = model->prepare_sun({degrees_to_radians(20.0 + 0.01 * i++), kSun.azimuth_rad});
+    const auto sun_state =
+        model->prepare_sun({degrees_to_radians(20.0 + 0.01 * i++), kSun.azimuth_rad});
     bytes = static_cast<double>(sun_state->memory_bytes());
   }
   state.counters["MB"] = bytes / 1e6;
@@ -65,8 +74,9 @@ template <class Make>
 void radiance_benchmarks(benchmark::State& state, Make make, int mode) {
   const auto model = make();
   const auto sun_state = model->prepare_sun(kSun);
-  const auto views = mode == 0 ? std::vector<ViewDirection>{{degrees_to_radians(45.0), degrees_to_radians(200.0)}}
-                               : measured_directions();
+  const auto views =
+      mode == 0 ? std::vector<ViewDirection>{{degrees_to_radians(45.0), degrees_to_radians(200.0)}}
+                : measured_directions();
   SpectralBatch out;
   for (auto _ : state) {
     if (mode == 2) {
@@ -79,13 +89,17 @@ void radiance_benchmarks(benchmark::State& state, Make make, int mode) {
 }
 
 void BM_HaberQuery(benchmark::State& state) {
-  radiance_benchmarks(state, [] { return haber::HaberModel::create(ModelConfig{}); }, static_cast<int>(state.range(0)));
+  radiance_benchmarks(
+      state, [] { return haber::HaberModel::create(ModelConfig{}); },
+      static_cast<int>(state.range(0)));
 }
 // 0: one radiance, 1: the 81 directions, 2: sky irradiance.
 BENCHMARK(BM_HaberQuery)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 
 void BM_Nishita96Query(benchmark::State& state) {
-  radiance_benchmarks(state, [] { return nishita96_factory().create(ModelConfig{}, {}); }, static_cast<int>(state.range(0)));
+  radiance_benchmarks(
+      state, [] { return nishita96_factory().create(ModelConfig{}, {}); },
+      static_cast<int>(state.range(0)));
 }
 BENCHMARK(BM_Nishita96Query)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 

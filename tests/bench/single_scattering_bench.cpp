@@ -78,8 +78,12 @@ void irradiance(benchmark::State& state, const SkyModel& model) {
   }
 }
 
-void BM_Nishita93Radiance(benchmark::State& state) { radiance(state, *nishita93_with(static_cast<int>(state.range(0)))); }
-void BM_Nishita93Batch81(benchmark::State& state) { batch(state, *nishita93_with(static_cast<int>(state.range(0)))); }
+void BM_Nishita93Radiance(benchmark::State& state) {
+  radiance(state, *nishita93_with(static_cast<int>(state.range(0))));
+}
+void BM_Nishita93Batch81(benchmark::State& state) {
+  batch(state, *nishita93_with(static_cast<int>(state.range(0))));
+}
 void BM_Nishita93SkyIrradiance(benchmark::State& state) {
   irradiance(state, *nishita93_with(static_cast<int>(state.range(0))));
 }
@@ -92,16 +96,32 @@ void BM_Nishita93Precompute(benchmark::State& state) {
     benchmark::DoNotOptimize(tables.sphere_count());
   }
 }
-void BM_ONealRadiance(benchmark::State& state) { radiance(state, *oneal_with(static_cast<int>(state.range(0)))); }
-void BM_ONealBatch81(benchmark::State& state) { batch(state, *oneal_with(static_cast<int>(state.range(0)))); }
-void BM_ONealSkyIrradiance(benchmark::State& state) { irradiance(state, *oneal_with(static_cast<int>(state.range(0)))); }
+void BM_ONealRadiance(benchmark::State& state) {
+  radiance(state, *oneal_with(static_cast<int>(state.range(0))));
+}
+void BM_ONealBatch81(benchmark::State& state) {
+  batch(state, *oneal_with(static_cast<int>(state.range(0))));
+}
+void BM_ONealSkyIrradiance(benchmark::State& state) {
+  irradiance(state, *oneal_with(static_cast<int>(state.range(0))));
+}
 
 // Spheres = cylinders 16, 32, 64 (the paper's), 128; O'Neal samples 2 (O'Neil's), 4 (the
 // paper's), 8, 32.
 BENCHMARK(BM_Nishita93Radiance)->Arg(16)->Arg(32)->Arg(64)->Arg(128);
 BENCHMARK(BM_Nishita93Batch81)->Arg(16)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_Nishita93SkyIrradiance)->Arg(16)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Nishita93Precompute)->Arg(16)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Nishita93SkyIrradiance)
+    ->Arg(16)
+    ->Arg(32)
+    ->Arg(64)
+    ->Arg(128)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Nishita93Precompute)
+    ->Arg(16)
+    ->Arg(32)
+    ->Arg(64)
+    ->Arg(128)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ONealRadiance)->Arg(2)->Arg(4)->Arg(8)->Arg(32);
 BENCHMARK(BM_ONealBatch81)->Arg(2)->Arg(4)->Arg(8)->Arg(32)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ONealSkyIrradiance)->Arg(2)->Arg(4)->Arg(8)->Arg(32)->Unit(benchmark::kMillisecond);

@@ -18,16 +18,18 @@ inline SunPosition sun_at(double zenith_deg, double azimuth_deg = 135.0) {
 }
 
 // The radiance of one view (degrees); a non-ok status is a test failure.
-inline Spectrum radiance(const SkyModel& model, const SunState& sun, double zenith_deg, double azimuth_deg) {
-  const std::vector<ViewDirection> views = {{degrees_to_radians(zenith_deg), degrees_to_radians(azimuth_deg)}};
+inline Spectrum radiance(const SkyModel& model, const SunState& sun, double zenith_deg,
+                         double azimuth_deg) {
+  const std::vector<ViewDirection> views = {
+      {degrees_to_radians(zenith_deg), degrees_to_radians(azimuth_deg)}};
   SpectralBatch batch;
   model.sky_radiance(sun, {}, views, batch);
   EXPECT_EQ(batch.status[0], SampleStatus::ok);
   return Spectrum(std::vector<double>(batch.spectrum(0).begin(), batch.spectrum(0).end()));
 }
 
-inline Spectrum reference_sky_irradiance(const SkyModel& model, const SunState& sun, int zenith_nodes,
-                                         int azimuth_nodes) {
+inline Spectrum reference_sky_irradiance(const SkyModel& model, const SunState& sun,
+                                         int zenith_nodes, int azimuth_nodes) {
   std::vector<ViewDirection> views;
   std::vector<double> weights;
   for (const auto& [mu, w] : gauss_legendre(zenith_nodes, 0.0, 1.0)) {

@@ -20,13 +20,13 @@ inline bool running_in_ci() {
 }  // namespace clearsky::testing
 
 // Skips (or, in CI, fails) the current test when the shared measurement data is missing.
-#define CLEARSKY_REQUIRE_SHARED_DATA(relative)                                              \
-  do {                                                                                      \
-    const auto clearsky_path_ = ::clearsky::testing::shared_data_dir() / (relative);        \
-    if (!std::filesystem::exists(clearsky_path_)) {                                         \
-      if (::clearsky::testing::running_in_ci()) {                                           \
-        FAIL() << "CI=true and the shared data is missing: " << clearsky_path_;             \
-      }                                                                                     \
-      GTEST_SKIP() << "shared data not found at " << clearsky_path_;                        \
-    }                                                                                       \
+#define CLEARSKY_REQUIRE_SHARED_DATA(relative)                                       \
+  do {                                                                               \
+    const auto clearsky_path_ = ::clearsky::testing::shared_data_dir() / (relative); \
+    if (!std::filesystem::exists(clearsky_path_)) {                                  \
+      if (::clearsky::testing::running_in_ci()) {                                    \
+        FAIL() << "CI=true and the shared data is missing: " << clearsky_path_;      \
+      }                                                                              \
+      GTEST_SKIP() << "shared data not found at " << clearsky_path_;                 \
+    }                                                                                \
   } while (false)

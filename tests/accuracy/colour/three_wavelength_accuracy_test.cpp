@@ -55,24 +55,27 @@ TEST_P(ThreeWavelengthAccuracy, RgbAndReconstructionAgainstFortyWavelengths) {
       ASSERT_EQ(l40.status[i], SampleStatus::ok);
       ASSERT_EQ(l3.status[i], SampleStatus::ok);
       const auto s40 = l40.spectrum(i);
-      const LinearSrgb reference = spectrum_to_linear_srgb(Spectrum(std::vector<double>(s40.begin(), s40.end())),
-                                                           full->wavelengths());
+      const LinearSrgb reference = spectrum_to_linear_srgb(
+          Spectrum(std::vector<double>(s40.begin(), s40.end())), full->wavelengths());
       const auto s3 = l3.spectrum(i);
       const LinearSrgb approx = method.rgb(s3[2], s3[1], s3[0]);
-      for (auto [a, b] : {std::pair{approx.r, reference.r}, {approx.g, reference.g}, {approx.b, reference.b}}) {
+      for (auto [a, b] :
+           {std::pair{approx.r, reference.r}, {approx.g, reference.g}, {approx.b, reference.b}}) {
         squared_error += (a - b) * (a - b);
         peak = std::max(peak, b);
         ++components;
       }
     }
   }
-  const double psnr = 10.0 * std::log10(peak * peak / (squared_error / static_cast<double>(components)));
+  const double psnr =
+      10.0 * std::log10(peak * peak / (squared_error / static_cast<double>(components)));
 
   const double rmse_full = evaluate_sky_model(*full, testing::public_captures()).rmse;
   const ThreeSampleSky reconstructed(three, ModelConfig{});
   const double rmse_three = evaluate_sky_model(reconstructed, testing::public_captures()).rmse;
-  std::printf("%s: 3-wavelength RGB PSNR %.1f dB; RMSE 40 wavelengths %.3f, 3-sample reconstruction %.3f\n",
-              c.model, psnr, rmse_full, rmse_three);
+  std::printf(
+      "%s: 3-wavelength RGB PSNR %.1f dB; RMSE 40 wavelengths %.3f, 3-sample reconstruction %.3f\n",
+      c.model, psnr, rmse_full, rmse_three);
   RecordProperty("rgb_psnr_db", std::to_string(psnr));
   RecordProperty("rmse_three_samples", std::to_string(rmse_three));
   EXPECT_GT(psnr, c.min_rgb_psnr_db);
@@ -88,7 +91,9 @@ INSTANTIATE_TEST_SUITE_P(CheapModels, ThreeWavelengthAccuracy,
                                            ThreeWavelengthCase{"hosek", 38.0, 4.5},
                                            ThreeWavelengthCase{"nishita93", 35.0, 1.0},
                                            ThreeWavelengthCase{"oneal", 36.0, 1.0}),
-                         [](const auto& param_info) { return std::string(param_info.param.model); });
+                         [](const auto& param_info) {
+                           return std::string(param_info.param.model);
+                         });
 
 }  // namespace
 }  // namespace clearsky

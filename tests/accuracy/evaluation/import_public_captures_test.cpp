@@ -29,14 +29,16 @@ std::pair<int, std::string> run(const std::string& arguments) {
 TEST(ImportPublicCaptures, FifteenCapturesOf81Samples) {
   const auto folder = testing::shared_data_dir() / "kider2014/2013-05-27/RADIANCE";
   CLEARSKY_REQUIRE_SHARED_DATA("kider2014/2013-05-27/RADIANCE");
-  const auto dir = std::filesystem::temp_directory_path() / ("clearsky_import_all_" + std::to_string(::getpid()));
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("clearsky_import_all_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   const std::string db = (dir / "sky.db").string();
   const std::string archives = folder.string() + "/*.7z";
 
   const auto start = std::chrono::steady_clock::now();
   const auto [code, output] = run("import kider " + archives + " --db " + db + " --json");
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ASSERT_EQ(code, 0) << output;
   EXPECT_EQ(nlohmann::json::parse(output).at("added").size(), 15u);
   std::printf("clearsky import kider of the 15 archives: %.2f s\n", seconds);

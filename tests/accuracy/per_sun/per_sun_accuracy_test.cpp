@@ -22,8 +22,10 @@ TEST(PerSunAccuracy, HaberMatchesTheStudyOnThe15PublicCaptures) {
   options.capture_threads = 1;  // each per-sun build already uses every core
   // The default shares one dome per degree of sun zenith (measured 14.770; exact angles, the
   // study's setting, 14.796): both within 5% of the study's 14.80, and the bucket costs < 0.5%.
-  const EvaluationResult r = evaluate_model(*factory, ModelConfig{}, testing::public_captures(), options);
-  for (const auto& c : r.captures) std::printf("haber %s zenith %.3f rmse %.3f\n", c.time_iso.c_str(), c.sun_zenith_deg, c.rmse);
+  const EvaluationResult r =
+      evaluate_model(*factory, ModelConfig{}, testing::public_captures(), options);
+  for (const auto& c : r.captures)
+    std::printf("haber %s zenith %.3f rmse %.3f\n", c.time_iso.c_str(), c.sun_zenith_deg, c.rmse);
   std::printf("haber total rmse %.3f, evaluate %.1f s\n", r.rmse, r.evaluate_seconds);
   EXPECT_NEAR(r.rmse, 14.80, 0.05 * 14.80);
   EXPECT_NEAR(r.rmse, 14.796, 0.005 * 14.796);
@@ -41,8 +43,10 @@ TEST(PerSunAccuracy, Nishita96MatchesTheStudyWithTheBinningFixed) {
   CLEARSKY_REQUIRE_SHARED_DATA("kider2014/2013-05-27/RADIANCE");
   const ModelFactory* factory = find_model("nishita96");
   ASSERT_NE(factory, nullptr);
-  const EvaluationResult r = evaluate_model(*factory, ModelConfig{}, testing::public_captures(), {});
-  for (const auto& c : r.captures) std::printf("nishita96 %s rmse %.3f\n", c.time_iso.c_str(), c.rmse);
+  const EvaluationResult r =
+      evaluate_model(*factory, ModelConfig{}, testing::public_captures(), {});
+  for (const auto& c : r.captures)
+    std::printf("nishita96 %s rmse %.3f\n", c.time_iso.c_str(), c.rmse);
   std::printf("nishita96 total rmse %.3f, evaluate %.1f s\n", r.rmse, r.evaluate_seconds);
   EXPECT_NEAR(r.rmse, 11.09, 0.05 * 11.09);
 }
@@ -60,7 +64,8 @@ TEST(PerSunAccuracy, Nishita96SunZenithBucketsCostNothingMeasurable) {
   CLEARSKY_REQUIRE_SHARED_DATA("kider2014/2013-05-27/RADIANCE");
   const ModelFactory* factory = find_model("nishita96");
   ASSERT_NE(factory, nullptr);
-  const EvaluationResult exact = evaluate_model(*factory, ModelConfig{}, testing::public_captures(), {});
+  const EvaluationResult exact =
+      evaluate_model(*factory, ModelConfig{}, testing::public_captures(), {});
   for (double bucket : {1.0, 5.0}) {
     ModelConfig config;
     config.options["sun_zenith_bucket_deg"] = bucket;

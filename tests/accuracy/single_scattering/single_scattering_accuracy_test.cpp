@@ -24,7 +24,8 @@ EvaluationResult evaluate(const char* id, std::map<std::string, double> options 
   EvaluationResult r = evaluate_model(*factory, config, testing::public_captures(), {});
   std::printf("%s", id);
   for (const auto& [name, value] : config.options) std::printf(" %s=%g", name.c_str(), value);
-  std::printf(": RMSE %.2f (precompute %.3f s, evaluate %.3f s)\n", r.rmse, r.precompute_seconds, r.evaluate_seconds);
+  std::printf(": RMSE %.2f (precompute %.3f s, evaluate %.3f s)\n", r.rmse, r.precompute_seconds,
+              r.evaluate_seconds);
   for (const auto& c : r.captures) std::printf("  %s  %.2f\n", c.time_iso.c_str(), c.rmse);
   return r;
 }
@@ -61,7 +62,8 @@ TEST(SingleScatteringAccuracy, ONealWith32SamplesWithinTwoPercentOfNishita93PerC
   const EvaluationResult& nishita = nishita93_result();
   ASSERT_EQ(oneal.captures.size(), nishita.captures.size());
   for (std::size_t i = 0; i < oneal.captures.size(); ++i) {
-    EXPECT_NEAR(oneal.captures[i].rmse / nishita.captures[i].rmse, 1.0, 0.02) << oneal.captures[i].time_iso;
+    EXPECT_NEAR(oneal.captures[i].rmse / nishita.captures[i].rmse, 1.0, 0.02)
+        << oneal.captures[i].time_iso;
   }
 }
 
@@ -79,7 +81,8 @@ TEST(SingleScatteringAccuracy, CheaperAndFinerSettings) {
   // the RMSE by less than 2 %; O'Neal: more samples, less error (they add the missing light).
   CLEARSKY_REQUIRE_SHARED_DATA("kider2014/2013-05-27/RADIANCE");
   std::map<int, double> nishita, oneal;
-  for (int n : {16, 32, 64, 128}) nishita[n] = evaluate("nishita93", {{"spheres", n}, {"cylinders", n}}).rmse;
+  for (int n : {16, 32, 64, 128})
+    nishita[n] = evaluate("nishita93", {{"spheres", n}, {"cylinders", n}}).rmse;
   for (int n : {2, 4, 8, 32}) oneal[n] = evaluate("oneal", {{"samples", n}}).rmse;
   EXPECT_NEAR(nishita[128] / nishita[64], 1.0, 0.02);
   EXPECT_NEAR(nishita[32] / nishita[64], 1.0, 0.05);

@@ -56,7 +56,8 @@ nlohmann::ordered_json upload(storage::Database& db, const std::filesystem::path
                               const std::string& bytes, std::size_t limit,
                               const std::string& name = "uploaded") {
   UploadSpool spool(folder, limit, ".7z");
-  for (std::size_t i = 0; i < bytes.size(); i += 65536) spool.append(std::string_view(bytes).substr(i, 65536));
+  for (std::size_t i = 0; i < bytes.size(); i += 65536)
+    spool.append(std::string_view(bytes).substr(i, 65536));
   return import_dataset(db, name, "kider", spool.finish());
 }
 
@@ -144,9 +145,11 @@ TEST(DatasetsApi, TruncatedOrForeignUploadIs400AndLeavesNothing) {
   storage::testing::TempDir dir;
   storage::Database db = storage::open_database(dir.path / "db.sqlite");
   const std::string bytes = file_bytes(clearsky::testing::shared_data_dir() / kArchive);
-  EXPECT_EQ(status_of([&] { upload(db, dir.path / "u", bytes.substr(0, bytes.size() / 2), 8u << 20); }),
+  EXPECT_EQ(
+      status_of([&] { upload(db, dir.path / "u", bytes.substr(0, bytes.size() / 2), 8u << 20); }),
+      400);
+  EXPECT_EQ(status_of([&] { upload(db, dir.path / "u", "this is not an archive", 8u << 20); }),
             400);
-  EXPECT_EQ(status_of([&] { upload(db, dir.path / "u", "this is not an archive", 8u << 20); }), 400);
   EXPECT_TRUE(list_datasets(db).empty());
   EXPECT_EQ(status_of([&] { import_dataset(db, "x", "csv", dir.path); }), 400);
 }

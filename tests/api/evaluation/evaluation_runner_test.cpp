@@ -149,11 +149,16 @@ TEST(EvaluationRunner, JsonFollowsTheCliContract) {
   EXPECT_NEAR(c.at("rmse").get<double>(), 3.0, 1e-9);
   // Keys in the contract's order.
   const std::string text = j.dump();
-  EXPECT_EQ(text.rfind(R"({"dataset":"synthetic","wavelength_range_nm":[360,720],"models":[{"model":"offset","rmse":)", 0),
-            0u)
+  EXPECT_EQ(
+      text.rfind(
+          R"({"dataset":"synthetic","wavelength_range_nm":[360,720],"models":[{"model":"offset","rmse":)",
+          0),
+      0u)
       << text;
-  EXPECT_NE(text.find(R"("captures":[{"time":"2013-05-27T09:30:00-04:00","sun_zenith":40.0,"sun_azimuth":)"),
-            std::string::npos)
+  EXPECT_NE(
+      text.find(
+          R"("captures":[{"time":"2013-05-27T09:30:00-04:00","sun_zenith":40.0,"sun_azimuth":)"),
+      std::string::npos)
       << text;
   EXPECT_NE(text.find(R"(],"precompute_seconds":)"), std::string::npos) << text;
   EXPECT_LT(text.find("precompute_seconds"), text.find("evaluate_seconds"));

@@ -113,13 +113,17 @@ TEST(EvaluationsApi, RequestIsCheckedBeforeQueueing) {
   EXPECT_EQ(status_of([&] { parse("{"); }), 400);
   EXPECT_EQ(status_of([&] { parse(R"({"models": "all"})"); }), 400);
   EXPECT_EQ(status_of([&] { parse(R"({"dataset": "nope"})"); }), 404);
-  EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "models": ["nishita2042"]})"); }), 404);
+  EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "models": ["nishita2042"]})"); }),
+            404);
   EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "models": []})"); }), 400);
   EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "colour": 1})"); }), 400);
-  EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "parameters": {"turbidity": "x"}})"); }),
+  EXPECT_EQ(
+      status_of([&] { parse(R"({"dataset": "synthetic", "parameters": {"turbidity": "x"}})"); }),
+      400);
+  EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "parameters": {"beta": -1}})"); }),
             400);
-  EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "parameters": {"beta": -1}})"); }), 400);
-  EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "parameters": {"sparkle": 1}})"); }), 400);
+  EXPECT_EQ(status_of([&] { parse(R"({"dataset": "synthetic", "parameters": {"sparkle": 1}})"); }),
+            400);
 }
 
 // Model options travel in "parameters" (e.g. Nishita93's study_viewer_sample): each applies to
@@ -128,12 +132,14 @@ TEST(EvaluationsApi, RequestIsCheckedBeforeQueueing) {
 TEST(EvaluationsApi, ModelOptionsApplyToTheModelsThatListThem) {
   static const ModelDescriptor gain_d = [] {
     ModelDescriptor d = with_id("gain");
-    d.parameters.push_back(ParameterSpec{"gain", "", "radiance factor", 1.0, 0.5, 4.0, false, false});
+    d.parameters.push_back(
+        ParameterSpec{"gain", "", "radiance factor", 1.0, 0.5, 4.0, false, false});
     return d;
   }();
   static const std::vector<ModelFactory> models = {
       factories()[0],
-      {&gain_d, [](const ModelConfig& c, const PrecomputeContext&) -> std::shared_ptr<const SkyModel> {
+      {&gain_d,
+       [](const ModelConfig& c, const PrecomputeContext&) -> std::shared_ptr<const SkyModel> {
          const double gain = option_or_default(gain_d, c, "gain");
          return std::make_shared<testing::FunctionModel>(
              [gain](const ViewDirection& v, double nm) { return gain * sky(v, nm); }, c, gain_d);
@@ -145,9 +151,13 @@ TEST(EvaluationsApi, ModelOptionsApplyToTheModelsThatListThem) {
   const EvaluationRequest r =
       parse(R"({"models": ["exact", "gain"], "dataset": "synthetic", "parameters": {"gain": 2}})");
   EXPECT_EQ(r.config.options.at("gain"), 2.0);
-  EXPECT_EQ(status_of([&] { parse(R"({"models": ["exact"], "dataset": "synthetic", "parameters": {"gain": 2}})"); }),
+  EXPECT_EQ(status_of([&] {
+              parse(R"({"models": ["exact"], "dataset": "synthetic", "parameters": {"gain": 2}})");
+            }),
             400);
-  EXPECT_EQ(status_of([&] { parse(R"({"models": ["gain"], "dataset": "synthetic", "parameters": {"gain": 9}})"); }),
+  EXPECT_EQ(status_of([&] {
+              parse(R"({"models": ["gain"], "dataset": "synthetic", "parameters": {"gain": 9}})");
+            }),
             400);
 
   const EvaluationReport report = run_evaluation(f.db, r, models);
@@ -175,7 +185,8 @@ TEST(EvaluationsApi, BackgroundRunsAreStoredListedAndComparedWithHistory) {
   const std::int64_t fourth =
       submit(R"({"models": ["offset"], "dataset": "synthetic", "parameters": {"turbidity": 4}})");
   pool.wait_idle();
-  for (std::int64_t t : {first, second, third, fourth}) ASSERT_EQ(pool.ticket(t)->status, "succeeded");
+  for (std::int64_t t : {first, second, third, fourth})
+    ASSERT_EQ(pool.ticket(t)->status, "succeeded");
   ASSERT_EQ(pool.ticket(first)->run_ids.size(), 2u);
 
   // The default turbidity 2.53: RMSE 2.53 mW/(m2.sr.nm).
@@ -206,17 +217,26 @@ TEST(EvaluationsApi, BackgroundRunsAreStoredListedAndComparedWithHistory) {
   // Lists, newest first, with filters.
   EXPECT_EQ(list_evaluations(f.db, {}).size(), 5u);
   EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter({{"model", "exact"}})).size(), 1u);
-  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter({{"model", "offset"}, {"dataset", "synthetic"}})).size(),
+  EXPECT_EQ(list_evaluations(
+                f.db, parse_evaluation_filter({{"model", "offset"}, {"dataset", "synthetic"}}))
+                .size(),
             4u);
-  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter({{"since", "2000-01-01T00:00:00Z"}})).size(), 5u);
-  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter({{"until", "2000-01-01T00:00:00Z"}})).size(), 0u);
+  EXPECT_EQ(
+      list_evaluations(f.db, parse_evaluation_filter({{"since", "2000-01-01T00:00:00Z"}})).size(),
+      5u);
+  EXPECT_EQ(
+      list_evaluations(f.db, parse_evaluation_filter({{"until", "2000-01-01T00:00:00Z"}})).size(),
+      0u);
   EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter({{"status", "failed"}})).size(), 0u);
   const auto newest = list_evaluations(f.db, {})[0];
   EXPECT_EQ(newest["id"], pool.ticket(fourth)->run_ids[0]);
   EXPECT_NEAR(newest["rmse"].get<double>(), 4.0, 1e-9);
   EXPECT_EQ(status_of([&] { parse_evaluation_filter({{"since", "yesterday"}}); }), 400);
   EXPECT_EQ(status_of([&] { parse_evaluation_filter({{"colour", "red"}}); }), 400);
-  EXPECT_EQ(status_of([&] { list_evaluations(f.db, parse_evaluation_filter({{"dataset", "x"}})); }), 404);
+  EXPECT_EQ(status_of([&] {
+              list_evaluations(f.db, parse_evaluation_filter({{"dataset", "x"}}));
+            }),
+            404);
   EXPECT_EQ(status_of([&] { show_evaluation(f.db, 999); }), 404);
   EXPECT_EQ(status_of([&] { parse_id("12a", "id"); }), 400);
 }
@@ -302,7 +322,9 @@ TEST(EvaluationsApi, PerSampleErrorsOnRequest) {
   ASSERT_EQ(one["captures"].size(), 1u);
   EXPECT_EQ(one["captures"][0]["label"], "capture 1");
   EXPECT_EQ(one["captures"][0]["samples"], summary["captures"][1]["samples"]);
-  EXPECT_EQ(status_of([&] { show_evaluation(f.db, id, options({{"capture", "capture 9"}})); }),
+  EXPECT_EQ(status_of([&] {
+              show_evaluation(f.db, id, options({{"capture", "capture 9"}}));
+            }),
             404);
   EXPECT_EQ(status_of([&] { options({{"samples", "maybe"}}); }), 400);
   EXPECT_EQ(status_of([&] { options({{"sample", "true"}}); }), 400);
@@ -347,11 +369,12 @@ TEST(EvaluationPool, FullQueueIs503AndWorkersAreBounded) {
 TEST(EvaluationPool, FailedRunIsReportedOnTheTicket) {
   Fixture f;
   EvaluationPool pool(f.opener(), factories(), {1, 4, 1});
-  EvaluationRequest r = parse_evaluation_request(f.db, R"({"models": ["exact"], "dataset": "synthetic"})",
-                                                 factories(), "1");
+  EvaluationRequest r = parse_evaluation_request(
+      f.db, R"({"models": ["exact"], "dataset": "synthetic"})", factories(), "1");
   f.db.execute("DELETE FROM captures");
   std::atomic<bool> called{false};
-  const std::int64_t t = pool.submit(r, [&](const TicketState& s) { called = s.status == "failed"; });
+  const std::int64_t t =
+      pool.submit(r, [&](const TicketState& s) { called = s.status == "failed"; });
   pool.wait_idle();
   EXPECT_TRUE(called);
   EXPECT_EQ(pool.ticket(t)->status, "failed");

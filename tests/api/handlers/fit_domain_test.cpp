@@ -29,8 +29,8 @@ TEST(FitDomain, PreethamOutsideItsFitIsRefusedUnlessClampingIsAsked) {
   // Turbidity 10, the sun at the zenith: the fit's chromaticity 80 degrees from the zenith is far
   // from the daylight locus (models/preetham/README.md).
   std::vector<std::pair<std::string, std::string>> query = {
-      {"model", "preetham"}, {"sun_zenith", "0"},     {"sun_azimuth", "0"},
-      {"view_zenith", "80"}, {"view_azimuth", "0"},   {"turbidity", "10"},
+      {"model", "preetham"},        {"sun_zenith", "0"},   {"sun_azimuth", "0"},
+      {"view_zenith", "80"},        {"view_azimuth", "0"}, {"turbidity", "10"},
       {"wavelengths", "360:720:10"}};
   const ApiResponse refused = get_radiance(provider, query);
   ASSERT_EQ(refused.status, 422) << refused.body;
@@ -42,7 +42,8 @@ TEST(FitDomain, PreethamOutsideItsFitIsRefusedUnlessClampingIsAsked) {
   query.emplace_back("clamp_negative_fit", "1");
   const ApiResponse clamped = get_radiance(provider, query);
   ASSERT_EQ(clamped.status, 200) << clamped.body;
-  const auto values = nlohmann::json::parse(clamped.body)["samples"][0]["radiance"].get<std::vector<double>>();
+  const auto values =
+      nlohmann::json::parse(clamped.body)["samples"][0]["radiance"].get<std::vector<double>>();
   ASSERT_EQ(values.size(), 37u);
   EXPECT_EQ(*std::min_element(values.begin(), values.end()), 0.0);
   EXPECT_GT(*std::max_element(values.begin(), values.end()), 0.0);
@@ -54,7 +55,8 @@ TEST(FitDomain, PreethamOutsideItsFitIsRefusedUnlessClampingIsAsked) {
   query.pop_back();
   const ApiResponse inside = get_radiance(provider, query);
   ASSERT_EQ(inside.status, 200) << inside.body;
-  EXPECT_EQ(nlohmann::json::parse(inside.body)["samples"], nlohmann::json::parse(inside_clamped.body)["samples"]);
+  EXPECT_EQ(nlohmann::json::parse(inside.body)["samples"],
+            nlohmann::json::parse(inside_clamped.body)["samples"]);
 }
 
 }  // namespace

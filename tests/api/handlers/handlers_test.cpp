@@ -274,7 +274,8 @@ TEST_F(Handlers, SunEndpoint) {
   EXPECT_NEAR(j["zenith"].get<double>(), 26.64, 0.02);
   EXPECT_EQ(j["sunrise"].get<std::string>().substr(0, 11), "2013-05-27T");
   expect_error(call(get_sun, "GET", "/v1/sun", {{"lat", "42.44"}}), 400, "lon");
-  expect_error(call(get_sun, "GET", "/v1/sun", {{"lat", "42.44"}, {"lon", "1"}, {"bogus", "1"}}), 400, "bogus");
+  expect_error(call(get_sun, "GET", "/v1/sun", {{"lat", "42.44"}, {"lon", "1"}, {"bogus", "1"}}),
+               400, "bogus");
 }
 
 }  // namespace

@@ -45,10 +45,11 @@ struct Fixture {
 
 TEST(JobsApi, CreateComputesTheNextRunAndListShowsIt) {
   Fixture f;
-  const auto job = create_job(f.db,
-                              R"({"name": "nightly", "schedule": "30 2 * * *", "dataset": "synthetic",
+  const auto job =
+      create_job(f.db,
+                 R"({"name": "nightly", "schedule": "30 2 * * *", "dataset": "synthetic",
                                   "models": ["test-model"], "parameters": {"turbidity": 3}})",
-                              factories(), kNow);
+                 factories(), kNow);
   EXPECT_EQ(job["name"], "nightly");
   EXPECT_EQ(job["dataset"], "synthetic");
   EXPECT_EQ(job["models"], nlohmann::json::array({"test-model"}));
@@ -57,8 +58,9 @@ TEST(JobsApi, CreateComputesTheNextRunAndListShowsIt) {
   EXPECT_EQ(job["next_run"], "2026-11-22T02:30:00Z");
   EXPECT_TRUE(job["last_run"].is_null());
   EXPECT_TRUE(job["last_result"].empty());
-  const auto all = create_job(f.db, R"({"name": "hourly", "schedule": "0 * * * *", "dataset": "synthetic"})",
-                              factories(), kNow);
+  const auto all =
+      create_job(f.db, R"({"name": "hourly", "schedule": "0 * * * *", "dataset": "synthetic"})",
+                 factories(), kNow);
   EXPECT_EQ(all["models"], "all");
   EXPECT_EQ(all["next_run"], "2026-11-21T12:00:00Z");
   const auto list = list_jobs(f.db);
@@ -77,21 +79,36 @@ TEST(JobsApi, CreateComputesTheNextRunAndListShowsIt) {
 TEST(JobsApi, BadJobsAreRefused) {
   Fixture f;
   const auto create = [&](const std::string& body) { create_job(f.db, body, factories(), kNow); };
-  EXPECT_EQ(status_of([&] { create(R"({"schedule": "* * * * *", "dataset": "synthetic"})"); }), 400);
+  EXPECT_EQ(status_of([&] { create(R"({"schedule": "* * * * *", "dataset": "synthetic"})"); }),
+            400);
   EXPECT_EQ(status_of([&] { create(R"({"name": "a", "dataset": "synthetic"})"); }), 400);
-  EXPECT_EQ(status_of([&] { create(R"({"name": "a", "schedule": "61 * * * *", "dataset": "synthetic"})"); }),
-            400);
-  EXPECT_EQ(status_of([&] { create(R"({"name": "a", "schedule": "0 0 31 4 *", "dataset": "synthetic"})"); }),
-            400);
-  EXPECT_EQ(status_of([&] { create(R"({"name": "a", "schedule": "* * * * *", "dataset": "none"})"); }), 404);
   EXPECT_EQ(status_of([&] {
-              create(R"({"name": "a", "schedule": "* * * * *", "dataset": "synthetic", "models": ["x"]})");
+              create(R"({"name": "a", "schedule": "61 * * * *", "dataset": "synthetic"})");
             }),
-            404);
-  EXPECT_EQ(status_of([&] { create(R"({"name": "a", "schedule": "* * * * *", "dataset": "synthetic", "when": 1})"); }),
             400);
+  EXPECT_EQ(status_of([&] {
+              create(R"({"name": "a", "schedule": "0 0 31 4 *", "dataset": "synthetic"})");
+            }),
+            400);
+  EXPECT_EQ(
+      status_of([&] { create(R"({"name": "a", "schedule": "* * * * *", "dataset": "none"})"); }),
+      404);
+  EXPECT_EQ(
+      status_of([&] {
+        create(
+            R"({"name": "a", "schedule": "* * * * *", "dataset": "synthetic", "models": ["x"]})");
+      }),
+      404);
+  EXPECT_EQ(
+      status_of([&] {
+        create(R"({"name": "a", "schedule": "* * * * *", "dataset": "synthetic", "when": 1})");
+      }),
+      400);
   create(R"({"name": "a", "schedule": "* * * * *", "dataset": "synthetic"})");
-  EXPECT_EQ(status_of([&] { create(R"({"name": "a", "schedule": "* * * * *", "dataset": "synthetic"})"); }), 409);
+  EXPECT_EQ(status_of([&] {
+              create(R"({"name": "a", "schedule": "* * * * *", "dataset": "synthetic"})");
+            }),
+            409);
   try {
     create(R"({"name": "b", "schedule": "* 25 * * *", "dataset": "synthetic"})");
     FAIL();
@@ -103,8 +120,9 @@ TEST(JobsApi, BadJobsAreRefused) {
 
 TEST(JobsApi, PauseResumeDelete) {
   Fixture f;
-  const auto job = create_job(f.db, R"({"name": "j", "schedule": "0 6 * * mon", "dataset": "synthetic"})",
-                              factories(), kNow);
+  const auto job =
+      create_job(f.db, R"({"name": "j", "schedule": "0 6 * * mon", "dataset": "synthetic"})",
+                 factories(), kNow);
   const std::int64_t id = job["id"];
   EXPECT_EQ(job["next_run"], "2026-11-23T06:00:00Z");
   EXPECT_EQ(pause_job(f.db, id)["paused"], true);

@@ -19,14 +19,16 @@ Parameters place(const std::string& lat, const std::string& lon, const std::stri
 
 TEST(PlaceTime, ParsesTimesWithOffsets) {
   // 2013-05-27T15:45:00Z is 1369669500 s after the epoch.
-  for (const char* t : {"2013-05-27T15:45:00Z", "2013-05-27T11:45:00-04:00", "2013-05-27T21:15+05:30"}) {
+  for (const char* t :
+       {"2013-05-27T15:45:00Z", "2013-05-27T11:45:00-04:00", "2013-05-27T21:15+05:30"}) {
     Parameters p = place("42", "-76", t);
     EXPECT_DOUBLE_EQ(parse_place_and_time(p).unix_time_utc_s, 1369669500.0) << t;
   }
 }
 
 TEST(PlaceTime, RejectsMalformedTimesNamingTime) {
-  for (const char* bad : {"2013-05-27T11:45:00", "2013-13-01T00:00Z", "2013-02-29T00:00Z", "yesterday"}) {
+  for (const char* bad :
+       {"2013-05-27T11:45:00", "2013-13-01T00:00Z", "2013-02-29T00:00Z", "yesterday"}) {
     Parameters p = place("42", "-76", bad);
     try {
       parse_place_and_time(p);

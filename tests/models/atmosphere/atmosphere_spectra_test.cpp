@@ -43,7 +43,8 @@ TEST(AtmosphereSpectra, GrassAlbedoIsHeldBeyond800Nm) {
   EXPECT_DOUBLE_EQ(s.ground_albedo[0], s.ground_albedo[1]);
   AtmosphereParameters constant;
   constant.ground_albedo = 0.3;
-  EXPECT_DOUBLE_EQ(AtmosphereSpectra::build(constant, WavelengthGrid::paper_bins()).ground_albedo[5], 0.3);
+  EXPECT_DOUBLE_EQ(
+      AtmosphereSpectra::build(constant, WavelengthGrid::paper_bins()).ground_albedo[5], 0.3);
 }
 
 TEST(AtmosphereParameters, ValidationNamesTheParameterAndRejectsNaN) {

@@ -20,8 +20,10 @@ Spectrum sky_like(const WavelengthGrid& grid, double exponent) {
 }
 
 double relative_rgb_error(const LinearSrgb& a, const LinearSrgb& reference) {
-  const double norm = std::sqrt(reference.r * reference.r + reference.g * reference.g + reference.b * reference.b);
-  return std::sqrt((a.r - reference.r) * (a.r - reference.r) + (a.g - reference.g) * (a.g - reference.g) +
+  const double norm =
+      std::sqrt(reference.r * reference.r + reference.g * reference.g + reference.b * reference.b);
+  return std::sqrt((a.r - reference.r) * (a.r - reference.r) +
+                   (a.g - reference.g) * (a.g - reference.g) +
                    (a.b - reference.b) * (a.b - reference.b)) /
          norm;
 }
@@ -36,8 +38,10 @@ TEST_P(ThreeWavelengthRgbTest, MatchesTheFortyWavelengthPath) {
   const LinearSrgb three = method.rgb(sky_like(method.grid(), exponent));
   const double error = relative_rgb_error(three, reference);
   RecordProperty("relative_rgb_error", std::to_string(error));
-  std::printf("lambda^-%.1f sky: 3-wavelength RGB relative error %.4f (rgb %.5f %.5f %.5f vs %.5f %.5f %.5f)\n",
-              exponent, error, three.r, three.g, three.b, reference.r, reference.g, reference.b);
+  std::printf(
+      "lambda^-%.1f sky: 3-wavelength RGB relative error %.4f (rgb %.5f %.5f %.5f vs %.5f %.5f "
+      "%.5f)\n",
+      exponent, error, three.r, three.g, three.b, reference.r, reference.g, reference.b);
   // The paper reports a PSNR of about 40 dB on rendered skies; on these spectra the method is
   // exact for a = 3 up to solar-spectrum detail and the 40-bin quadrature.
   EXPECT_LT(error, exponent == 3.0 ? 0.02 : 0.06);
@@ -56,14 +60,15 @@ TEST_P(ThreeWavelengthRgbTest, ReconstructedSpectrumIsCloseToTheFullSpectrum) {
     mean += truth[i];
   }
   const double relative_rmse = std::sqrt(squared / n) / (mean / n);
-  std::printf("lambda^-%.1f sky: 3-sample reconstruction relative RMSE %.4f over 360..712.5 nm\n", exponent,
-              relative_rmse);
+  std::printf("lambda^-%.1f sky: 3-sample reconstruction relative RMSE %.4f over 360..712.5 nm\n",
+              exponent, relative_rmse);
   // Measured: 0.199 (a = 4), 0.141 (3), 0.109 (2), 0.110 (1.3); the CIE daylight basis cannot
   // follow a pure lambda^-4 sky exactly. Real sky spectra are compared in the models' tests.
   EXPECT_LT(relative_rmse, exponent >= 4.0 ? 0.21 : exponent >= 3.0 ? 0.15 : 0.12);
 }
 
-INSTANTIATE_TEST_SUITE_P(SkyExponents, ThreeWavelengthRgbTest, ::testing::Values(4.0, 3.0, 2.0, 1.3));
+INSTANTIATE_TEST_SUITE_P(SkyExponents, ThreeWavelengthRgbTest,
+                         ::testing::Values(4.0, 3.0, 2.0, 1.3));
 
 TEST(ThreeWavelengthRgb, ConstantsArePositiveAndGridIsIncreasing) {
   const ThreeWavelengthRgb method;

@@ -26,7 +26,8 @@ TEST(FastExpFloat, UnderflowsToExactlyZeroAndStaysInZeroOneOutsideItsDomain) {
   EXPECT_EQ(exp_nonpositive_float(-1e30f), 0.0f);
   EXPECT_EQ(exp_nonpositive_float(-std::numeric_limits<float>::infinity()), 0.0f);
   EXPECT_EQ(exp_nonpositive_float(3.0f), 1.0f);
-  for (float nan : {std::numeric_limits<float>::quiet_NaN(), -std::numeric_limits<float>::quiet_NaN()}) {
+  for (float nan :
+       {std::numeric_limits<float>::quiet_NaN(), -std::numeric_limits<float>::quiet_NaN()}) {
     const float v = exp_nonpositive_float(nan);
     EXPECT_TRUE(v >= 0.0f && v <= 1.0f);
   }

@@ -14,13 +14,17 @@ namespace {
 
 constexpr double kR = 6360e3, kTop = 6420e3;
 
-AtmosphereSpectra paper_atmosphere() { return AtmosphereSpectra::build({}, WavelengthGrid::paper_bins()); }
+AtmosphereSpectra paper_atmosphere() {
+  return AtmosphereSpectra::build({}, WavelengthGrid::paper_bins());
+}
 
 TEST(OpticalDepth, VerticalRayMatchesClosedFormForBothScaleHeights) {
   for (double h : {1200.0, 8000.0}) {
     const double exact = vertical_optical_length_m(0.0, kTop - kR, h);
-    EXPECT_NEAR(exponential_optical_length_m(kR, 1.0, kTop - kR, kR, h, RayQuadratureOptions::reference()) / exact,
-                1.0, 1e-13);
+    EXPECT_NEAR(
+        exponential_optical_length_m(kR, 1.0, kTop - kR, kR, h, RayQuadratureOptions::reference()) /
+            exact,
+        1.0, 1e-13);
     EXPECT_NEAR(exponential_optical_length_m(kR, 1.0, kTop - kR, kR, h) / exact, 1.0, 1e-8);
     // Downwards from 10 km to the ground.
     EXPECT_NEAR(exponential_optical_length_m(kR + 10e3, -1.0, 10e3, kR, h) /
@@ -34,8 +38,9 @@ TEST(OpticalDepth, VerticalTransmittanceIsExpOfColumnDepth) {
   const AtmosphereSpectra atmosphere = paper_atmosphere();
   const Spectrum t = transmittance_to_space(atmosphere, kR, 1.0, RayQuadratureOptions::reference());
   for (std::size_t i = 0; i < t.size(); ++i) {
-    const double tau = atmosphere.rayleigh_scattering_per_m[i] * 8000.0 * (1.0 - std::exp(-60.0 / 8.0)) +
-                       atmosphere.mie_extinction_per_m[i] * 1200.0 * (1.0 - std::exp(-50.0));
+    const double tau =
+        atmosphere.rayleigh_scattering_per_m[i] * 8000.0 * (1.0 - std::exp(-60.0 / 8.0)) +
+        atmosphere.mie_extinction_per_m[i] * 1200.0 * (1.0 - std::exp(-50.0));
     EXPECT_NEAR(t[i] / std::exp(-tau), 1.0, 1e-12) << i;
   }
 }
@@ -46,9 +51,11 @@ TEST(OpticalDepth, HorizontalRayMatchesChapmanAsymptotics) {
   // runs far enough (2000 km) for the exponential tail to vanish.
   for (double h : {1200.0, 8000.0}) {
     const double x = kR / h;
-    const double chapman = std::sqrt(kPi * x / 2.0) * (1.0 + 3.0 / (8.0 * x) - 15.0 / (128.0 * x * x) +
-                                                     315.0 / (3072.0 * x * x * x));
-    const double length = exponential_optical_length_m(kR, 0.0, 2000e3, kR, h, RayQuadratureOptions::reference());
+    const double chapman =
+        std::sqrt(kPi * x / 2.0) *
+        (1.0 + 3.0 / (8.0 * x) - 15.0 / (128.0 * x * x) + 315.0 / (3072.0 * x * x * x));
+    const double length =
+        exponential_optical_length_m(kR, 0.0, 2000e3, kR, h, RayQuadratureOptions::reference());
     EXPECT_NEAR(length / (h * chapman), 1.0, 1e-10) << h;
   }
 }
@@ -59,10 +66,12 @@ TEST(OpticalDepth, ChordFromSpaceIsTwiceTheHalfChordFromTheTangentPoint) {
   for (double tangent_altitude : {1.0, 100.0, 5000.0, 30000.0}) {
     const double c = kR + tangent_altitude;
     const double mu = -std::sqrt(1.0 - (c / r) * (c / r));
-    const auto chord = optical_lengths_to_space(atmosphere, r, mu, RayQuadratureOptions::reference());
+    const auto chord =
+        optical_lengths_to_space(atmosphere, r, mu, RayQuadratureOptions::reference());
     ASSERT_TRUE(chord.has_value());
     const OpticalLengths half =
-        optical_lengths(atmosphere, c, 0.0, distance_to_sphere_from_inside(c, 0.0, kTop), RayQuadratureOptions::reference());
+        optical_lengths(atmosphere, c, 0.0, distance_to_sphere_from_inside(c, 0.0, kTop),
+                        RayQuadratureOptions::reference());
     EXPECT_NEAR(chord->rayleigh_m / (2.0 * half.rayleigh_m), 1.0, 1e-8) << tangent_altitude;
     EXPECT_NEAR(chord->mie_m / (2.0 * half.mie_m), 1.0, 1e-8) << tangent_altitude;
   }

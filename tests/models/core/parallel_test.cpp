@@ -10,12 +10,18 @@ namespace {
 
 TEST(ParallelFor, VisitsEveryIndexExactlyOnce) {
   std::vector<std::atomic<int>> visits(1000);
-  parallel_for(visits.size(), [&](std::size_t i) { visits[i]++; }, 4, 7);
+  parallel_for(
+      visits.size(), [&](std::size_t i) { visits[i]++; }, 4, 7);
   for (const auto& v : visits) EXPECT_EQ(v.load(), 1);
 }
 
 TEST(ParallelFor, RethrowsTheFirstException) {
-  EXPECT_THROW(parallel_for(100, [](std::size_t i) { if (i == 42) throw std::runtime_error("x"); }, 3),
+  EXPECT_THROW(parallel_for(
+                   100,
+                   [](std::size_t i) {
+                     if (i == 42) throw std::runtime_error("x");
+                   },
+                   3),
                std::runtime_error);
 }
 

@@ -15,7 +15,8 @@ TEST(Quadrature, GaussLegendreIsExactForPolynomialsOfDegree2nMinus1) {
     const int degree = 2 * n - 1;
     double sum = 0.0;
     for (const auto& [x, w] : gauss_legendre(n, 0.0, 2.0)) sum += w * std::pow(x, degree);
-    EXPECT_NEAR(sum, std::pow(2.0, degree + 1) / (degree + 1), 1e-11 * std::pow(2.0, degree + 1)) << n;
+    EXPECT_NEAR(sum, std::pow(2.0, degree + 1) / (degree + 1), 1e-11 * std::pow(2.0, degree + 1))
+        << n;
   }
 }
 

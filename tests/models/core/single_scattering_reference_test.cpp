@@ -30,10 +30,12 @@ TEST(SingleScatteringReference, ZenithViewWithSunAtZenithHasAClosedForm) {
   for (std::size_t i = 0; i < s.radiance.size(); ++i) {
     const double column_r = 8000.0 * (1.0 - std::exp(-60.0 / 8.0));
     const double column_m = 1200.0 * (1.0 - std::exp(-50.0));
-    const double tau = a.rayleigh_scattering_per_m[i] * column_r + a.mie_extinction_per_m[i] * column_m;
-    const double expected = a.solar_irradiance_w_m2_nm[i] * std::exp(-tau) *
-                            (a.rayleigh_scattering_per_m[i] * rayleigh_phase(1.0) * column_r +
-                             a.mie_scattering_per_m[i] * cornette_shanks_phase(1.0, 0.7) * column_m);
+    const double tau =
+        a.rayleigh_scattering_per_m[i] * column_r + a.mie_extinction_per_m[i] * column_m;
+    const double expected =
+        a.solar_irradiance_w_m2_nm[i] * std::exp(-tau) *
+        (a.rayleigh_scattering_per_m[i] * rayleigh_phase(1.0) * column_r +
+         a.mie_scattering_per_m[i] * cornette_shanks_phase(1.0, 0.7) * column_m);
     EXPECT_NEAR(s.radiance[i] / expected, 1.0, 1e-10) << i;
     EXPECT_NEAR(s.transmittance[i] / std::exp(-tau), 1.0, 1e-12) << i;
   }
@@ -49,7 +51,8 @@ TEST(SingleScatteringReference, NadirViewFromSpaceInPureRayleighAtmosphere) {
   EXPECT_TRUE(s.hits_ground);
   for (std::size_t i = 0; i < s.radiance.size(); ++i) {
     const double tau = a.rayleigh_scattering_per_m[i] * 8000.0 * (1.0 - std::exp(-60.0 / 8.0));
-    const double expected = a.solar_irradiance_w_m2_nm[i] * rayleigh_phase(-1.0) * 0.5 * (1.0 - std::exp(-2.0 * tau));
+    const double expected =
+        a.solar_irradiance_w_m2_nm[i] * rayleigh_phase(-1.0) * 0.5 * (1.0 - std::exp(-2.0 * tau));
     EXPECT_NEAR(s.radiance[i] / expected, 1.0, 1e-10) << i;
   }
 }
@@ -57,8 +60,8 @@ TEST(SingleScatteringReference, NadirViewFromSpaceInPureRayleighAtmosphere) {
 TEST(SingleScatteringReference, AerialPerspectiveIsAdditive) {
   // L(0, D) = L(0, d) + T(0, d) L(d, D) along a low, sun-facing view.
   const AtmosphereSpectra a = atmosphere_with(0.04);
-  const RaySunGeometry ray{kR + 200.0, std::cos(degrees_to_radians(85.0)), std::cos(degrees_to_radians(60.0)),
-                           std::cos(degrees_to_radians(30.0))};
+  const RaySunGeometry ray{kR + 200.0, std::cos(degrees_to_radians(85.0)),
+                           std::cos(degrees_to_radians(60.0)), std::cos(degrees_to_radians(30.0))};
   const double d = 7000.0;
   const ScatteringAlongRay whole = single_scattering_reference(a, ray);
   const ScatteringAlongRay near = single_scattering_reference(a, ray, d);
@@ -67,8 +70,11 @@ TEST(SingleScatteringReference, AerialPerspectiveIsAdditive) {
   const ScatteringAlongRay far = single_scattering_reference(a, rest);
   EXPECT_NEAR(near.length_m, d, 1e-9);
   for (std::size_t i = 0; i < whole.radiance.size(); ++i) {
-    EXPECT_NEAR((near.radiance[i] + near.transmittance[i] * far.radiance[i]) / whole.radiance[i], 1.0, 1e-9) << i;
-    EXPECT_NEAR(near.transmittance[i] * far.transmittance[i] / whole.transmittance[i], 1.0, 1e-9) << i;
+    EXPECT_NEAR((near.radiance[i] + near.transmittance[i] * far.radiance[i]) / whole.radiance[i],
+                1.0, 1e-9)
+        << i;
+    EXPECT_NEAR(near.transmittance[i] * far.transmittance[i] / whole.transmittance[i], 1.0, 1e-9)
+        << i;
   }
 }
 
@@ -77,12 +83,14 @@ TEST(SingleScatteringReference, FiniteAndNonNegativeInHardCases) {
   struct Case {
     double altitude, view_zenith_deg, sun_zenith_deg, view_sun_deg;
   };
-  for (const Case& c : {Case{0, 90, 30, 0}, Case{0, 90.0001, 30, 90}, Case{0, 60, 100, 120},
-                        Case{20e3, 95, 95, 5}, Case{500e3, 110, 80, 40}, Case{500e3, 160, 170, 30},
-                        Case{0, 0, 180, 180}}) {
+  for (const Case& c :
+       {Case{0, 90, 30, 0}, Case{0, 90.0001, 30, 90}, Case{0, 60, 100, 120}, Case{20e3, 95, 95, 5},
+        Case{500e3, 110, 80, 40}, Case{500e3, 160, 170, 30}, Case{0, 0, 180, 180}}) {
     const RaySunGeometry ray{kR + c.altitude, std::cos(degrees_to_radians(c.view_zenith_deg)),
-                             std::cos(degrees_to_radians(c.sun_zenith_deg)), std::cos(degrees_to_radians(c.view_sun_deg))};
-    const ScatteringAlongRay s = single_scattering_reference(a, ray, std::numeric_limits<double>::infinity(), {});
+                             std::cos(degrees_to_radians(c.sun_zenith_deg)),
+                             std::cos(degrees_to_radians(c.view_sun_deg))};
+    const ScatteringAlongRay s =
+        single_scattering_reference(a, ray, std::numeric_limits<double>::infinity(), {});
     for (std::size_t i = 0; i < s.radiance.size(); ++i) {
       EXPECT_TRUE(is_finite_non_negative(s.radiance[i])) << c.view_zenith_deg << ' ' << i;
       EXPECT_TRUE(is_finite_non_negative(s.transmittance[i]) && s.transmittance[i] <= 1.0);

@@ -79,9 +79,11 @@ TEST(SkyModel, VerticalPlaneSeesHalfTheUniformSkyWhenTheGroundIsNotAnswered) {
 
 TEST(SkyModel, RefusesTheSunBelowTheModelsLimitBeforeComputing) {
   const UniformSky sky(small_config(), uniform_descriptor(90, false));
-  EXPECT_EQ(sky.check_sun({degrees_to_radians(95.0), 0.0}), SampleStatus::sun_below_horizon_unsupported);
+  EXPECT_EQ(sky.check_sun({degrees_to_radians(95.0), 0.0}),
+            SampleStatus::sun_below_horizon_unsupported);
   EXPECT_THROW(sky.prepare_sun({degrees_to_radians(95.0), 0.0}), std::invalid_argument);
-  EXPECT_EQ(sky.check_sun({std::numeric_limits<double>::quiet_NaN(), 0.0}), SampleStatus::invalid_input);
+  EXPECT_EQ(sky.check_sun({std::numeric_limits<double>::quiet_NaN(), 0.0}),
+            SampleStatus::invalid_input);
 }
 
 TEST(SkyModel, SetsAStatusPerViewAndComputesOnlyAnswerableViews) {
@@ -101,7 +103,8 @@ TEST(SkyModel, SetsAStatusPerViewAndComputesOnlyAnswerableViews) {
 }
 
 TEST(SkyModel, NonFiniteOrNegativeValuesNeverLeaveAQuery) {
-  for (double poison : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(), -1.0}) {
+  for (double poison :
+       {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(), -1.0}) {
     const UniformSky sky(small_config(), uniform_descriptor(90, false), poison);
     const auto sun = sky.prepare_sun({0.3, 1.0});
     const std::vector<ViewDirection> views = {{0.5, 0.0}, {0.6, 0.0}};

@@ -70,7 +70,8 @@ TEST(SunStateCache, KeepsAtMostCapacityEntriesDroppingTheLeastRecentlyUsed) {
 
 TEST(SunStateCache, AFailedBuildReachesItsWaitersAndIsNotCached) {
   SunStateCache<int> cache(2);
-  EXPECT_THROW(cache.get_or_build("x", []() -> std::shared_ptr<const int> { throw std::runtime_error("no"); }),
+  EXPECT_THROW(cache.get_or_build(
+                   "x", []() -> std::shared_ptr<const int> { throw std::runtime_error("no"); }),
                std::runtime_error);
   EXPECT_EQ(cache.size(), 0u);
   const auto v = cache.get_or_build("x", [] { return std::make_shared<const int>(7); });

@@ -24,7 +24,9 @@ TEST(HaberLayers, EachLayerHoldsTheSameRayleighMass) {
   EXPECT_EQ(kLayers.layer_index(6360e3), 0);
   EXPECT_EQ(kLayers.layer_index(6360e3 - 1e-3), 0);  // clamped, not -1
   EXPECT_EQ(kLayers.layer_index(6360e3 + 34999.0), 49);
-  EXPECT_EQ(kLayers.layer_index(6360e3 + 0.5 * (kLayers.boundary_height_m(7) + kLayers.boundary_height_m(8))), 7);
+  EXPECT_EQ(kLayers.layer_index(
+                6360e3 + 0.5 * (kLayers.boundary_height_m(7) + kLayers.boundary_height_m(8))),
+            7);
 }
 
 TEST(HaberLayers, VerticalOpticalLengthIsTheSumOfTheLayerDensitiesTimesThickness) {
@@ -32,7 +34,8 @@ TEST(HaberLayers, VerticalOpticalLengthIsTheSumOfTheLayerDensitiesTimesThickness
   const Vec3 top{0.0, 0.0, 6360e3 + 35e3 - 1.0};
   double expected_rayleigh = 0.0;
   for (int i = 0; i < 50; ++i) {
-    const double thickness = std::min(kLayers.boundary_height_m(i + 1), 35e3 - 1.0) - kLayers.boundary_height_m(i);
+    const double thickness =
+        std::min(kLayers.boundary_height_m(i + 1), 35e3 - 1.0) - kLayers.boundary_height_m(i);
     expected_rayleigh += kLayers.rayleigh_density(i) * thickness;
   }
   const OpticalLength up = optical_length(kLayers, ground, top);

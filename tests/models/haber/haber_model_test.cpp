@@ -2,8 +2,6 @@
 // about the sun's vertical plane), the sun below the horizon, shared per-sun states, and its
 // single scattering against a direct integration. Unit tests use a coarse grid (24 sectors)
 // except where the study's grid is cheap (grid construction, single scattering only).
-#include "models/haber/haber.h"
-
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -12,6 +10,7 @@
 #include <vector>
 
 #include "models/core/numeric.h"
+#include "models/haber/haber.h"
 #include "models/registry.h"
 #include "tests/models/haber/haber_reference.h"
 
@@ -40,8 +39,10 @@ TEST(HaberModel, GridOfTheStudy) {
   EXPECT_EQ(model->grid().ring_count(), 20);
   EXPECT_EQ(model->grid().shell_count(), 128);
   EXPECT_EQ(model->grid().cell_count(), 65268u);  // the paper's count
-  EXPECT_NEAR(std::pow(model->grid().ring_cells()[1].radius_m / model->grid().ring_cells()[0].radius_m, 1.0), 1.09125,
-              5e-5);
+  EXPECT_NEAR(
+      std::pow(model->grid().ring_cells()[1].radius_m / model->grid().ring_cells()[0].radius_m,
+               1.0),
+      1.09125, 5e-5);
   const ModelFactory* factory = find_model("haber");
   ASSERT_NE(factory, nullptr);
   EXPECT_TRUE(factory->descriptor->capabilities.per_sun_precomputation);
@@ -56,7 +57,8 @@ TEST(HaberModel, RadianceIsFiniteNonNegativeAndSymmetricAboutTheSunPlane) {
   SpectralBatch out;
   model->sky_radiance(*state, Viewpoint{}, views, out);
   std::vector<ViewDirection> mirrored;
-  for (const auto& v : views) mirrored.push_back({v.zenith_rad, 2.0 * sun.azimuth_rad - v.azimuth_rad});
+  for (const auto& v : views)
+    mirrored.push_back({v.zenith_rad, 2.0 * sun.azimuth_rad - v.azimuth_rad});
   SpectralBatch mirrored_out;
   model->sky_radiance(*state, Viewpoint{}, mirrored, mirrored_out);
   for (std::size_t i = 0; i < views.size(); ++i) {
@@ -130,7 +132,8 @@ TEST(HaberModel, ConcurrentRequestsForOneSunBucketBuildOneState) {
   for (int t = 0; t < kThreads; ++t) {
     // Different suns of the same 1-degree bucket (29.6 .. 30.1 degrees), different azimuths.
     threads.emplace_back([&, t] {
-      states[t] = model->prepare_sun({degrees_to_radians(29.6 + 0.1 * t), degrees_to_radians(10.0 * t)});
+      states[t] =
+          model->prepare_sun({degrees_to_radians(29.6 + 0.1 * t), degrees_to_radians(10.0 * t)});
     });
   }
   for (auto& thread : threads) thread.join();
@@ -141,7 +144,8 @@ TEST(HaberModel, ConcurrentRequestsForOneSunBucketBuildOneState) {
     EXPECT_EQ(&state.dome(), &first.dome());
     EXPECT_DOUBLE_EQ(state.dome_sun_zenith_rad(), degrees_to_radians(30.0));
   }
-  EXPECT_DOUBLE_EQ(states[3]->sun().azimuth_rad, degrees_to_radians(30.0));  // the exact sun is kept
+  EXPECT_DOUBLE_EQ(states[3]->sun().azimuth_rad,
+                   degrees_to_radians(30.0));  // the exact sun is kept
   model->prepare_sun({degrees_to_radians(31.0), 0.0});
   EXPECT_EQ(model->cache_stats().builds, 2u);
 }
@@ -157,18 +161,21 @@ TEST(HaberModel, SingleScatteringMatchesDirectIntegration) {
   const double sun_zenith = degrees_to_radians(40.0);
   const auto state = model->prepare_sun({sun_zenith, 0.0});
   const auto& dome = dynamic_cast<const HaberSunState&>(*state).dome();
-  const testing::ScatteringReference reference(model->grid().layers(), model->atmosphere(), sun_zenith);
+  const testing::ScatteringReference reference(model->grid().layers(), model->atmosphere(),
+                                               sun_zenith);
   const double step = model->grid().angular_step_rad();
   const Vec3 viewer{0.0, 0.0, model->grid().layers().earth_radius_m()};
   for (int ring : {0, 5, 9, 13, 17}) {
     for (int sector : {0, 8, 20, 35}) {
       const double theta = (ring + 0.5) * step;
       const double phi = (sector + 0.5) * step;
-      const Vec3 direction{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+      const Vec3 direction{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                           std::cos(theta)};
       for (std::size_t w : {0u, 12u, 30u}) {
         const double expected = reference.single(viewer, direction, w);
         const double tolerance = (ring == 17 ? 0.06 : 0.03) * expected;
-        EXPECT_NEAR(dome.node(ring, sector)[w], expected, tolerance) << "ring " << ring << " sector " << sector << " w " << w;
+        EXPECT_NEAR(dome.node(ring, sector)[w], expected, tolerance)
+            << "ring " << ring << " sector " << sector << " w " << w;
       }
     }
   }

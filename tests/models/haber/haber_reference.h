@@ -18,14 +18,19 @@ namespace clearsky::haber::testing {
 
 class ScatteringReference {
  public:
-  ScatteringReference(const LayeredAtmosphere& layers, const AtmosphereSpectra& atmosphere, double sun_zenith_rad)
-      : layers_(layers), atmosphere_(atmosphere), sun_{std::sin(sun_zenith_rad), 0.0, std::cos(sun_zenith_rad)} {}
+  ScatteringReference(const LayeredAtmosphere& layers, const AtmosphereSpectra& atmosphere,
+                      double sun_zenith_rad)
+      : layers_(layers),
+        atmosphere_(atmosphere),
+        sun_{std::sin(sun_zenith_rad), 0.0, std::cos(sun_zenith_rad)} {}
 
   // Single-scattered radiance reaching `origin` from direction `direction` (unit), at each
   // wavelength index of `wavelengths`.
-  std::vector<double> single(Vec3 origin, Vec3 direction, const std::vector<std::size_t>& wavelengths,
+  std::vector<double> single(Vec3 origin, Vec3 direction,
+                             const std::vector<std::size_t>& wavelengths,
                              int points_per_layer = 4) const {
-    const double mie_phase = cornette_shanks_phase(dot(direction, sun_), atmosphere_.parameters.mie_phase_g);
+    const double mie_phase =
+        cornette_shanks_phase(dot(direction, sun_), atmosphere_.parameters.mie_phase_g);
     std::vector<double> sum(wavelengths.size(), 0.0);
     for_each_sample(origin, direction, points_per_layer, [&](Vec3 x, int layer, double weight) {
       const OpticalLength view = optical_length(layers_, origin, x);
@@ -33,8 +38,10 @@ class ScatteringReference {
       if (view.blocked || sun.blocked) return;
       for (std::size_t i = 0; i < wavelengths.size(); ++i) {
         const std::size_t w = wavelengths[i];
-        const double scattered = atmosphere_.rayleigh_scattering_per_m[w] * layers_.rayleigh_density(layer) * isotropic_phase() +
-                                 atmosphere_.mie_scattering_per_m[w] * layers_.mie_density(layer) * mie_phase;
+        const double scattered =
+            atmosphere_.rayleigh_scattering_per_m[w] * layers_.rayleigh_density(layer) *
+                isotropic_phase() +
+            atmosphere_.mie_scattering_per_m[w] * layers_.mie_density(layer) * mie_phase;
         sum[i] += weight * transmittance(view, w) * transmittance(sun, w) * scattered *
                   atmosphere_.solar_irradiance_w_m2_nm[w];
       }
@@ -48,7 +55,8 @@ class ScatteringReference {
   // Double-scattered radiance reaching the ground viewer from `direction`: the single-scattered
   // radiance integrated over all directions at each point, scattered isotropically.
   std::vector<double> double_scattering(Vec3 direction, const std::vector<std::size_t>& wavelengths,
-                                        int zenith_nodes = 16, int azimuth_nodes = 32, int points_per_layer = 1) const {
+                                        int zenith_nodes = 16, int azimuth_nodes = 32,
+                                        int points_per_layer = 1) const {
     const Vec3 viewer{0.0, 0.0, layers_.earth_radius_m()};
     const auto mu_nodes = gauss_legendre(zenith_nodes, -1.0, 1.0);
     std::vector<double> sum(wavelengths.size(), 0.0);
@@ -60,15 +68,18 @@ class ScatteringReference {
           const double phi = 2.0 * kPi * (j + 0.5) / azimuth_nodes;
           const Vec3 omega{s * std::cos(phi), s * std::sin(phi), mu};
           const auto l1 = single(x, omega, wavelengths, points_per_layer);
-          for (std::size_t i = 0; i < l1.size(); ++i) irradiance_over_sphere[i] += w_mu * (2.0 * kPi / azimuth_nodes) * l1[i];
+          for (std::size_t i = 0; i < l1.size(); ++i)
+            irradiance_over_sphere[i] += w_mu * (2.0 * kPi / azimuth_nodes) * l1[i];
         }
       }
       const OpticalLength view = optical_length(layers_, viewer, x);
       for (std::size_t i = 0; i < wavelengths.size(); ++i) {
         const std::size_t w = wavelengths[i];
-        const double scattering = atmosphere_.rayleigh_scattering_per_m[w] * layers_.rayleigh_density(layer) +
-                                  atmosphere_.mie_scattering_per_m[w] * layers_.mie_density(layer);
-        sum[i] += weight * transmittance(view, w) * scattering * isotropic_phase() * irradiance_over_sphere[i];
+        const double scattering =
+            atmosphere_.rayleigh_scattering_per_m[w] * layers_.rayleigh_density(layer) +
+            atmosphere_.mie_scattering_per_m[w] * layers_.mie_density(layer);
+        sum[i] += weight * transmittance(view, w) * scattering * isotropic_phase() *
+                  irradiance_over_sphere[i];
       }
     });
     return sum;
@@ -77,7 +88,8 @@ class ScatteringReference {
  private:
   double transmittance(const OpticalLength& l, std::size_t w) const {
     if (l.blocked) return 0.0;
-    return std::exp(-(atmosphere_.rayleigh_scattering_per_m[w] * l.rayleigh_m + atmosphere_.mie_extinction_per_m[w] * l.mie_m));
+    return std::exp(-(atmosphere_.rayleigh_scattering_per_m[w] * l.rayleigh_m +
+                      atmosphere_.mie_extinction_per_m[w] * l.mie_m));
   }
 
   // Gauss-Legendre samples along the ray from p in direction d up to the top of the layers or

@@ -2,8 +2,6 @@
 // interpolation, the study's rescaling, the solar disc with limb darkening, symmetry,
 // positivity at the horizon, the declared spectral range, the native RGB/XYZ versions and
 // the sky irradiance quadrature.
-#include "tests/models/support/fit_domain_checks.h"
-#include "tests/support/model_queries.h"
 #include "models/hosek/hosek.h"
 
 #include <gtest/gtest.h>
@@ -18,6 +16,8 @@
 #include "models/core/quadrature.h"
 #include "models/registry.h"
 #include "models/spectral/reference_spectra.h"
+#include "tests/models/support/fit_domain_checks.h"
+#include "tests/support/model_queries.h"
 
 namespace clearsky {
 namespace {
@@ -52,7 +52,8 @@ TEST(Hosek, RefusesWhereTheFitTurnsNegativeUnlessAskedToClamp) {
   const auto model = make_hosek();
   const auto clamped = clamped_hosek();
   for (double sun_zenith : {30.0, 60.0, 80.0, 85.0, 88.0, 89.5, 90.0}) {
-    const int outside = testing::expect_refused_only_where_the_fit_turns_negative(*model, *clamped, sun_zenith);
+    const int outside =
+        testing::expect_refused_only_where_the_fit_turns_negative(*model, *clamped, sun_zenith);
     if (sun_zenith <= 60.0) {
       EXPECT_EQ(outside, 0) << sun_zenith;
     }
@@ -62,12 +63,8 @@ TEST(Hosek, RefusesWhereTheFitTurnsNegativeUnlessAskedToClamp) {
   }
 }
 
-
-
-
 // Index of grid wavelength nm in the paper's bins.
 std::size_t bin(double nm) { return WavelengthGrid::paper_bins().index_of(nm); }
-
 
 TEST(Hosek, DescriptorDeclaresParametersRangeAndLimits) {
   const ModelDescriptor& d = hosek_descriptor();
@@ -194,7 +191,8 @@ TEST(Hosek, PositiveAndFiniteUpToTheHorizonAndForTheSunAtTheHorizon) {
       model->sky_radiance(*sun, {}, views, batch);
       double largest = 0.0;
       for (std::size_t i = 0; i < views.size(); ++i) {
-        if (batch.status[i] == SampleStatus::outside_fit_domain) continue;  // RefusesWhere...: low sun, T = 10
+        if (batch.status[i] == SampleStatus::outside_fit_domain)
+          continue;  // RefusesWhere...: low sun, T = 10
         ASSERT_EQ(batch.status[i], SampleStatus::ok)
             << turbidity << " " << sun_zenith << " view " << i;
         for (double v : batch.spectrum(i)) {

@@ -58,11 +58,14 @@ TEST(Nishita93Tables, LookupsMatchTheReferenceWithinTheDiscretisationError) {
   for (double altitude : {0.0, 700.0, 3000.0, 15000.0}) {
     for (double mu : {1.0, 0.8, 0.5, 0.3, 0.18}) {
       const auto fast = t.sun_optical_lengths(kR + altitude, mu);
-      const auto exact = optical_lengths_to_space(atmosphere, kR + altitude, mu, RayQuadratureOptions::reference());
+      const auto exact = optical_lengths_to_space(atmosphere, kR + altitude, mu,
+                                                  RayQuadratureOptions::reference());
       ASSERT_TRUE(fast && exact);
       const bool well_resolved = altitude <= 3000.0 && mu >= 0.3;
-      EXPECT_NEAR(fast->rayleigh_m / exact->rayleigh_m, 1.0, well_resolved ? 0.03 : 0.25) << altitude << ' ' << mu;
-      EXPECT_NEAR(fast->mie_m / exact->mie_m, 1.0, well_resolved ? 0.05 : 0.25) << altitude << ' ' << mu;
+      EXPECT_NEAR(fast->rayleigh_m / exact->rayleigh_m, 1.0, well_resolved ? 0.03 : 0.25)
+          << altitude << ' ' << mu;
+      EXPECT_NEAR(fast->mie_m / exact->mie_m, 1.0, well_resolved ? 0.05 : 0.25)
+          << altitude << ' ' << mu;
     }
   }
 }
@@ -77,7 +80,8 @@ TEST(Nishita93Tables, AgainstTheAxisFollowsTheChordThroughTheTangentPoint) {
     EXPECT_DOUBLE_EQ(along.mie_m, against.mie_m) << i;
   }
   // Downward rays hold more air than upward ones from the same point.
-  for (int j = 0; j < 63; ++j) EXPECT_GT(t.node(30, j, true).rayleigh_m, t.node(30, j, false).rayleigh_m) << j;
+  for (int j = 0; j < 63; ++j)
+    EXPECT_GT(t.node(30, j, true).rayleigh_m, t.node(30, j, false).rayleigh_m) << j;
 }
 
 TEST(Nishita93Tables, TheEarthShadowsTheSun) {

@@ -40,14 +40,18 @@ TEST(Nishita93, IsRegisteredWithItsCapabilities) {
   EXPECT_THROW(factory->create(bad, {}), std::invalid_argument);
 }
 
-TEST(Nishita93, FiniteAndNonNegativeEverywhere) { testing::expect_finite_non_negative_everywhere(paper_model()); }
+TEST(Nishita93, FiniteAndNonNegativeEverywhere) {
+  testing::expect_finite_non_negative_everywhere(paper_model());
+}
 
 TEST(Nishita93, SymmetricAboutTheSunPlane) {
   testing::expect_symmetric_about_the_sun_plane(paper_model(), 0.0);
   testing::expect_symmetric_about_the_sun_plane(paper_model(), 2e6);
 }
 
-TEST(Nishita93, ContinuousAcrossTheHorizon) { testing::expect_continuous_across_the_horizon(paper_model(), 0.01); }
+TEST(Nishita93, ContinuousAcrossTheHorizon) {
+  testing::expect_continuous_across_the_horizon(paper_model(), 0.01);
+}
 
 TEST(Nishita93, MatchesTheReferenceIntegratorWithinTwoPercentForTheStudysSkies) {
   // Ground observer, sun zenith <= 60 degrees, views up to the study's lowest ring (77.9
@@ -64,9 +68,11 @@ TEST(Nishita93, MatchesTheReferenceIntegratorWithinTwoPercentForTheStudysSkies) 
     const SpectralBatch out = radiance_of(model, sun_at_degrees(sun_zenith), 0.0, views);
     for (std::size_t i = 0; i < views.size(); ++i) {
       const auto ref = single_scattering_reference(
-          model.atmosphere(), RaySunGeometry::from(kR, {0.0}, views[i], sun_at_degrees(sun_zenith)));
+          model.atmosphere(),
+          RaySunGeometry::from(kR, {0.0}, views[i], sun_at_degrees(sun_zenith)));
       for (std::size_t w = 0; w < ref.radiance.size(); ++w) {
-        EXPECT_NEAR(out.spectrum(i)[w] / ref.radiance[w], 1.0, 0.02) << sun_zenith << ' ' << i << ' ' << w;
+        EXPECT_NEAR(out.spectrum(i)[w] / ref.radiance[w], 1.0, 0.02)
+            << sun_zenith << ' ' << i << ' ' << w;
       }
     }
   }
@@ -75,12 +81,12 @@ TEST(Nishita93, MatchesTheReferenceIntegratorWithinTwoPercentForTheStudysSkies) 
 TEST(Nishita93, ViewFromSpaceLookingDownMatchesTheReference) {
   const auto& model = dynamic_cast<const Nishita93Model&>(paper_model());
   const double altitude = 1000e3;
-  const std::vector<ViewDirection> views = {view_at_degrees(180.0, 0.0), view_at_degrees(150.0, 90.0),
-                                            view_at_degrees(0.0, 0.0)};
+  const std::vector<ViewDirection> views = {
+      view_at_degrees(180.0, 0.0), view_at_degrees(150.0, 90.0), view_at_degrees(0.0, 0.0)};
   const SpectralBatch out = radiance_of(model, sun_at_degrees(30.0), altitude, views);
   for (std::size_t i = 0; i < 2; ++i) {
-    const auto ref = single_scattering_reference(model.atmosphere(),
-                                                 RaySunGeometry::from(kR, {altitude}, views[i], sun_at_degrees(30.0)));
+    const auto ref = single_scattering_reference(
+        model.atmosphere(), RaySunGeometry::from(kR, {altitude}, views[i], sun_at_degrees(30.0)));
     for (std::size_t w = 0; w < ref.radiance.size(); ++w) {
       EXPECT_GT(out.spectrum(i)[w], 0.0);
       EXPECT_NEAR(out.spectrum(i)[w] / ref.radiance[w], 1.0, 0.03) << i << ' ' << w;
@@ -99,7 +105,8 @@ TEST(Nishita93, SunBelowTheHorizonDarkensTheSkyAndTheNadirSunBlackensIt) {
     EXPECT_EQ(night.spectrum(0)[w], 0.0);
   }
   // From 30 km the sun 5 degrees below the horizontal still lights the air around it.
-  const SpectralBatch high = radiance_of(paper_model(), sun_at_degrees(95.0), 30e3, {view_at_degrees(95.0, 0.0)});
+  const SpectralBatch high =
+      radiance_of(paper_model(), sun_at_degrees(95.0), 30e3, {view_at_degrees(95.0, 0.0)});
   EXPECT_GT(high.spectrum(0)[20], 0.0);
 }
 
@@ -109,15 +116,18 @@ TEST(Nishita93, SunIrradianceMatchesTheReferenceTransmittance) {
     const auto state = model.prepare_sun(sun_at_degrees(sun_zenith));
     const SpectralSample e = model.sun_irradiance(*state, {0.0});
     ASSERT_EQ(e.status, SampleStatus::ok);
-    const Spectrum t = transmittance_to_space(model.atmosphere(), kR, std::cos(degrees_to_radians(sun_zenith)),
-                                              RayQuadratureOptions::reference());
+    const Spectrum t =
+        transmittance_to_space(model.atmosphere(), kR, std::cos(degrees_to_radians(sun_zenith)),
+                               RayQuadratureOptions::reference());
     for (std::size_t w = 0; w < t.size(); ++w) {
       // Optical depths within 2 % (trapezoid over the layers, bilinear lookup).
-      const double depth_fast = -std::log(e.value[w] / model.atmosphere().solar_irradiance_w_m2_nm[w]);
+      const double depth_fast =
+          -std::log(e.value[w] / model.atmosphere().solar_irradiance_w_m2_nm[w]);
       EXPECT_NEAR(depth_fast / -std::log(t[w]), 1.0, 0.02) << sun_zenith << ' ' << w;
     }
   }
-  const SpectralSample shadowed = model.sun_irradiance(*model.prepare_sun(sun_at_degrees(91.0)), {0.0});
+  const SpectralSample shadowed =
+      model.sun_irradiance(*model.prepare_sun(sun_at_degrees(91.0)), {0.0});
   for (double v : shadowed.value) EXPECT_EQ(v, 0.0);
 }
 
@@ -134,7 +144,8 @@ TEST(Nishita93, SkyIrradianceMatchesAFineIndependentIntegration) {
   for (int i = 0; i < n_zenith; ++i) {
     const double theta0 = 0.5 * kPi * i / n_zenith, theta1 = 0.5 * kPi * (i + 1) / n_zenith;
     // Integral of cos sin over the cell, exactly.
-    const double cell = 0.5 * (std::sin(theta1) * std::sin(theta1) - std::sin(theta0) * std::sin(theta0));
+    const double cell =
+        0.5 * (std::sin(theta1) * std::sin(theta1) - std::sin(theta0) * std::sin(theta0));
     for (int j = 0; j < n_azimuth; ++j) {
       views.push_back({0.5 * (theta0 + theta1), 2.0 * kPi * (j + 0.5) / n_azimuth});
       weights.push_back(cell * 2.0 * kPi / n_azimuth);
@@ -162,7 +173,8 @@ TEST(Nishita93, SkyIrradianceMatchesTheReferenceIntegrator) {
       const ViewDirection view{std::acos(mu), 2.0 * kPi * (j + 0.5) / 8.0};
       SpectralBatch out;
       model.sky_radiance(*state, {0.0}, std::span<const ViewDirection>(&view, 1), out);
-      const auto ref = single_scattering_reference(model.atmosphere(), RaySunGeometry::from(kR, {0.0}, view, sun));
+      const auto ref = single_scattering_reference(model.atmosphere(),
+                                                   RaySunGeometry::from(kR, {0.0}, view, sun));
       const double weight = w_mu * mu * 2.0 * kPi / 8.0;
       for (std::size_t w = 0; w < fast.size(); ++w) {
         fast[w] += weight * out.spectrum(0)[w];
@@ -187,7 +199,8 @@ TEST(Nishita93, AerialPerspectiveFromNothingToTheWholeRay) {
   const AerialPerspectiveSample far = model.aerial_perspective(*state, {0.0}, view, 50e3);
   const AerialPerspectiveSample all = model.aerial_perspective(*state, {0.0}, view, 1e7);
   const SpectralBatch sky = radiance_of(model, sun_at_degrees(50.0), 0.0, {view});
-  const auto ref = single_scattering_reference(model.atmosphere(), RaySunGeometry::from(kR, {0.0}, view, sun_at_degrees(50.0)), 5e3);
+  const auto ref = single_scattering_reference(
+      model.atmosphere(), RaySunGeometry::from(kR, {0.0}, view, sun_at_degrees(50.0)), 5e3);
   for (std::size_t w = 0; w < sky.wavelength_count; ++w) {
     EXPECT_LT(near.radiance[w], far.radiance[w]);
     EXPECT_GT(near.transmittance[w], far.transmittance[w]);
@@ -209,8 +222,9 @@ TEST(Nishita93, FinerTablesConvergeTowardsTheReference) {
   const SunPosition sun = sun_at_degrees(45.0);
   const double coarse_value = radiance_of(paper_model(), sun, 0.0, {view}).spectrum(0)[5];
   const double fine_value = radiance_of(*fine_model, sun, 0.0, {view}).spectrum(0)[5];
-  const double exact =
-      single_scattering_reference(paper_model().atmosphere(), RaySunGeometry::from(kR, {0.0}, view, sun)).radiance[5];
+  const double exact = single_scattering_reference(paper_model().atmosphere(),
+                                                   RaySunGeometry::from(kR, {0.0}, view, sun))
+                           .radiance[5];
   EXPECT_LT(std::abs(fine_value - exact), std::abs(coarse_value - exact));
   EXPECT_NEAR(fine_value / exact, 1.0, 0.002);
 }

@@ -36,20 +36,21 @@ std::array<Vec3, kSamplingDirections> directions_for(double sun_zenith_rad) {
 
 TEST(Nishita96Functions, SamplingDirectionsAreTheStudysEight) {
   const auto d = directions_for(degrees_to_radians(30.0));
-  EXPECT_NEAR(d[0].z, 1.0, 1e-15);                           // zenith
-  EXPECT_NEAR(d[1].z, -1.0, 1e-15);                          // nadir
-  EXPECT_NEAR(d[2].x, 1.0, 1e-15);                           // horizontal towards the sun
-  EXPECT_NEAR(d[3].x, -1.0, 1e-15);                          // and away
+  EXPECT_NEAR(d[0].z, 1.0, 1e-15);                                 // zenith
+  EXPECT_NEAR(d[1].z, -1.0, 1e-15);                                // nadir
+  EXPECT_NEAR(d[2].x, 1.0, 1e-15);                                 // horizontal towards the sun
+  EXPECT_NEAR(d[3].x, -1.0, 1e-15);                                // and away
   EXPECT_NEAR(d[4].z, std::cos(degrees_to_radians(30.0)), 1e-15);  // sun
-  EXPECT_NEAR(dot(d[5], d[4]), -1.0, 1e-15);                 // anti-sun
-  EXPECT_NEAR(dot(d[6], d[4]), 0.0, 1e-15);                  // orthogonal to the sun
+  EXPECT_NEAR(dot(d[5], d[4]), -1.0, 1e-15);                       // anti-sun
+  EXPECT_NEAR(dot(d[6], d[4]), 0.0, 1e-15);                        // orthogonal to the sun
   EXPECT_NEAR(dot(d[7], d[4]), 0.0, 1e-15);
   for (const Vec3& v : d) EXPECT_EQ(v.y, 0.0);  // all in the sun's vertical plane
 }
 
 TEST(Nishita96Functions, BinnedPhaseIntegralsSumToOne) {
   const auto d = directions_for(degrees_to_radians(40.0));
-  for (const Vec3& view : {Vec3{0, 0, 1}, normalize(Vec3{0.3, 0.5, 0.8}), normalize(Vec3{-1, 0.2, 0.1})}) {
+  for (const Vec3& view :
+       {Vec3{0, 0, 1}, normalize(Vec3{0.3, 0.5, 0.8}), normalize(Vec3{-1, 0.2, 0.1})}) {
     const auto p = nishita96::binned_phase_integrals(view, d, 0.7);
     EXPECT_NEAR(std::accumulate(p.rayleigh.begin(), p.rayleigh.end(), 0.0), 1.0, 2e-3);
     EXPECT_NEAR(std::accumulate(p.mie.begin(), p.mie.end(), 0.0), 1.0, 2e-2);
@@ -84,7 +85,8 @@ TEST(Nishita96Tables, PaperGridIs33CubedPerDirectionAndFitsIn24MB) {
   // Node lookups reproduce the stored values.
   std::vector<float> value(model->wavelengths().size());
   zenith.lookup(zenith.node_position(16, 20, 30), value);
-  for (std::size_t w = 0; w < value.size(); ++w) EXPECT_NEAR(value[w], zenith.node(16, 20, 30)[w], 1e-6 * value[w] + 1e-12);
+  for (std::size_t w = 0; w < value.size(); ++w)
+    EXPECT_NEAR(value[w], zenith.node(16, 20, 30)[w], 1e-6 * value[w] + 1e-12);
   // Looking up at the ground, under the sun: light scattered in the whole column.
   zenith.lookup({0.0, 0.0, 6360e3}, value);
   EXPECT_GT(value[0], 1e-3);
@@ -122,7 +124,8 @@ TEST(Nishita96Model, RefusesViewsBelowTheHorizonAndFromSpace) {
   const auto model = make_model();
   const auto state = model->prepare_sun({0.5, 0.0});
   SpectralBatch out;
-  model->sky_radiance(*state, Viewpoint{}, std::vector<ViewDirection>{{degrees_to_radians(100.0), 0.0}}, out);
+  model->sky_radiance(*state, Viewpoint{},
+                      std::vector<ViewDirection>{{degrees_to_radians(100.0), 0.0}}, out);
   EXPECT_EQ(out.status[0], SampleStatus::view_below_horizon_unsupported);
   model->sky_radiance(*state, Viewpoint{100e3}, std::vector<ViewDirection>{{0.1, 0.0}}, out);
   EXPECT_EQ(out.status[0], SampleStatus::viewpoint_unsupported);
@@ -135,7 +138,9 @@ TEST(Nishita96Model, ConcurrentRequestsForOneSunBucketBuildOneTableSet) {
   std::vector<std::shared_ptr<const SunState>> states(6);
   std::vector<std::thread> threads;
   for (int t = 0; t < 6; ++t) {
-    threads.emplace_back([&, t] { states[t] = model->prepare_sun({degrees_to_radians(44.8 + 0.05 * t), 0.1 * t}); });
+    threads.emplace_back([&, t] {
+      states[t] = model->prepare_sun({degrees_to_radians(44.8 + 0.05 * t), 0.1 * t});
+    });
   }
   for (auto& thread : threads) thread.join();
   EXPECT_EQ(model->cache_stats().builds, 1u);
@@ -151,7 +156,8 @@ TEST(Nishita96Model, SingleScatteringTermMatchesTheReferenceIntegrator) {
   ModelConfig config;
   config.options["table_nodes"] = 5;
   config.options["study_viewer_sample"] = 0;
-  const auto model = std::dynamic_pointer_cast<const Nishita96Model>(nishita96_factory().create(config, {}));
+  const auto model =
+      std::dynamic_pointer_cast<const Nishita96Model>(nishita96_factory().create(config, {}));
   const SunPosition sun{degrees_to_radians(40.0), 0.0};
   const auto state = model->prepare_sun(sun);
   const auto& n96 = dynamic_cast<const Nishita96SunState&>(*state);
@@ -163,7 +169,8 @@ TEST(Nishita96Model, SingleScatteringTermMatchesTheReferenceIntegrator) {
       const ScatteringAlongRay reference = single_scattering_reference(
           model->atmosphere(), RaySunGeometry::from(6360e3, Viewpoint{}, view, sun));
       for (std::size_t w : {0u, 12u, 30u}) {
-        EXPECT_NEAR(single[w], reference.radiance[w], 0.015 * reference.radiance[w]) << zenith << " " << azimuth;
+        EXPECT_NEAR(single[w], reference.radiance[w], 0.015 * reference.radiance[w])
+            << zenith << " " << azimuth;
       }
     }
   }
@@ -178,7 +185,8 @@ namespace {
 TEST(Nishita96Functions, PhaseBinsOfTheSunEqualTheDirectBinning) {
   const auto d = directions_for(degrees_to_radians(33.0));
   const nishita96::PhaseBins bins(d, 32);
-  for (const Vec3& view : {Vec3{0, 0, 1}, normalize(Vec3{0.3, -0.5, 0.8}), normalize(Vec3{-1, 0.2, 0.05})}) {
+  for (const Vec3& view :
+       {Vec3{0, 0, 1}, normalize(Vec3{0.3, -0.5, 0.8}), normalize(Vec3{-1, 0.2, 0.05})}) {
     const auto direct = nishita96::binned_phase_integrals(view, d, 0.7);
     const auto fast = bins.integrate(view, 0.7);
     for (int k = 0; k < kSamplingDirections; ++k) {

@@ -53,15 +53,16 @@ TEST(ONealScale, SchulersApproximationIsWithinAFewPercentOfTheExactOpticalLength
   // below Chapman's grazing value H sqrt(pi R / 2H).
   const AtmosphereSpectra atmosphere = AtmosphereSpectra::build({}, WavelengthGrid::paper_bins());
   for (double mu : {1.0, 0.7, 0.4, 0.35}) {
-    const auto exact = optical_lengths_to_space(atmosphere, kR, mu, RayQuadratureOptions::reference());
+    const auto exact =
+        optical_lengths_to_space(atmosphere, kR, mu, RayQuadratureOptions::reference());
     const auto approximate = oneal::optical_lengths_to_infinity(atmosphere.parameters, kR, mu);
     ASSERT_TRUE(exact && approximate);
     EXPECT_NEAR(approximate->rayleigh_m / exact->rayleigh_m, 1.0, mu == 1.0 ? 0.04 : 0.10) << mu;
     EXPECT_NEAR(approximate->mie_m / exact->mie_m, 1.0, mu == 1.0 ? 0.02 : 0.05) << mu;
     EXPECT_LT(approximate->rayleigh_m, exact->rayleigh_m);
   }
-  EXPECT_NEAR(oneal::scale_m(8000.0, kR, 0.0) / (8000.0 * std::sqrt(kPi * kR / (2.0 * 8000.0))), std::sqrt(2.0 / kPi),
-              1e-12);
+  EXPECT_NEAR(oneal::scale_m(8000.0, kR, 0.0) / (8000.0 * std::sqrt(kPi * kR / (2.0 * 8000.0))),
+              std::sqrt(2.0 / kPi), 1e-12);
 }
 
 TEST(ONealScale, ChapmanIdentityBelowTheHorizontal) {
@@ -81,7 +82,8 @@ TEST(ONealScale, ChapmanIdentityBelowTheHorizontal) {
   const auto above = oneal::optical_lengths_to_infinity(p, r, 1e-12);
   const auto below = oneal::optical_lengths_to_infinity(p, r, -1e-12);
   EXPECT_NEAR(above->mie_m / below->mie_m, 1.0, 1e-9);
-  EXPECT_FALSE(oneal::optical_lengths_to_infinity(p, r, -0.2).has_value());  // the ground is in the way
+  EXPECT_FALSE(
+      oneal::optical_lengths_to_infinity(p, r, -0.2).has_value());  // the ground is in the way
 }
 
 TEST(ONeal, FiniteAndNonNegativeEverywhere) {
@@ -94,7 +96,9 @@ TEST(ONeal, SymmetricAboutTheSunPlane) {
   testing::expect_symmetric_about_the_sun_plane(paper_model(), 2e6);
 }
 
-TEST(ONeal, ContinuousAcrossTheHorizon) { testing::expect_continuous_across_the_horizon(*model_with(32), 0.01); }
+TEST(ONeal, ContinuousAcrossTheHorizon) {
+  testing::expect_continuous_across_the_horizon(*model_with(32), 0.01);
+}
 
 TEST(ONeal, ConvergesTowardsTheReferenceWithMoreSamples) {
   // 4 samples miss the dense lowest kilometres (the first is 7.5 km up a zenith view): the
@@ -109,7 +113,8 @@ TEST(ONeal, ConvergesTowardsTheReferenceWithMoreSamples) {
   const SpectralBatch few = radiance_of(paper_model(), sun, 0.0, views);
   const SpectralBatch converged = radiance_of(*many, sun, 0.0, views);
   for (std::size_t i = 0; i < views.size(); ++i) {
-    const auto ref = single_scattering_reference(paper_model().atmosphere(), RaySunGeometry::from(kR, {0.0}, views[i], sun));
+    const auto ref = single_scattering_reference(paper_model().atmosphere(),
+                                                 RaySunGeometry::from(kR, {0.0}, views[i], sun));
     for (std::size_t w = 0; w < ref.radiance.size(); w += 3) {
       EXPECT_LT(few.spectrum(i)[w], ref.radiance[w]) << i << ' ' << w;
       EXPECT_NEAR(converged.spectrum(i)[w] / ref.radiance[w], 1.0, 0.08) << i << ' ' << w;
@@ -122,8 +127,8 @@ TEST(ONeal, ViewFromSpaceLookingDown) {
   const double altitude = 1000e3;
   const std::vector<ViewDirection> views = {view_at_degrees(180.0, 0.0), view_at_degrees(0.0, 0.0)};
   const SpectralBatch out = radiance_of(*many, sun_at_degrees(30.0), altitude, views);
-  const auto ref = single_scattering_reference(many->atmosphere(),
-                                               RaySunGeometry::from(kR, {altitude}, views[0], sun_at_degrees(30.0)));
+  const auto ref = single_scattering_reference(
+      many->atmosphere(), RaySunGeometry::from(kR, {altitude}, views[0], sun_at_degrees(30.0)));
   for (std::size_t w = 0; w < ref.radiance.size(); ++w) {
     EXPECT_NEAR(out.spectrum(0)[w] / ref.radiance[w], 1.0, 0.05) << w;
     EXPECT_EQ(out.spectrum(1)[w], 0.0);
@@ -139,7 +144,8 @@ TEST(ONeal, SunBelowTheHorizon) {
     EXPECT_LT(dusk.spectrum(0)[w], 0.01 * day.spectrum(0)[w]);
     EXPECT_EQ(night.spectrum(0)[w], 0.0);
   }
-  const SpectralSample shadowed = paper_model().sun_irradiance(*paper_model().prepare_sun(sun_at_degrees(91.0)), {0.0});
+  const SpectralSample shadowed =
+      paper_model().sun_irradiance(*paper_model().prepare_sun(sun_at_degrees(91.0)), {0.0});
   for (double v : shadowed.value) EXPECT_EQ(v, 0.0);
 }
 
@@ -155,8 +161,8 @@ TEST(ONeal, AerialPerspective) {
   ASSERT_EQ(none.status, SampleStatus::ok);
   const AerialPerspectiveSample near = model->aerial_perspective(*state, {0.0}, view, 5e3);
   const AerialPerspectiveSample far = model->aerial_perspective(*state, {0.0}, view, 50e3);
-  const auto ref = single_scattering_reference(model->atmosphere(),
-                                               RaySunGeometry::from(kR, {0.0}, view, sun_at_degrees(50.0)), 5e3);
+  const auto ref = single_scattering_reference(
+      model->atmosphere(), RaySunGeometry::from(kR, {0.0}, view, sun_at_degrees(50.0)), 5e3);
   for (std::size_t w = 0; w < near.radiance.size(); ++w) {
     EXPECT_EQ(none.radiance[w], 0.0);
     EXPECT_EQ(none.transmittance[w], 1.0);

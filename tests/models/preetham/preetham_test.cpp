@@ -1,8 +1,6 @@
 // Physics and contract tests of the Preetham model (models/preetham): the paper's zenith
 // luminance, the luminance carried by the reconstructed spectrum, symmetry, positivity at
 // the horizon, refusal of what it cannot answer, and the sky irradiance quadrature.
-#include "tests/models/support/fit_domain_checks.h"
-#include "tests/support/model_queries.h"
 #include "models/preetham/preetham.h"
 
 #include <gtest/gtest.h>
@@ -15,6 +13,8 @@
 #include "models/colour/colour_spaces.h"
 #include "models/core/quadrature.h"
 #include "models/registry.h"
+#include "tests/models/support/fit_domain_checks.h"
+#include "tests/support/model_queries.h"
 
 namespace clearsky {
 namespace {
@@ -45,7 +45,8 @@ TEST(Preetham, RefusesWhereTheFitTurnsNegativeUnlessAskedToClamp) {
   const auto model = make_preetham();
   const auto clamped = clamped_preetham();
   for (double sun_zenith : {30.0, 60.0, 80.0, 85.0, 88.0, 89.5, 90.0}) {
-    const int outside = testing::expect_refused_only_where_the_fit_turns_negative(*model, *clamped, sun_zenith);
+    const int outside =
+        testing::expect_refused_only_where_the_fit_turns_negative(*model, *clamped, sun_zenith);
     if (sun_zenith <= 60.0) {
       EXPECT_EQ(outside, 0) << sun_zenith;
     }
@@ -54,10 +55,6 @@ TEST(Preetham, RefusesWhereTheFitTurnsNegativeUnlessAskedToClamp) {
     }
   }
 }
-
-
-
-
 
 TEST(Preetham, DescriptorDeclaresParametersAndLimits) {
   const ModelDescriptor& d = preetham_descriptor();
@@ -168,7 +165,8 @@ TEST(Preetham, PositiveAndFiniteUpToTheHorizonAndForTheSunAtTheHorizon) {
       model->sky_radiance(*sun, {}, views, batch);
       double largest = 0.0;
       for (std::size_t i = 0; i < views.size(); ++i) {
-        if (batch.status[i] == SampleStatus::outside_fit_domain) continue;  // RefusesWhere...: low sun, T = 10
+        if (batch.status[i] == SampleStatus::outside_fit_domain)
+          continue;  // RefusesWhere...: low sun, T = 10
         ASSERT_EQ(batch.status[i], SampleStatus::ok)
             << turbidity << " " << sun_zenith << " view " << i;
         for (double v : batch.spectrum(i)) {

@@ -34,7 +34,8 @@ TEST(ReferenceSpectra, CieTablesHaveTheirKnownPeaks) {
   const auto& r = ReferenceSpectra::get();
   EXPECT_NEAR(r.cie_y_bar.at(555.0, OutOfRange::error), 1.0, 2e-3);
   EXPECT_NEAR(r.daylight_s0.at(560.0, OutOfRange::error), 100.0, 1e-9);
-  EXPECT_GT(r.grass_albedo.at(750.0, OutOfRange::error), r.grass_albedo.at(550.0, OutOfRange::error));
+  EXPECT_GT(r.grass_albedo.at(750.0, OutOfRange::error),
+            r.grass_albedo.at(550.0, OutOfRange::error));
 }
 
 }  // namespace

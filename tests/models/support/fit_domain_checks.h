@@ -20,13 +20,15 @@ namespace clearsky::testing {
 inline std::vector<ViewDirection> fit_domain_views() {
   std::vector<ViewDirection> views;
   for (double z = 0.0; z <= 90.0; z += 2.5)
-    for (double a = 0.0; a < 360.0; a += 10.0) views.push_back({degrees_to_radians(z), degrees_to_radians(a)});
+    for (double a = 0.0; a < 360.0; a += 10.0)
+      views.push_back({degrees_to_radians(z), degrees_to_radians(a)});
   return views;
 }
 
 // Checks the contract for the sun at sun_zenith_deg (azimuth 0); returns the refused views.
-inline int expect_refused_only_where_the_fit_turns_negative(const SkyModel& model, const SkyModel& clamped,
-                                                           double sun_zenith_deg) {
+inline int expect_refused_only_where_the_fit_turns_negative(const SkyModel& model,
+                                                            const SkyModel& clamped,
+                                                            double sun_zenith_deg) {
   const std::vector<ViewDirection> views = fit_domain_views();
   const auto sun = model.prepare_sun({degrees_to_radians(sun_zenith_deg), 0.0});
   SpectralBatch refused, answered;
@@ -42,7 +44,8 @@ inline int expect_refused_only_where_the_fit_turns_negative(const SkyModel& mode
       for (std::size_t w = 0; w < l.size(); ++w) EXPECT_EQ(r[w], l[w]);
       continue;
     }
-    EXPECT_EQ(refused.status[i], SampleStatus::outside_fit_domain) << sun_zenith_deg << " view " << i;
+    EXPECT_EQ(refused.status[i], SampleStatus::outside_fit_domain)
+        << sun_zenith_deg << " view " << i;
     ++outside;
     // Refused samples carry no number; the clamped answer has a wavelength of no light.
     for (double v : refused.spectrum(i)) EXPECT_EQ(v, 0.0);

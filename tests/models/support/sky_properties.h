@@ -34,12 +34,14 @@ inline SpectralBatch radiance_of(const SkyModel& model, const SunPosition& sun, 
 inline void expect_finite_non_negative_everywhere(const SkyModel& model) {
   std::vector<ViewDirection> views;
   for (double zenith = 0.0; zenith <= 180.0; zenith += 7.5) {
-    for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0) views.push_back(view_at_degrees(zenith, azimuth));
+    for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0)
+      views.push_back(view_at_degrees(zenith, azimuth));
   }
   for (double zenith : {89.99, 90.0, 90.01}) views.push_back(view_at_degrees(zenith, 10.0));
   for (double altitude : {0.0, 1000.0, 59999.0, 60001.0, 1e6, 3.6e7}) {
     for (double sun_zenith : {0.0, 30.0, 89.0, 90.0, 91.0, 100.0, 150.0, 180.0}) {
-      const SpectralBatch out = radiance_of(model, sun_at_degrees(sun_zenith, 30.0), altitude, views);
+      const SpectralBatch out =
+          radiance_of(model, sun_at_degrees(sun_zenith, 30.0), altitude, views);
       for (std::size_t i = 0; i < views.size(); ++i) {
         ASSERT_EQ(out.status[i], SampleStatus::ok)
             << "altitude " << altitude << " sun " << sun_zenith << " view " << views[i].zenith_rad;
@@ -70,15 +72,18 @@ inline void expect_symmetric_about_the_sun_plane(const SkyModel& model, double a
       views.push_back(view_at_degrees(zenith, sun_azimuth - offset));
     }
   }
-  const SpectralBatch out = radiance_of(model, sun_at_degrees(50.0, sun_azimuth), altitude_m, views);
-  for (std::size_t i = 0; i < views.size(); i += 2) EXPECT_LT(relative_difference(out, i, i + 1), 1e-9) << i;
+  const SpectralBatch out =
+      radiance_of(model, sun_at_degrees(50.0, sun_azimuth), altitude_m, views);
+  for (std::size_t i = 0; i < views.size(); i += 2)
+    EXPECT_LT(relative_difference(out, i, i + 1), 1e-9) << i;
 }
 
 // Radiance is continuous across the astronomical horizon (view zenith 90 degrees) for an
 // observer above the ground, and continuous from above at the horizon for one on the ground.
 inline void expect_continuous_across_the_horizon(const SkyModel& model, double tolerance) {
   for (double azimuth : {0.0, 90.0, 180.0}) {
-    const std::vector<ViewDirection> views = {view_at_degrees(90.0 - 1e-4, azimuth), view_at_degrees(90.0, azimuth),
+    const std::vector<ViewDirection> views = {view_at_degrees(90.0 - 1e-4, azimuth),
+                                              view_at_degrees(90.0, azimuth),
                                               view_at_degrees(90.0 + 1e-4, azimuth)};
     const SpectralBatch high = radiance_of(model, sun_at_degrees(60.0), 1000.0, views);
     EXPECT_LT(relative_difference(high, 0, 1), tolerance) << azimuth;

@@ -57,8 +57,7 @@ TEST(CliApiParity, PreethamOnTwoCapturesGivesTheSameRmseBothWays) {
       run_cli("import kider " + archive("10.00").string() + " " + archive("12.00").string() +
               " --name pair --db " + cli_db + " --json"));
   const nlohmann::json cli = nlohmann::json::parse(
-      run_cli("evaluate --dataset pair --models preetham --json --samples=spectra --db " +
-              cli_db));
+      run_cli("evaluate --dataset pair --models preetham --json --samples=spectra --db " + cli_db));
 
   const auto api_db = dir.path / "api.db";
   storage::Database db = storage::open_database(api_db);

@@ -33,7 +33,8 @@ void add_synthetic_dataset(storage::Database& db, const std::string& name, int c
     MeasuredCapture c = testing::synthetic_capture(sky);
     c.label = std::string("c").append(std::to_string(i));
     c.unix_time_utc_s += 60.0 * i;
-    storage::CaptureRepository(db).insert(dataset, c, std::string("h").append(std::to_string(i)), "test");
+    storage::CaptureRepository(db).insert(dataset, c, std::string("h").append(std::to_string(i)),
+                                          "test");
   }
   t.commit();
 }

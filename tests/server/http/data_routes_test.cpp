@@ -162,22 +162,26 @@ TEST_F(DataRoutes, JobLifecycle) {
     db.execute("INSERT INTO datasets (name, format, created_utc) VALUES ('d', 'kider2014', 'x')");
   }
   auto c = client("t0ken");
-  const auto created = c.Post(
-      "/v1/jobs", R"({"name": "nightly", "schedule": "0 3 * * *", "dataset": "d", "models": "all"})",
-      "application/json");
+  const auto created =
+      c.Post("/v1/jobs",
+             R"({"name": "nightly", "schedule": "0 3 * * *", "dataset": "d", "models": "all"})",
+             "application/json");
   ASSERT_EQ(created->status, 201) << created->body;
   const std::string id = std::to_string(body(created)["id"].get<int>());
   EXPECT_EQ(body(created)["next_run"].get<std::string>().substr(11), "03:00:00Z");
   EXPECT_EQ(body(c.Get("/v1/jobs")).size(), 1u);
-  EXPECT_EQ(body(c.Post(("/v1/jobs/" + id + "/pause").c_str(), "", "application/json"))["paused"], true);
-  EXPECT_EQ(body(c.Post(("/v1/jobs/" + id + "/resume").c_str(), "", "application/json"))["paused"], false);
+  EXPECT_EQ(body(c.Post(("/v1/jobs/" + id + "/pause").c_str(), "", "application/json"))["paused"],
+            true);
+  EXPECT_EQ(body(c.Post(("/v1/jobs/" + id + "/resume").c_str(), "", "application/json"))["paused"],
+            false);
   const auto bad = c.Post("/v1/jobs", R"({"name": "x", "schedule": "0 3 * *", "dataset": "d"})",
                           "application/json");
   EXPECT_EQ(bad->status, 400);
   EXPECT_EQ(body(bad)["error"]["parameter"], "schedule");
   // A JSON body sent form-encoded (curl -d) is read as JSON all the same.
-  const auto form = c.Post("/v1/jobs", R"({"name": "form", "schedule": "0 4 * * *", "dataset": "d"})",
-                           "application/x-www-form-urlencoded");
+  const auto form =
+      c.Post("/v1/jobs", R"({"name": "form", "schedule": "0 4 * * *", "dataset": "d"})",
+             "application/x-www-form-urlencoded");
   EXPECT_EQ(form->status, 201) << form->body;
   EXPECT_EQ(c.Delete(("/v1/jobs/" + id).c_str())->status, 200);
   EXPECT_EQ(c.Get(("/v1/jobs/" + id).c_str())->status, 404);

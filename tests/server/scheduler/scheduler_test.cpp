@@ -140,7 +140,7 @@ TEST(Scheduler, AJobDueDuringDowntimeRunsOnceAfterRestart) {
     api::EvaluationPool pool(f.opener, factories());
     Scheduler scheduler(f.opener, pool, "test");
     EXPECT_EQ(scheduler.tick(kT0 + 600).started, 0);  // 11:10, due at 12:00
-  }  // stopped; 12:00 passes while down
+  }                                                   // stopped; 12:00 passes while down
   for (int restart = 0; restart < 2; ++restart) {
     api::EvaluationPool pool(f.opener, factories());
     Scheduler scheduler(f.opener, pool, "test");

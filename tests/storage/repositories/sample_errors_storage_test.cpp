@@ -119,8 +119,7 @@ TEST(EvaluationRunSamples, StoredWithTheRunAndReadOnRequest) {
   EXPECT_EQ(*detailed->captures[0].samples, table(81, 31, 2.0f));
   // Errors must have one column per listed wavelength.
   const std::int64_t other = runs.start(new_run(f.dataset));
-  EXPECT_THROW(runs.finish(other, 1, 0, 0, "", {result(f.capture, table(81, 30, 0))},
-                           kWavelengths),
+  EXPECT_THROW(runs.finish(other, 1, 0, 0, "", {result(f.capture, table(81, 30, 0))}, kWavelengths),
                std::invalid_argument);
   EXPECT_EQ(runs.get(other)->status, "running");
 }
@@ -131,8 +130,7 @@ TEST(EvaluationRunSamples, RepeatedIdenticalRunsShareOneBlob) {
   std::vector<std::int64_t> ids;
   for (int i = 0; i < 5; ++i) {
     ids.push_back(runs.start(new_run(f.dataset)));
-    runs.finish(ids.back(), 12, 0, 0, "", {result(f.capture, table(81, 31, 2.0f))},
-                kWavelengths);
+    runs.finish(ids.back(), 12, 0, 0, "", {result(f.capture, table(81, 31, 2.0f))}, kWavelengths);
   }
   EXPECT_EQ(f.count("evaluation_sample_errors"), 1);
   // Other errors: a second blob.
