@@ -5,12 +5,14 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "models/core/invalid_input.h"
+
 namespace clearsky {
 
 namespace {
 
 void require(bool ok, const char* name, const char* range) {
-  if (!ok) throw std::invalid_argument(std::string(name) + ": must be " + range);
+  if (!ok) throw InvalidInput(name, std::string("must be ") + range);
 }
 
 }  // namespace

@@ -37,7 +37,7 @@ struct AtmosphereParameters {
   // Empty: the spectral albedo of grass (Feister and Grewe 1995); otherwise a constant.
   std::optional<double> ground_albedo;
 
-  // Throws std::invalid_argument whose message starts with the offending parameter's name.
+  // Throws InvalidInput (models/core/invalid_input.h) naming the offending parameter.
   void validate() const;
   // Every value, in a fixed order and full precision, for cache keys.
   std::string canonical_string() const;

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "models/core/invalid_input.h"
 #include "models/core/numeric.h"
 #include "models/solar/spa_functions.h"
 
@@ -29,10 +30,10 @@ constexpr double kLatestUnixS = (3912880.5 - 2440587.5) * kSecondsPerDay;
 
 void require(bool ok, const char* name, double value, const char* range) {
   if (ok) return;
-  std::ostringstream message;
-  message.precision(10);
-  message << name << ": must be " << range << ", got " << value;
-  throw std::invalid_argument(message.str());
+  std::ostringstream reason;
+  reason.precision(10);
+  reason << "must be " << range << ", got " << value;
+  throw InvalidInput(name, reason.str());
 }
 
 bool within(double value, double lo, double hi) { return value >= lo && value <= hi; }

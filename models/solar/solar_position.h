@@ -65,7 +65,7 @@ struct SunTimes {
   DayKind day_kind = DayKind::normal;
 };
 
-// Throws std::invalid_argument whose message starts with the name of the first invalid input
+// Throws InvalidInput (models/core/invalid_input.h) naming the first invalid input field
 // (the field name above); NaN fails every check.
 SolarPosition solar_position(const SolarPositionInput& input);
 // The checks solar_position and sun_times make, for callers that validate before computing.
