@@ -15,8 +15,8 @@
 #include "storage/repositories/dataset_repository.h"
 #include "storage/schema/migrations.h"
 #include "tests/models/evaluation/synthetic_sky.h"
-#include "tests/storage/temp_dir.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky::api {
 namespace {
@@ -108,7 +108,7 @@ TEST(DatasetsApi, UnknownDatasetOrCaptureIs404AndDeleteRemoves) {
 
 TEST(DatasetsApi, UploadedArchiveImportsOnceAndReimportIsUnchanged) {
   CLEARSKY_REQUIRE_SHARED_DATA(kArchive);
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   storage::Database db = storage::open_database(dir.path / "db.sqlite");
   const std::string bytes = file_bytes(clearsky::testing::shared_data_dir() / kArchive);
   const auto report = upload(db, dir.path / "uploads", bytes, 8u << 20);
@@ -132,7 +132,7 @@ TEST(DatasetsApi, UploadedArchiveImportsOnceAndReimportIsUnchanged) {
 
 TEST(DatasetsApi, OversizedUploadIs413AndLeavesNothing) {
   CLEARSKY_REQUIRE_SHARED_DATA(kArchive);
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   storage::Database db = storage::open_database(dir.path / "db.sqlite");
   const std::string bytes = file_bytes(clearsky::testing::shared_data_dir() / kArchive);
   EXPECT_EQ(status_of([&] { upload(db, dir.path / "uploads", bytes, bytes.size() - 1); }), 413);
@@ -142,7 +142,7 @@ TEST(DatasetsApi, OversizedUploadIs413AndLeavesNothing) {
 
 TEST(DatasetsApi, TruncatedOrForeignUploadIs400AndLeavesNothing) {
   CLEARSKY_REQUIRE_SHARED_DATA(kArchive);
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   storage::Database db = storage::open_database(dir.path / "db.sqlite");
   const std::string bytes = file_bytes(clearsky::testing::shared_data_dir() / kArchive);
   EXPECT_EQ(
@@ -156,7 +156,7 @@ TEST(DatasetsApi, TruncatedOrForeignUploadIs400AndLeavesNothing) {
 
 TEST(DatasetsApi, SameLabelWithOtherContentIs409) {
   CLEARSKY_REQUIRE_SHARED_DATA(kArchive);
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   storage::Database db = storage::open_database(dir.path / "db.sqlite");
   // A capture with the archive's label but other content, already stored.
   const auto dataset = storage::DatasetRepository(db).find_or_create("uploaded", "kider2014");
@@ -169,7 +169,7 @@ TEST(DatasetsApi, SameLabelWithOtherContentIs409) {
 }
 
 TEST(UploadSpool, StaleFilesOfAKilledProcessAreRemovedAtStartUp) {
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   const auto folder = dir.path / "uploads";
   {
     UploadSpool kept(folder, 100);

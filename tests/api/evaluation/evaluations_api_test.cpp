@@ -20,7 +20,7 @@
 #include "storage/repositories/evaluation_run_repository.h"
 #include "storage/schema/migrations.h"
 #include "tests/models/evaluation/function_model.h"
-#include "tests/storage/temp_dir.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky::api {
 namespace {
@@ -73,7 +73,7 @@ const std::vector<ModelFactory>& factories() {
 }
 
 struct Fixture {
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   std::filesystem::path file = dir.path / "db.sqlite";
   storage::Database db = storage::open_database(file);
   Fixture() {

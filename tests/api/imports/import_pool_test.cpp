@@ -15,8 +15,8 @@
 #include "api/imports/imports_api.h"
 #include "storage/repositories/dataset_repository.h"
 #include "storage/schema/migrations.h"
-#include "tests/storage/temp_dir.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky::api {
 namespace {
@@ -40,7 +40,7 @@ storage::NewImport upload_of(const std::string& dataset, std::size_t bytes) {
 }
 
 struct Fixture {
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   std::filesystem::path db_path = dir.path / "sky.db";
   storage::Database db = storage::open_database(db_path);
 

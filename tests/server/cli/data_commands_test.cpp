@@ -13,6 +13,7 @@
 
 #include "models/registry.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky {
 namespace {
@@ -34,20 +35,11 @@ Result run(const std::string& arguments) {
   return result;
 }
 
+// The test's folder, with the database in var/ (which the CLI creates).
 struct TempDb {
-  std::filesystem::path dir;
-  std::string db;
-  TempDb() {
-    dir = std::filesystem::temp_directory_path() /
-          ("clearsky_cli_" + std::to_string(::getpid()) + "_" +
-           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(dir);
-    db = (dir / "var" / "sky.db").string();
-  }
-  ~TempDb() {
-    std::error_code ignored;
-    std::filesystem::remove_all(dir, ignored);
-  }
+  clearsky::testing::TempDir temp;
+  const std::filesystem::path& dir = temp.path;
+  std::string db = (dir / "var" / "sky.db").string();
 };
 
 std::string archive(const std::string& time) {
