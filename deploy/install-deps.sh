@@ -9,7 +9,7 @@ packages=(
   libopenexr-dev openexr libgeographiclib-dev
   libsqlite3-dev sqlite3 libarchive-dev p7zip-full
   prometheus-cpp-dev libspdlog-dev libcli11-dev libnlopt-cxx-dev
-  libxxhash-dev
+  libhowardhinnant-date-dev tzdata libxxhash-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   wrk curl python3
 )
