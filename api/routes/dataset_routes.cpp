@@ -65,10 +65,10 @@ ApiResponse import_dataset_route(const ApiContext& context, const ApiRequest& re
   Parameters p = query_parameters(request);
   storage::NewImport what;
   what.dataset = p.text("name").value_or("");
-  if (what.dataset.empty()) throw missing_parameter("name", "the dataset to import into");
   what.format = p.text("format").value_or("kider");
   const std::optional<std::string> path = p.text("path");
   p.reject_unused();
+  if (what.dataset.empty()) throw missing_parameter("name", "the dataset to import into");
   check_import_format(what.format);
   std::unique_ptr<UploadSpool> spool = spool_body(request, data);
   std::filesystem::path source;
