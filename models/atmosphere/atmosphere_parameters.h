@@ -1,7 +1,8 @@
-// The atmosphere every physically based model shares (paper section "Model parameters"), as
-// one parameter set with the study's values as defaults. The parameters are declared once, in
-// atmosphere_parameter_table.h; this table restates them for the reader and is checked against
-// it by tests/models/atmosphere/atmosphere_parameter_table_test.cpp (names, members, units,
+// The atmosphere every physically based model shares (paper section "Model parameters";
+// docs/architecture.md "The atmosphere"), as one parameter set with the study's values as
+// defaults. The parameters are declared once, in atmosphere_parameter_table.h
+// (docs/model-contract.md); this table restates them for the reader and is checked against it
+// by tests/models/atmosphere/atmosphere_parameter_table_test.cpp (names, members, units,
 // defaults, ranges).
 //
 // | name                         | member                       | unit | default | range           | meaning                                     |
