@@ -57,8 +57,7 @@ nlohmann::ordered_json import_to_json(const storage::ImportRecord& record,
       {"location", import_location(record.id)}};
 }
 
-nlohmann::ordered_json list_imports(storage::Database& db, const ImportPool* pool,
-                                    const std::vector<std::pair<std::string, std::string>>& query) {
+ListPage list_imports(storage::Database& db, const ImportPool* pool, const QueryParameters& query) {
   std::optional<std::string> status;
   std::optional<std::string> dataset;
   for (const auto& [name, value] : query) {
@@ -68,14 +67,19 @@ nlohmann::ordered_json list_imports(storage::Database& db, const ImportPool* poo
       status = value;
     } else if (name == "dataset") {
       dataset = value;
-    } else {
+    } else if (name != "limit" && name != "cursor") {
       throw unknown_parameter(name, "GET /v1/imports");
     }
   }
-  nlohmann::ordered_json out = nlohmann::ordered_json::array();
-  for (const storage::ImportRecord& r : storage::ImportRepository(db).list(100, status, dataset))
-    out.push_back(import_to_json(r, pool ? pool->live_progress(r.id) : std::nullopt));
-  return out;
+  const PageRequest request = parse_page_request(query);
+  const auto imports = storage::ImportRepository(db).list_page(
+      request.limit, status, dataset,
+      request.cursor ? std::optional(id_from_cursor(*request.cursor)) : std::nullopt);
+  ListPage page;
+  for (const storage::ImportRecord& r : imports.rows)
+    page.items.push_back(import_to_json(r, pool ? pool->live_progress(r.id) : std::nullopt));
+  if (imports.more) page.next_cursor = id_cursor(imports.rows.back().id);
+  return page;
 }
 
 nlohmann::ordered_json show_import(storage::Database& db, const ImportPool* pool, std::int64_t id) {

@@ -12,6 +12,7 @@
 #include "api/http/api_types.h"
 #include "api/imports/imports_api.h"
 #include "api/jobs/jobs_api.h"
+#include "api/paging/list_page.h"
 #include "server/http/request_body.h"
 #include "storage/sqlite/database.h"
 
@@ -45,6 +46,19 @@ double now_unix_s() {
 void send_json(httplib::Response& res, const nlohmann::ordered_json& body, int status = 200) {
   res.status = status;
   res.set_content(body.dump(), "application/json");
+}
+
+std::vector<std::pair<std::string, std::string>> query_of(const httplib::Request& req) {
+  return {req.params.begin(), req.params.end()};
+}
+
+// A page of a list: the bare array, and the next page in a Link header (api/paging/list_page.h).
+void send_page(const httplib::Request& req, httplib::Response& res, const api::ListPage& page) {
+  if (page.next_cursor)
+    res.set_header("Link", api::next_page_link(req.path, query_of(req),
+                                               api::parse_page_request(query_of(req)).limit,
+                                               *page.next_cursor));
+  send_json(res, page.items);
 }
 
 std::string query_value(const httplib::Request& req, const char* name) {
@@ -113,9 +127,8 @@ void install_data_routes(httplib::Server& server, const DataServices& services,
   };
 
   server.Get("/v1/datasets", [s](const httplib::Request& req, httplib::Response& res) {
-    only_parameters(req, {}, "GET /v1/datasets");
     storage::Database db = connect(*s);
-    send_json(res, api::list_datasets(db));
+    send_page(req, res, api::list_datasets(db, query_of(req)));
   });
   server.Get(R"(/v1/datasets/([^/]+))", [s](const httplib::Request& req, httplib::Response& res) {
     only_parameters(req, {"samples", "capture"}, "GET /v1/datasets/{name}");
@@ -192,9 +205,8 @@ void install_data_routes(httplib::Server& server, const DataServices& services,
   });
 
   server.Get("/v1/imports", [s](const httplib::Request& req, httplib::Response& res) {
-    std::vector<std::pair<std::string, std::string>> query(req.params.begin(), req.params.end());
     storage::Database db = connect(*s);
-    send_json(res, api::list_imports(db, s->imports, query));
+    send_page(req, res, api::list_imports(db, s->imports, query_of(req)));
   });
   server.Get(R"(/v1/imports/([^/]+))", [s](const httplib::Request& req, httplib::Response& res) {
     only_parameters(req, {}, "GET /v1/imports/{id}");
@@ -203,10 +215,10 @@ void install_data_routes(httplib::Server& server, const DataServices& services,
   });
 
   server.Get("/v1/evaluations", [s](const httplib::Request& req, httplib::Response& res) {
-    std::vector<std::pair<std::string, std::string>> query(req.params.begin(), req.params.end());
-    const api::EvaluationFilter filter = api::parse_evaluation_filter(query);
+    const api::EvaluationFilter filter = api::parse_evaluation_filter(query_of(req));
+    const api::PageRequest page = api::parse_page_request(query_of(req));
     storage::Database db = connect(*s);
-    send_json(res, api::list_evaluations(db, filter));
+    send_page(req, res, api::list_evaluations(db, filter, page));
   });
   server.Get(R"(/v1/evaluations/(\d+))", [s](const httplib::Request& req, httplib::Response& res) {
     std::vector<std::pair<std::string, std::string>> query(req.params.begin(), req.params.end());
@@ -230,15 +242,15 @@ void install_data_routes(httplib::Server& server, const DataServices& services,
       const std::int64_t ticket =
           s->pool->submit(api::parse_evaluation_request(db, text, s->models, s->software_version));
       nlohmann::ordered_json body = api::ticket_to_json(*s->pool->ticket(ticket));
-      body["location"] = "/v1/evaluations/tickets/" + std::to_string(ticket);
+      body["location"] = api::ticket_location(ticket);
+      res.set_header("Location", api::ticket_location(ticket));
       send_json(res, body, 202);
     });
   });
 
   server.Get("/v1/jobs", [s](const httplib::Request& req, httplib::Response& res) {
-    only_parameters(req, {}, "GET /v1/jobs");
     storage::Database db = connect(*s);
-    send_json(res, api::list_jobs(db));
+    send_page(req, res, api::list_jobs(db, query_of(req)));
   });
   server.Get(R"(/v1/jobs/([^/]+))", [s](const httplib::Request& req, httplib::Response& res) {
     storage::Database db = connect(*s);
@@ -249,7 +261,9 @@ void install_data_routes(httplib::Server& server, const DataServices& services,
     write(*s, req, res, [&] {
       const std::string text = read_body(req, content);
       storage::Database db = connect(*s);
-      send_json(res, api::create_job(db, text, s->models, now_unix_s()), 201);
+      const api::CreatedResource job = api::create_job(db, text, s->models, now_unix_s());
+      res.set_header("Location", job.location);
+      send_json(res, job.body, 201);
     });
   });
   server.Delete(R"(/v1/jobs/([^/]+))", [s](const httplib::Request& req, httplib::Response& res) {

@@ -86,8 +86,8 @@ TEST(ImportPool, UploadImportedInTheBackground) {
   const auto dataset = storage::DatasetRepository(f.db).find("noon");
   ASSERT_TRUE(dataset);
   EXPECT_EQ(dataset->samples, 81);
-  EXPECT_EQ(list_imports(f.db, &pool, {{"status", "succeeded"}}).size(), 1u);
-  EXPECT_EQ(list_imports(f.db, &pool, {{"dataset", "other"}}).size(), 0u);
+  EXPECT_EQ(list_imports(f.db, &pool, {{"status", "succeeded"}}).items.size(), 1u);
+  EXPECT_EQ(list_imports(f.db, &pool, {{"dataset", "other"}}).items.size(), 0u);
   EXPECT_THROW(list_imports(f.db, &pool, {{"colour", "red"}}), ApiError);
 }
 
@@ -148,7 +148,7 @@ TEST(ImportPool, FullQueueIs503) {
     EXPECT_EQ(shown["status"], "failed");
     EXPECT_EQ(shown["error"]["code"], "invalid_archive") << shown.dump();
   }
-  EXPECT_EQ(list_imports(f.db, &pool, {}).size(), 2u);  // the refused one left no row
+  EXPECT_EQ(list_imports(f.db, &pool, {}).items.size(), 2u);  // the refused one left no row
 }
 
 TEST(ImportPool, StartUpFailsInterruptedImports) {
