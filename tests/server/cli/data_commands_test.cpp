@@ -94,9 +94,9 @@ TEST(DataCommands, ErrorsAreReportedWithExitStatus1) {
   EXPECT_NE(unknown_model.output.find("nishita2042"), std::string::npos) << unknown_model.output;
   // A parameter that none of the requested models takes (docs/data-api.md "Evaluation
   // parameters"), refused before anything is read or run.
-  const Result inapplicable = run(
-      "evaluate --dataset missing --models bruneton --parameters '{\"turbidity\": 3}' --db " +
-      t.db);
+  const Result inapplicable =
+      run("evaluate --dataset missing --models bruneton --parameters '{\"turbidity\": 3}' --db " +
+          t.db);
   EXPECT_EQ(inapplicable.exit_code, 1);
   EXPECT_NE(inapplicable.output.find("turbidity: applies to none of the requested models"),
             std::string::npos)
