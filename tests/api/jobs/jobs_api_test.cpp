@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "api/error/api_error.h"
+#include "api/evaluation/evaluations_api.h"
 #include "storage/repositories/capture_repository.h"
 #include "storage/repositories/dataset_repository.h"
 #include "storage/schema/migrations.h"
@@ -149,6 +150,52 @@ TEST(JobsApi, PauseResumeDelete) {
   EXPECT_EQ(status_of([&] { show_job(f.db, id); }), 404);
   EXPECT_EQ(status_of([&] { pause_job(f.db, id); }), 404);
   EXPECT_EQ(status_of([&] { delete_job(f.db, id); }), 404);
+}
+
+// A job's parameters follow the rule of POST /v1/evaluations: the test model takes
+// turbidity, not alpha.
+TEST(JobsApi, AParameterNoModelTakesIsRefused) {
+  Fixture f;
+  try {
+    create_job(f.db, R"({"name": "a", "schedule": "* * * * *", "dataset": "synthetic",
+                         "models": ["test-model"], "parameters": {"alpha": 1}})",
+               factories(), kNow);
+    ADD_FAILURE() << "alpha accepted";
+  } catch (const ApiError& e) {
+    EXPECT_EQ(e.status(), 400);
+    EXPECT_EQ(e.parameter(), "alpha");
+  }
+}
+
+// Deleting a job keeps its runs, found by the job's id, which no later job gets.
+TEST(JobsApi, ADeletedJobsRunsKeepItsId) {
+  Fixture f;
+  const auto dataset = storage::DatasetRepository(f.db).find("synthetic")->id;
+  storage::CaptureRepository(f.db).insert(
+      dataset, testing::synthetic_capture([](const ViewDirection&, double) { return 0.0; }), "hash",
+      "test");
+  const std::int64_t id =
+      create_job(f.db, R"({"name": "n", "schedule": "0 3 * * *", "dataset": "synthetic",
+                           "models": ["test-model"], "parameters": {"turbidity": 3}})",
+                 factories(), kNow)
+          .body["id"];
+  const EvaluationRequest request =
+      job_evaluation_request(f.db, *storage::JobRepository(f.db).get(id), "v");
+  const std::int64_t run = run_evaluation(f.db, request, factories()).models.at(0).run_id;
+  delete_job(f.db, id);
+  for (const char* name : {"job", "job_id"}) {
+    const ListPage runs =
+        list_evaluations(f.db, parse_evaluation_filter({{name, std::to_string(id)}}));
+    ASSERT_EQ(runs.items.size(), 1u) << name;
+    EXPECT_EQ(runs.items[0]["id"], run);
+    EXPECT_EQ(runs.items[0]["job"], id);
+  }
+  EXPECT_EQ(show_evaluation(f.db, run)["parameters"], nlohmann::ordered_json({{"turbidity", 3}}));
+  const std::int64_t next =
+      create_job(f.db, R"({"name": "n", "schedule": "0 3 * * *", "dataset": "synthetic"})",
+                 factories(), kNow)
+          .body["id"];
+  EXPECT_GT(next, id);
 }
 
 }  // namespace
