@@ -40,14 +40,14 @@ nlohmann::ordered_json sample_json(const MeasuredSample& s, bool spectrum) {
 
 }  // namespace
 
-ListPage list_datasets(storage::Database& db, const QueryParameters& query) {
-  for (const auto& [name, value] : query)
-    if (name != "limit" && name != "cursor") throw unknown_parameter(name, "GET /v1/datasets");
+ListPage list_datasets(storage::Database& db, Parameters query) {
   const PageRequest request = parse_page_request(query);
+  query.reject_unused();
   const auto datasets = storage::DatasetRepository(db).list_page(
       request.limit,
       request.cursor ? std::optional(name_from_cursor(*request.cursor)) : std::nullopt);
   ListPage page;
+  page.limit = request.limit;
   for (const auto& d : datasets.rows)
     page.items.push_back({{"name", d.name},
                           {"format", d.format},

@@ -28,8 +28,8 @@
 
 namespace clearsky::api {
 
-// 400 for query parameters other than limit and cursor.
-ListPage list_datasets(storage::Database& db, const QueryParameters& query = {});
+// limit and cursor from the query (400 for other parameters).
+ListPage list_datasets(storage::Database& db, Parameters query = Parameters("GET /v1/datasets"));
 
 struct ShowDatasetOptions {
   bool samples = false;

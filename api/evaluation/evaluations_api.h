@@ -40,6 +40,7 @@
 #include "api/encode/evaluation_json.h"
 #include "api/evaluation/evaluation_runner.h"
 #include "api/paging/list_page.h"
+#include "api/request/parameters.h"
 #include "storage/sqlite/database.h"
 
 namespace clearsky::api {
@@ -66,22 +67,20 @@ struct EvaluationFilter {
   std::optional<double> until_unix_s;  // started before
   std::optional<std::string> status;
   std::optional<std::int64_t> job_id;
+  PageRequest page;  // limit and cursor: which part of the filtered list
 };
-// model, dataset, since, until, status, job from query parameters (400 for others; limit and
-// cursor are read by parse_page_request).
-EvaluationFilter parse_evaluation_filter(
-    const std::vector<std::pair<std::string, std::string>>& query);
+// model, dataset, since, until, status, job (or job_id), limit and cursor from query parameters
+// (400 for others).
+EvaluationFilter parse_evaluation_filter(Parameters query);
 
 struct ShowEvaluationOptions {
   SampleDetail samples = SampleDetail::none;
   std::optional<std::string> capture;  // one capture by label
 };
 // samples (true, false, spectra) and capture from query parameters (400 for others).
-ShowEvaluationOptions parse_show_evaluation_options(
-    const std::vector<std::pair<std::string, std::string>>& query);
+ShowEvaluationOptions parse_show_evaluation_options(Parameters query);
 
-ListPage list_evaluations(storage::Database& db, const EvaluationFilter& filter,
-                          const PageRequest& page = {});
+ListPage list_evaluations(storage::Database& db, const EvaluationFilter& filter);
 nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_id,
                                        const ShowEvaluationOptions& options = {});
 

@@ -57,25 +57,19 @@ nlohmann::ordered_json import_to_json(const storage::ImportRecord& record,
       {"location", import_location(record.id)}};
 }
 
-ListPage list_imports(storage::Database& db, const ImportPool* pool, const QueryParameters& query) {
-  std::optional<std::string> status;
-  std::optional<std::string> dataset;
-  for (const auto& [name, value] : query) {
-    if (name == "status") {
-      if (value != "queued" && value != "running" && value != "succeeded" && value != "failed")
-        throw invalid_parameter(name, "one of queued, running, succeeded, failed");
-      status = value;
-    } else if (name == "dataset") {
-      dataset = value;
-    } else if (name != "limit" && name != "cursor") {
-      throw unknown_parameter(name, "GET /v1/imports");
-    }
-  }
+ListPage list_imports(storage::Database& db, const ImportPool* pool, Parameters query) {
+  const std::optional<std::string> status = query.text("status");
+  if (status && *status != "queued" && *status != "running" && *status != "succeeded" &&
+      *status != "failed")
+    throw invalid_parameter("status", "one of queued, running, succeeded, failed");
+  const std::optional<std::string> dataset = query.text("dataset");
   const PageRequest request = parse_page_request(query);
+  query.reject_unused();
   const auto imports = storage::ImportRepository(db).list_page(
       request.limit, status, dataset,
       request.cursor ? std::optional(id_from_cursor(*request.cursor)) : std::nullopt);
   ListPage page;
+  page.limit = request.limit;
   for (const storage::ImportRecord& r : imports.rows)
     page.items.push_back(import_to_json(r, pool ? pool->live_progress(r.id) : std::nullopt));
   if (imports.more) page.next_cursor = id_cursor(imports.rows.back().id);

@@ -22,6 +22,7 @@
 
 #include "api/imports/import_pool.h"
 #include "api/paging/list_page.h"
+#include "api/request/parameters.h"
 #include "storage/sqlite/database.h"
 
 namespace clearsky::api {
@@ -35,7 +36,7 @@ nlohmann::ordered_json import_to_json(const storage::ImportRecord& record,
 // Newest (highest id) first, paged (limit, cursor: api/paging/list_page.h); filters status and
 // dataset from the query, applied before the limit (400 for other parameters). pool may be
 // null (no live progress).
-ListPage list_imports(storage::Database& db, const ImportPool* pool, const QueryParameters& query);
+ListPage list_imports(storage::Database& db, const ImportPool* pool, Parameters query);
 // 404 unknown_import when absent.
 nlohmann::ordered_json show_import(storage::Database& db, const ImportPool* pool, std::int64_t id);
 

@@ -137,14 +137,14 @@ CreatedResource create_job(storage::Database& db, const std::string& body,
   return {job_json(db, find_job(db, id)), job_location(id)};
 }
 
-ListPage list_jobs(storage::Database& db, const QueryParameters& query) {
-  for (const auto& [name, value] : query)
-    if (name != "limit" && name != "cursor") throw unknown_parameter(name, "GET /v1/jobs");
+ListPage list_jobs(storage::Database& db, Parameters query) {
   const PageRequest request = parse_page_request(query);
+  query.reject_unused();
   const auto jobs = storage::JobRepository(db).list_page(
       request.limit,
       request.cursor ? std::optional(name_from_cursor(*request.cursor)) : std::nullopt);
   ListPage page;
+  page.limit = request.limit;
   for (const auto& job : jobs.rows) page.items.push_back(job_json(db, job));
   if (jobs.more) page.next_cursor = name_cursor(jobs.rows.back().name);
   return page;

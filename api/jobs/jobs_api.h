@@ -1,6 +1,6 @@
-// /v1/jobs, transport-free: scheduled evaluations (docs/data-api.md "Jobs"). A job evaluates models against a
-// stored dataset on a 5-field UTC cron schedule (cron_schedule.h); the scheduler
-// (server/scheduler) runs it. JSON:
+// /v1/jobs, transport-free: scheduled evaluations (docs/architecture.md "The scheduler"). A job
+// evaluates models against a stored dataset on a 5-field UTC cron schedule (cron_schedule.h);
+// the scheduler (server/scheduler) runs it (docs/data-api.md "Jobs"). JSON:
 //   create body: {"name", "schedule", "dataset", "models": "all" or [ids], "parameters": {...}}
 //                (parameters as POST /v1/evaluations; optional)
 //   a job:  {"id", "name", "schedule", "dataset", "models": [ids] or "all", "parameters",
@@ -29,8 +29,8 @@ namespace clearsky::api {
 
 CreatedResource create_job(storage::Database& db, const std::string& body,
                            std::span<const ModelFactory> available, double now_unix_s);
-// Filters none; limit and cursor (400 for other query parameters).
-ListPage list_jobs(storage::Database& db, const QueryParameters& query = {});
+// limit and cursor from the query (400 for other parameters).
+ListPage list_jobs(storage::Database& db, Parameters query = Parameters("GET /v1/jobs"));
 // The path of a job.
 std::string job_location(std::int64_t id);
 nlohmann::ordered_json show_job(storage::Database& db, std::int64_t id);

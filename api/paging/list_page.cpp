@@ -59,22 +59,12 @@ std::string percent_encoded(const std::string& text) {
 
 }  // namespace
 
-PageRequest parse_page_request(const QueryParameters& query) {
+PageRequest parse_page_request(Parameters& query) {
   PageRequest page;
-  for (const auto& [name, value] : query) {
-    if (name == "limit") {
-      std::int64_t limit = 0;
-      const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), limit);
-      if (value.empty() || error != std::errc() || end != value.data() + value.size() ||
-          limit < 1 || limit > kMaxPageLimit)
-        throw invalid_parameter("limit", "\"" + value + "\" is not an integer in [1, " +
-                                             std::to_string(kMaxPageLimit) + "]");
-      page.limit = limit;
-    } else if (name == "cursor") {
-      if (value.empty()) throw invalid_parameter("cursor", "empty (omit it for the first page)");
-      page.cursor = value;
-    }
-  }
+  page.limit = query.integer("limit", 1, kMaxPageLimit).value_or(kDefaultPageLimit);
+  page.cursor = query.text("cursor");
+  if (page.cursor && page.cursor->empty())
+    throw invalid_parameter("cursor", "empty (omit it for the first page)");
   return page;
 }
 
@@ -102,6 +92,14 @@ std::string next_page_link(const std::string& path, const QueryParameters& query
   }
   target += "limit=" + std::to_string(limit) + "&cursor=" + cursor;
   return "<" + target + ">; rel=\"next\"";
+}
+
+ApiResponse list_page_response(const ApiRequest& request, const ListPage& page) {
+  ApiResponse response = ordered_json_response(page.items);
+  if (page.next_cursor)
+    response.headers.emplace_back(
+        "Link", next_page_link(request.path, request.query, page.limit, *page.next_cursor));
+  return response;
 }
 
 }  // namespace clearsky::api

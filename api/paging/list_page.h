@@ -14,9 +14,12 @@
 #include <utility>
 #include <vector>
 
+#include "api/http/api_types.h"
+#include "api/request/parameters.h"
+
 namespace clearsky::api {
 
-using QueryParameters = std::vector<std::pair<std::string, std::string>>;
+using QueryParameters = NameValues;
 
 constexpr std::int64_t kDefaultPageLimit = 100;
 constexpr std::int64_t kMaxPageLimit = 1000;
@@ -26,15 +29,16 @@ struct PageRequest {
   std::optional<std::string> cursor;
 };
 
-// One page of a list: the body's array and, when another page follows, its cursor.
+// One page of a list: the body's array and, when another page follows, its cursor (for pages
+// of `limit`).
 struct ListPage {
   nlohmann::ordered_json items = nlohmann::ordered_json::array();
   std::optional<std::string> next_cursor;
+  std::int64_t limit = kDefaultPageLimit;
 };
 
-// limit and cursor from the query (400 naming them when invalid); other names are left to the
-// endpoint's own checks.
-PageRequest parse_page_request(const QueryParameters& query);
+// limit and cursor from the query, marked read (400 naming them when invalid).
+PageRequest parse_page_request(Parameters& query);
 
 // Cursors of lists keyed by id or by name; reading one of another kind, or text no list
 // returned, is a 400 naming "cursor".
@@ -47,5 +51,9 @@ std::string name_from_cursor(const std::string& cursor);
 // QUERY being the request's other parameters (its filters), percent-encoded.
 std::string next_page_link(const std::string& path, const QueryParameters& query,
                            std::int64_t limit, const std::string& cursor);
+
+// The page as the answer to the request: the bare array, with the Link header when another
+// page follows.
+ApiResponse list_page_response(const ApiRequest& request, const ListPage& page);
 
 }  // namespace clearsky::api

@@ -1,7 +1,8 @@
-// Schema migrations (migrations.h). Tables: datasets of measured captures, their
-// samples (spectra as float64 blobs), evaluation runs with per-capture results, and scheduled
-// evaluation jobs; dataset imports; (version 4) ids never reused and run parameters as JSON.
-// Times are ISO 8601 UTC text except capture instants (unix seconds).
+// Schema migrations (migrations.h). Tables (docs/architecture.md "Storage and durability"):
+// datasets of measured captures, their samples (spectra as float64 blobs), evaluation runs with
+// per-capture results, and scheduled evaluation jobs; dataset imports; from version 4, ids never
+// reused and run parameters as JSON (docs/data-api.md). Times are ISO 8601 UTC text except
+// capture instants (unix seconds).
 #include "storage/schema/migrations.h"
 
 #include <string>

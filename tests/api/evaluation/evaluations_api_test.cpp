@@ -27,6 +27,13 @@
 namespace clearsky::api {
 namespace {
 
+// Query parameters from (name, value) pairs.
+Parameters query(const std::vector<std::pair<std::string, std::string>>& pairs) {
+  Parameters p("GET /test");
+  for (const auto& [name, value] : pairs) p.add(name, value);
+  return p;
+}
+
 double sky(const ViewDirection& v, double nm) {
   return 0.05 + 0.02 * std::sin(v.zenith_rad) * std::cos(v.azimuth_rad - 120.0 * kDegree) +
          1e-5 * (nm - 500);
@@ -290,12 +297,12 @@ TEST(EvaluationsApi, ListsArePagedAfterFiltering) {
         factories());
     offsets.insert(offsets.begin(), report.models[0].run_id);  // newest first
   }
-  const EvaluationFilter only_offset = parse_evaluation_filter({{"model", "offset"}});
+  EvaluationFilter only_offset = parse_evaluation_filter(query({{"model", "offset"}}));
   std::vector<std::int64_t> seen;
-  PageRequest page{2, std::nullopt};
+  only_offset.page = {2, std::nullopt};
   int pages = 0;
   for (;;) {
-    const ListPage listed = list_evaluations(f.db, only_offset, page);
+    const ListPage listed = list_evaluations(f.db, only_offset);
     ++pages;
     EXPECT_LE(listed.items.size(), 2u);
     for (const auto& item : listed.items) {
@@ -303,17 +310,20 @@ TEST(EvaluationsApi, ListsArePagedAfterFiltering) {
       seen.push_back(item["id"].get<std::int64_t>());
     }
     if (!listed.next_cursor) break;
-    page.cursor = listed.next_cursor;
+    EXPECT_EQ(listed.limit, 2);
+    only_offset.page.cursor = listed.next_cursor;
   }
   EXPECT_EQ(pages, 3);
   EXPECT_EQ(seen, offsets);
   // Exactly one page: no next cursor.
-  EXPECT_FALSE(list_evaluations(f.db, only_offset, {5, std::nullopt}).next_cursor);
-  EXPECT_EQ(status_of([&] {
-              list_evaluations(f.db, only_offset, {2, std::string("nonsense")});
-            }),
-            400);
-  EXPECT_EQ(parse_evaluation_filter({{"limit", "2"}, {"cursor", "x"}}).model, std::nullopt);
+  only_offset.page = {5, std::nullopt};
+  EXPECT_FALSE(list_evaluations(f.db, only_offset).next_cursor);
+  only_offset.page = {2, std::string("nonsense")};
+  EXPECT_EQ(status_of([&] { list_evaluations(f.db, only_offset); }), 400);
+  const EvaluationFilter paged = parse_evaluation_filter(query({{"limit", "2"}, {"cursor", "x"}}));
+  EXPECT_EQ(paged.page.limit, 2);
+  EXPECT_EQ(paged.page.cursor, "x");
+  EXPECT_EQ(status_of([&] { parse_evaluation_filter(query({{"limit", "1001"}})); }), 400);
 }
 
 // GET /v1/evaluations/tickets/{ticket} lists each model's run as soon as it starts.
@@ -401,26 +411,31 @@ TEST(EvaluationsApi, BackgroundRunsAreStoredListedAndComparedWithHistory) {
 
   // Lists, newest first, with filters.
   EXPECT_EQ(list_evaluations(f.db, {}).items.size(), 5u);
-  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter({{"model", "exact"}})).items.size(), 1u);
-  EXPECT_EQ(list_evaluations(
-                f.db, parse_evaluation_filter({{"model", "offset"}, {"dataset", "synthetic"}}))
+  EXPECT_EQ(
+      list_evaluations(f.db, parse_evaluation_filter(query({{"model", "exact"}}))).items.size(),
+      1u);
+  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter(
+                                       query({{"model", "offset"}, {"dataset", "synthetic"}})))
                 .items.size(),
             4u);
-  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter({{"since", "2000-01-01T00:00:00Z"}}))
-                .items.size(),
-            5u);
-  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter({{"until", "2000-01-01T00:00:00Z"}}))
-                .items.size(),
-            0u);
-  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter({{"status", "failed"}})).items.size(),
-            0u);
+  EXPECT_EQ(
+      list_evaluations(f.db, parse_evaluation_filter(query({{"since", "2000-01-01T00:00:00Z"}})))
+          .items.size(),
+      5u);
+  EXPECT_EQ(
+      list_evaluations(f.db, parse_evaluation_filter(query({{"until", "2000-01-01T00:00:00Z"}})))
+          .items.size(),
+      0u);
+  EXPECT_EQ(
+      list_evaluations(f.db, parse_evaluation_filter(query({{"status", "failed"}}))).items.size(),
+      0u);
   const auto newest = list_evaluations(f.db, {}).items[0];
   EXPECT_EQ(newest["id"], pool.ticket(fourth)->run_ids[0]);
   EXPECT_NEAR(newest["rmse"].get<double>(), 4.0, 1e-9);
-  EXPECT_EQ(status_of([&] { parse_evaluation_filter({{"since", "yesterday"}}); }), 400);
-  EXPECT_EQ(status_of([&] { parse_evaluation_filter({{"colour", "red"}}); }), 400);
+  EXPECT_EQ(status_of([&] { parse_evaluation_filter(query({{"since", "yesterday"}})); }), 400);
+  EXPECT_EQ(status_of([&] { parse_evaluation_filter(query({{"colour", "red"}})); }), 400);
   EXPECT_EQ(status_of([&] {
-              list_evaluations(f.db, parse_evaluation_filter({{"dataset", "x"}}));
+              list_evaluations(f.db, parse_evaluation_filter(query({{"dataset", "x"}})));
             }),
             404);
   EXPECT_EQ(status_of([&] { show_evaluation(f.db, 999); }), 404);
@@ -467,7 +482,7 @@ TEST(EvaluationsApi, PerSampleErrorsOnRequest) {
   ASSERT_EQ(pool.ticket(t)->status, "succeeded");
   const std::int64_t id = pool.ticket(t)->run_ids[0];
   const auto options = [](std::vector<std::pair<std::string, std::string>> query) {
-    return parse_show_evaluation_options(query);
+    return parse_show_evaluation_options(clearsky::api::query(query));
   };
 
   const auto plain = show_evaluation(f.db, id);

@@ -184,8 +184,9 @@ TEST(JobsApi, ADeletedJobsRunsKeepItsId) {
   const std::int64_t run = run_evaluation(f.db, request, factories()).models.at(0).run_id;
   delete_job(f.db, id);
   for (const char* name : {"job", "job_id"}) {
-    const ListPage runs =
-        list_evaluations(f.db, parse_evaluation_filter({{name, std::to_string(id)}}));
+    Parameters query("GET /v1/evaluations");
+    query.add(name, std::to_string(id));
+    const ListPage runs = list_evaluations(f.db, parse_evaluation_filter(std::move(query)));
     ASSERT_EQ(runs.items.size(), 1u) << name;
     EXPECT_EQ(runs.items[0]["id"], run);
     EXPECT_EQ(runs.items[0]["job"], id);

@@ -8,6 +8,14 @@
 namespace clearsky::api {
 namespace {
 
+PageRequest page_of(const QueryParameters& pairs) {
+  Parameters query("GET /test");
+  for (const auto& [name, value] : pairs) query.add(name, value);
+  const PageRequest page = parse_page_request(query);
+  query.reject_unused();
+  return page;
+}
+
 std::string refused_parameter(const std::function<void()>& call) {
   try {
     call();
@@ -19,13 +27,14 @@ std::string refused_parameter(const std::function<void()>& call) {
 }
 
 TEST(ListPage, LimitAndCursorAreChecked) {
-  EXPECT_EQ(parse_page_request({}).limit, 100);
-  EXPECT_FALSE(parse_page_request({}).cursor);
-  EXPECT_EQ(parse_page_request({{"limit", "1"}}).limit, 1);
-  EXPECT_EQ(parse_page_request({{"limit", "1000"}, {"model", "x"}}).limit, 1000);
+  EXPECT_EQ(page_of({}).limit, 100);
+  EXPECT_FALSE(page_of({}).cursor);
+  EXPECT_EQ(page_of({{"limit", "1"}}).limit, 1);
+  EXPECT_EQ(page_of({{"limit", "1000"}, {"cursor", "ab"}}).limit, 1000);
+  EXPECT_EQ(page_of({{"cursor", "ab"}}).cursor, "ab");
   for (const char* bad : {"0", "1001", "-1", "ten", "5x", ""})
-    EXPECT_EQ(refused_parameter([&] { parse_page_request({{"limit", bad}}); }), "limit") << bad;
-  EXPECT_EQ(refused_parameter([&] { parse_page_request({{"cursor", ""}}); }), "cursor");
+    EXPECT_EQ(refused_parameter([&] { page_of({{"limit", bad}}); }), "limit") << bad;
+  EXPECT_EQ(refused_parameter([&] { page_of({{"cursor", ""}}); }), "cursor");
 }
 
 TEST(ListPage, CursorsRoundTripAndAreOfOneKind) {
@@ -38,6 +47,20 @@ TEST(ListPage, CursorsRoundTripAndAreOfOneKind) {
   // Safe in a URL as it is.
   for (char c : name_cursor("a b&c=d"))
     EXPECT_TRUE((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f')) << c;
+}
+
+TEST(ListPage, TheResponseIsTheArrayWithALinkWhenMoreFollow) {
+  ApiRequest request;
+  request.path = "/v1/jobs";
+  request.query = {{"limit", "1"}};
+  ListPage page;
+  page.items.push_back(1);
+  page.limit = 1;
+  EXPECT_FALSE(list_page_response(request, page).header("Link"));
+  EXPECT_EQ(list_page_response(request, page).body, "[1]");
+  page.next_cursor = id_cursor(1);
+  EXPECT_EQ(list_page_response(request, page).header("Link"),
+            "</v1/jobs?limit=1&cursor=" + id_cursor(1) + ">; rel=\"next\"");
 }
 
 TEST(ListPage, NextLinkKeepsTheFiltersAndReplacesThePage) {
