@@ -1,4 +1,4 @@
-// The OpenAPI description of GET /v1/evaluations/{id} (api/openapi/data_paths.cpp) matches what
+// The OpenAPI description of GET /v1/evaluations/{id} (api/openapi/evaluations_operations.cpp) matches what
 // the handler takes (api/evaluation/evaluations_api.h): every documented query parameter and
 // value is accepted, a value outside the documented enum is refused, and the per-sample answer
 // and its absence for older runs are described.
@@ -12,7 +12,7 @@ namespace clearsky::api {
 namespace {
 
 TEST(EvaluationOpenApi, ShowRunParametersAreThoseTheHandlerTakes) {
-  const nlohmann::json& operation = openapi_document()["paths"]["/v1/evaluations/{id}"]["get"];
+  const auto& operation = openapi_document()["paths"]["/v1/evaluations/{id}"]["get"];
   std::vector<std::string> query_names;
   for (const auto& parameter : operation["parameters"]) {
     if (parameter["in"] != "query") continue;
@@ -31,7 +31,7 @@ TEST(EvaluationOpenApi, ShowRunParametersAreThoseTheHandlerTakes) {
   EXPECT_THROW(parse_show_evaluation_options({{"errors", "true"}}), ApiError);
 
   const auto& samples = operation["parameters"][1];
-  EXPECT_EQ(samples["schema"]["enum"], nlohmann::json::array({"false", "true", "spectra"}));
+  EXPECT_EQ(samples["schema"]["enum"], nlohmann::ordered_json::array({"false", "true", "spectra"}));
   const std::string description = samples["description"];
   for (const char* word : {"view_zenith", "bias", "errors", "wavelengths_nm", "null"})
     EXPECT_NE(description.find(word), std::string::npos) << word;
