@@ -1,6 +1,6 @@
 // The one error type of the HTTP API: an HTTP status, a stable machine-readable code, the
 // request parameter at fault (empty when none) and a human-readable message. The server turns
-// it into {"error": {"code", "message", "parameter"}} (DESIGN.md "HTTP API v1").
+// it into {"error": {"code", "message", "parameter"}} (docs/http-api.md).
 // Handlers throw it at the edge (parsing, capability checks); models never see it.
 #pragma once
 

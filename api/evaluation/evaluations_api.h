@@ -1,6 +1,6 @@
 // /v1/evaluations, transport-free: the request body of POST (what to run), the list of stored
 // runs with filters, and one run with its per-capture results and its comparison with the
-// history (issue 9). JSON:
+// history (docs/http-api.md). JSON:
 //   POST body: {"models": ["preetham", ...] or "all", "dataset": NAME,
 //               "parameters": {"turbidity": 3, "alpha": 1.3, ...}} (parameters optional; names
 //               as the query parameters of the sky endpoints; applied to every model)

@@ -1,4 +1,4 @@
-// /v1/imports, transport-free: the state of dataset imports (issue 9), stored rows
+// /v1/imports, transport-free: the state of dataset imports, stored rows
 // (storage/repositories/import_repository.h) with the live progress of those running in the
 // server's ImportPool. JSON of one import:
 //   {"id", "dataset", "format", "source": "upload"|"path", "path" (or null),

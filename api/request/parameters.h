@@ -1,8 +1,8 @@
 // The named parameters of one request (URL query or the scalar fields of a JSON body), read
 // by handlers with typed, range-checked accessors that remember what was read, so that
 // reject_unused() can name any parameter the request carried but the endpoint did not use
-// (STYLE.md habit 13). Numbers are parsed strictly (the whole text, finite; NaN and infinity
-// fail). Not thread-safe: one instance per request.
+// (docs/conventions.md "Unknown parameters are refused"). Numbers are parsed strictly (the
+// whole text, finite; NaN and infinity fail). Not thread-safe: one instance per request.
 #pragma once
 
 #include <initializer_list>

@@ -1,4 +1,4 @@
-// Bearer-token authorisation of the write endpoints (POST, DELETE, imports; issue 9): the
+// Bearer-token authorisation of the write endpoints (POST, DELETE, imports): the
 // token is configured with --token or the CLEARSKY_TOKEN environment variable (the option
 // wins); with no token configured, writes are disabled (403) and reads stay open. A request's
 // "Authorization: Bearer TOKEN" is compared with the configured token in constant time (the

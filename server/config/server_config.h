@@ -1,5 +1,6 @@
-// The server's configuration: command-line options of `clearsky serve` (or the same keys in
-// its --config file), with the limits the HTTP layer enforces (STYLE.md habit 14).
+// The server's configuration: command-line options of `clearsky serve` (or the same keys in its
+// --config file), with the limits the HTTP layer enforces (docs/conventions.md "One HTTP
+// boundary").
 //
 // | option                | unit  | default     | meaning |
 // |-----------------------|-------|-------------|--------------------------------------------------------|

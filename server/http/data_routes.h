@@ -1,13 +1,13 @@
-// The data endpoints of HTTP API v1 (issue 9) on the server's cpp-httplib instance, next to
-// the query endpoints of http_server.cpp and under its exception handler, error format and
+// The data endpoints of HTTP API v1 (docs/http-api.md) on the server's cpp-httplib instance, next
+// to the query endpoints of http_server.cpp and under its exception handler, error format and
 // limits: /v1/datasets, /v1/imports, /v1/evaluations and /v1/jobs, calling the transport-free
-// handlers of api/datasets, api/imports, api/evaluation and api/jobs. Writes (POST, DELETE)
-// need the bearer token (server/auth/write_auth.h; 401 carries WWW-Authenticate: Bearer) and
-// are logged on "audit" with their outcome. Uploads are streamed to a spool file
-// (api/datasets/upload_spool.h) under upload_max_bytes, then imported on the ImportPool
-// (202 + Location /v1/imports/{id}); other bodies are read under the payload limit
-// (request_body.h). Each request opens its own database connection (WAL: readers do not wait
-// for writers); imports and evaluations run on their pools, never on HTTP workers.
+// handlers of api/datasets, api/imports, api/evaluation and api/jobs. Writes (POST, DELETE) need
+// the bearer token (server/auth/write_auth.h; 401 carries WWW-Authenticate: Bearer) and are logged
+// on "audit" with their outcome. Uploads are streamed to a spool file (api/datasets/upload_spool.h)
+// under upload_max_bytes, then imported on the ImportPool (202 + Location /v1/imports/{id}); other
+// bodies are read under the payload limit (request_body.h). Each request opens its own database
+// connection (WAL: readers do not wait for writers); imports and evaluations run on their pools,
+// never on HTTP workers.
 // Thread-safety: DataServices is shared by the HTTP workers; its members are thread-safe.
 #pragma once
 

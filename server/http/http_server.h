@@ -1,5 +1,6 @@
-// The HTTP boundary (STYLE.md habit 14): cpp-httplib wired to the api/ handlers, in one place.
-// - routes of DESIGN.md "HTTP API v1" (routes() lists them, for the OpenAPI coverage test);
+// The HTTP boundary (docs/conventions.md "One HTTP boundary"): cpp-httplib wired to the api/
+// handlers, in one place.
+// - routes of HTTP API v1, docs/http-api.md (routes() lists them, for the OpenAPI coverage test);
 // - one exception handler (ApiError -> its status; anything else, caught with catch (...),
 //   -> 500), and one error format {"error": {"code", "message", "parameter"}}, also for
 //   httplib's own errors (404 unknown path, 413 payload);
