@@ -58,34 +58,22 @@ Json build() {
       throw std::logic_error(std::string("OpenAPI: no description of ") + route.operation_id);
     paths[route.path][route.method] = *operation;
   }
-  return {
-      {"openapi", "3.0.3"},
-      {"info",
-       {{"title", "clearsky"},
-        {"version", "1"},
-        {"description",
-         "Spectral radiance, irradiance and colour of the clear sky from the 8 models of "
-         "Bruneton's 2016 study, and their evaluation against measured skies. Angles are "
-         "degrees, azimuth clockwise from North; radiance W/(m2.sr.nm). Unknown, unused or "
-         "conflicting parameters are errors naming the parameter; no NaN or infinity is "
-         "ever sent. Errors are {\"error\": {\"code\", \"message\", \"parameter\"}}; a "
-         "method a path does not serve is a 404 or 405 with that body."}}},
-      {"servers",
-       Json::array({{{"url", "/"}, {"description", "The server that serves this document"}}})},
-      {"tags",
-       Json::array({
-           {{"name", "sky"}, {"description", "Radiance, irradiance, colour and images of the sky"}},
-           {{"name", "sun"}, {"description", "The sun's position and day"}},
-           {{"name", "models"}, {"description", "The served models"}},
-           {{"name", "datasets"}, {"description", "Stored measured skies"}},
-           {{"name", "imports"}, {"description", "Background dataset imports"}},
-           {{"name", "evaluations"}, {"description", "Runs of models against a dataset (RMSE)"}},
-           {{"name", "jobs"}, {"description", "Scheduled evaluations (cron, UTC)"}},
-           {{"name", "operations"},
-            {"description", "Liveness, readiness, metrics and this document"}},
-       })},
-      {"paths", std::move(paths)},
-      {"components", openapi_components()}};
+  return {{"openapi", "3.0.3"},
+          {"info",
+           {{"title", "clearsky"},
+            {"version", "1"},
+            {"description",
+             "Spectral radiance, irradiance and colour of the clear sky from the 8 models of "
+             "Bruneton's 2016 study, and their evaluation against measured skies. Angles are "
+             "degrees, azimuth clockwise from North; radiance W/(m2.sr.nm). Unknown, unused or "
+             "conflicting parameters are errors naming the parameter; no NaN or infinity is "
+             "ever sent. Errors are {\"error\": {\"code\", \"message\", \"parameter\"}}; a "
+             "method a path does not serve is a 404 or 405 with that body."}}},
+          {"servers",
+           Json::array({{{"url", "/"}, {"description", "The server that serves this document"}}})},
+          {"tags", openapi_tags()},
+          {"paths", std::move(paths)},
+          {"components", openapi_components()}};
 }
 
 }  // namespace

@@ -64,4 +64,17 @@ const nlohmann::ordered_json* operation_doc(std::string_view operation_id) {
 
 nlohmann::ordered_json openapi_components() { return content().components; }
 
+nlohmann::ordered_json openapi_tags() {
+  return openapi::parse(R"json([
+  {"name": "sky", "description": "Radiance, irradiance, colour and images of the sky"},
+  {"name": "sun", "description": "The sun's position and day"},
+  {"name": "models", "description": "The served models"},
+  {"name": "datasets", "description": "Stored measured skies"},
+  {"name": "imports", "description": "Background dataset imports"},
+  {"name": "evaluations", "description": "Runs of models against a dataset (RMSE)"},
+  {"name": "jobs", "description": "Scheduled evaluations (cron, UTC)"},
+  {"name": "operations", "description": "Liveness, readiness, metrics and this document"}
+])json");
+}
+
 }  // namespace clearsky::api

@@ -13,5 +13,7 @@ namespace clearsky::api {
 const nlohmann::ordered_json* operation_doc(std::string_view operation_id);
 // The document's `components`: schemas, parameters, responses, headers, securitySchemes.
 nlohmann::ordered_json openapi_components();
+// The document's top-level `tags`: each tag the operations use, with its description.
+nlohmann::ordered_json openapi_tags();
 
 }  // namespace clearsky::api

@@ -51,6 +51,18 @@ TEST(OperationDocs, EveryOperationIsDocumented) {
   EXPECT_EQ(operation_doc("noSuchOperation"), nullptr);
 }
 
+TEST(OperationDocs, EveryTagIsDescribed) {
+  std::set<std::string> described;
+  for (const auto& tag : openapi_tags()) {
+    EXPECT_FALSE(tag["description"].get<std::string>().empty()) << tag;
+    described.insert(tag["name"].get<std::string>());
+  }
+  std::set<std::string> used;
+  for (const char* id : kOperationIds)
+    for (const auto& tag : (*operation_doc(id))["tags"]) used.insert(tag.get<std::string>());
+  EXPECT_EQ(used, described);
+}
+
 TEST(OperationDocs, EveryResponseBodyIsANamedSchema) {
   const Json components = openapi_components();
   for (const char* id : kOperationIds) {
