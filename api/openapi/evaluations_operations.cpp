@@ -250,8 +250,8 @@ Json operations() {
     },
     "responses": {
       "202": {
-        "description": "Queued: the ticket's state; follow location (also in the Location header when the server sends it).",
-        "headers": {"Location": {"description": "/v1/evaluations/tickets/{ticket}", "schema": {"type": "string"}}},
+        "description": "Queued: the ticket's state; follow Location (also the body's location).",
+        "headers": {"Location": {"description": "/v1/evaluations/tickets/{ticket}", "required": true, "schema": {"type": "string"}}},
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/EvaluationTicket"},
           "example": {"ticket": 1, "status": "queued", "runs": [], "location": "/v1/evaluations/tickets/1"}
@@ -334,7 +334,7 @@ Json operations() {
     "responses": {
       "201": {
         "description": "Created: the job.",
-        "headers": {"Location": {"description": "/v1/jobs/{id}, when the server sends it.", "schema": {"type": "string"}}},
+        "headers": {"Location": {"description": "/v1/jobs/{id}", "required": true, "schema": {"type": "string"}}},
         "content": {"application/json": {"schema": {"$ref": "#/components/schemas/Job"}}}
       },
       "400": {"description": "A body that is not a JSON object, an unknown member, no name or schedule, an invalid schedule, model list or parameter."},

@@ -54,6 +54,9 @@ void add_common_errors(Json& operation, bool takes_body);
 // Gives every 4xx/5xx response of the operations that has only a description the Error body
 // (and Retry-After on a 503) (datasets_operations.cpp).
 void complete_errors(Json& operations);
+// A GET whose success carries an ETag (a hash of the body) and Cache-Control, and answers 304
+// to an If-None-Match naming the current tag (api/http/cache_policy.h).
+void add_revalidation(Json& operation);
 // Makes operation a write: bearer security, 401 and 403.
 void make_write(Json& operation);
 

@@ -41,6 +41,15 @@ void add_common_errors(Json& operation, bool takes_body) {
   responses["500"] = ref("responses", "InternalError");
 }
 
+void add_revalidation(Json& operation) {
+  if (!operation.contains("parameters")) operation["parameters"] = Json::array();
+  operation["parameters"].push_back(ref("parameters", "If-None-Match"));
+  Json& headers = operation["responses"]["200"]["headers"];
+  headers["ETag"] = ref("headers", "ETag");
+  headers["Cache-Control"] = ref("headers", "Cache-Control");
+  operation["responses"]["304"] = ref("responses", "NotModified");
+}
+
 void make_write(Json& operation) {
   operation["security"] = Json::array({{{"bearer", Json::array()}}});
   operation["responses"]["401"] = ref("responses", "Unauthorized");
@@ -67,7 +76,7 @@ Json common_components() {
       "properties": {
         "code": {
           "type": "string",
-          "description": "e.g. invalid_parameter, unknown_parameter, missing_parameter, conflicting_parameters, invalid_body, unknown_model, unknown_dataset, not_found, too_large, model_cannot_answer, model_not_ready, busy, unauthorized, writes_disabled, internal_error"
+          "description": "e.g. invalid_parameter, unknown_parameter, missing_parameter, conflicting_parameters, invalid_body, unknown_model, unknown_dataset, not_found, method_not_allowed (405, with an Allow header, for a method a path does not serve), too_large, model_cannot_answer, model_not_ready, busy, unauthorized, writes_disabled, internal_error"
         },
         "message": {"type": "string"},
         "parameter": {
@@ -136,13 +145,14 @@ Json common_components() {
       "schema": {"type": "string", "enum": ["Bearer"]}
     },
     "ETag": {
-      "description": "An entity tag of the answer: the same request to the same server build answers the same bytes, so a client may revalidate with If-None-Match.",
-      "schema": {"type": "string"}
+      "description": "A strong entity tag of the answer, a hash of its body: a client holding the answer may revalidate it with If-None-Match.",
+      "schema": {"type": "string"},
+      "example": "\"3f1c9a0e5b7d2c48a6e1f0b9d8c7a6e5\""
     },
     "Cache-Control": {
-      "description": "How long a cache may keep the answer.",
+      "description": "How a cache may keep the answer: public, max-age=86400 for the answers that are a function of the request (radiance, irradiance, rgb, skydome, the sun at a given time), no-cache for those that change with the server's state (this document, the models); every other answer, errors included, is no-store.",
       "schema": {"type": "string"},
-      "example": "public, max-age=3600"
+      "example": "public, max-age=86400"
     },
     "Link": {
       "description": "RFC 8288 link to the next page of the list (rel=\"next\"), carrying the cursor; absent on the last page.",

@@ -203,17 +203,11 @@ Area service_area() {
     "tags": ["operations"],
     "summary": "This document",
     "description": "The OpenAPI 3.0 description of HTTP API v1 (docs/openapi.md).",
-    "parameters": [{"$ref": "#/components/parameters/If-None-Match"}],
     "responses": {
       "200": {
         "description": "The document.",
-        "headers": {
-          "ETag": {"$ref": "#/components/headers/ETag"},
-          "Cache-Control": {"$ref": "#/components/headers/Cache-Control"}
-        },
         "content": {"application/json": {"schema": {"$ref": "#/components/schemas/OpenApiDocument"}}}
-      },
-      "304": {"$ref": "#/components/responses/NotModified"}
+      }
     }
   },
   "listModels": {
@@ -239,6 +233,8 @@ Area service_area() {
     }
   }
 })json");
+  add_revalidation(area.operations["openapi"]);
+  add_revalidation(area.operations["listModels"]);
   for (auto& [id, operation] : area.operations.items()) {
     operation["security"] = Json::array();
     add_common_errors(operation, false);

@@ -247,11 +247,11 @@ void add_sky_errors(Json& operation, bool get) {
       "Retry-After seconds.");
   r["503"]["content"]["application/json"]["example"] = parse(
       R"json({"error": {"code": "model_not_ready", "message": "model bruneton: its tables for this configuration are being built (in progress, 40% done)", "parameter": "model"}})json");
-  if (get) {
-    operation["parameters"].push_back(ref("parameters", "If-None-Match"));
-    r["304"] = ref("responses", "NotModified");
-    r["200"]["headers"] = {{"ETag", ref("headers", "ETag")},
-                           {"Cache-Control", ref("headers", "Cache-Control")}};
+  if (get && operation["operationId"] == "getSkydome") {
+    // Streamed: no tag, since the body is not known before it is sent.
+    r["200"]["headers"]["Cache-Control"] = ref("headers", "Cache-Control");
+  } else if (get) {
+    add_revalidation(operation);
   }
   add_common_errors(operation, !get);
 }
@@ -453,7 +453,9 @@ Json operations() {
   with_sky(ops["getRgb"], {"view_zenith", "view_azimuth"}, true);
   with_sky(ops["postRgb"], {}, false);
   with_sky(ops["getSkydome"], {}, true);
-  // The sun query has no model, tables or limits: 400 only.
+  // The sun query has no model, tables or limits: 400 only. Without time its answer is the
+  // current sun, which no cache may keep (Cache-Control: no-store).
+  add_revalidation(ops["getSun"]);
   add_common_errors(ops["getSun"], false);
   for (auto& [id, operation] : ops.items()) operation["security"] = Json::array();
   return ops;

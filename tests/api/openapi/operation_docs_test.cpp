@@ -84,7 +84,9 @@ TEST(OperationDocs, EveryResponseBodyIsANamedSchema) {
           }
         }
       }
-      if (status == "503") EXPECT_TRUE(response["headers"].contains("Retry-After")) << id;
+      if (status == "503") {
+        EXPECT_TRUE(response["headers"].contains("Retry-After")) << id;
+      }
     }
   }
 }
@@ -128,7 +130,9 @@ TEST(OperationDocs, ModelParametersCarryEveryModelsRange) {
       Json schema = p["schema"];
       if (schema.contains("oneOf")) schema = schema["oneOf"][0];  // albedo: a number or "grass"
       // "integer" only when every model that lists it takes integers.
-      if (!spec.integer) EXPECT_EQ(schema["type"], "number") << key;
+      if (!spec.integer) {
+        EXPECT_EQ(schema["type"], "number") << key;
+      }
       EXPECT_LE(schema["minimum"].get<double>(), spec.min_value) << key;
       EXPECT_GE(schema["maximum"].get<double>(), spec.max_value) << key;
       const std::string range =

@@ -103,6 +103,7 @@ class Checker:
         for path, item in document["paths"].items():
             for method, operation in item.items():
                 self.operations[operation["operationId"]] = (method.upper(), path, operation)
+        self.last_headers = {}
         self.passed = 0
         self.failed = 0
         self.covered = set()
@@ -153,8 +154,8 @@ class Checker:
         elif method in ("POST", "DELETE"):
             data = b""
         status, response_headers, raw = self.server.request(method, target, data, sent)
-        problems = self.problems(operation, status, dict((k.lower(), v) for k, v in response_headers),
-                                 raw)
+        self.last_headers = dict((k.lower(), v) for k, v in response_headers)
+        problems = self.problems(operation, status, self.last_headers, raw)
         if status != expected:
             problems.insert(0, f"status {status}, expected {expected}")
         label = f"{operation_id} {method} {target[:90]} -> {status}"
@@ -238,6 +239,17 @@ def wait_for(checker, operation_id, path_values, done):
         time.sleep(0.2)
 
 
+def check_not_modified(checker, operation_id, query=""):
+    """An answer's ETag sent back in If-None-Match: 304 without a body."""
+    checker.call(operation_id, 200, query=query)
+    etag = checker.last_headers.get("etag")
+    if not etag:
+        checker.failed += 1
+        print(f"FAIL {operation_id}: the answer has no ETag, the document says it has")
+        return
+    checker.call(operation_id, 304, query=query, headers={"If-None-Match": etag})
+
+
 def check_paging(checker, operation_id):
     """limit=1 on a list of two: the first page has one item and a Link rel=next, whose target
     answers the rest. A server that does not page yet refuses limit (400 unknown_parameter):
@@ -272,10 +284,13 @@ def run(checker, workdir):
     c.call("listModels", 200)
     c.call("listModels", 400, query="verbose=1")
     c.call("healthz", 413, body=b"x" * (PAYLOAD_MAX_BYTES + 1))
+    check_not_modified(c, "openapi")
+    check_not_modified(c, "listModels")
 
     # The sun and the sky.
     c.call("getSun", 200, query=c.query("getSun", "lat", "lon", "time"))
     c.call("getSun", 400, query=c.query("getSun", "lat"))
+    check_not_modified(c, "getSun", c.query("getSun", "lat", "lon", "time"))
     sun = ("model", "sun_zenith", "sun_azimuth")
     place = ("model", "lat", "lon", "time")
     c.call("getRadiance", 200,
@@ -296,14 +311,18 @@ def run(checker, workdir):
                                              wavelengths="400:800:0.01"))
     c.call("getRadiance", 422, query=c.query("getRadiance", "model", "sun_azimuth", "view_zenith",
                                              "view_azimuth", sun_zenith=100))
+    check_not_modified(c, "getRadiance",
+                       c.query("getRadiance", *sun, "view_zenith", "view_azimuth", "wavelengths"))
     c.call("postRadiance", 200, body=c.body_example("postRadiance"))
     c.call("postRadiance", 400, body=b"{not json")
     c.call("postRadiance", 413, body=b" " * (PAYLOAD_MAX_BYTES + 1))
     c.call("getIrradiance", 200, query=c.query("getIrradiance", *sun))
+    check_not_modified(c, "getIrradiance", c.query("getIrradiance", *sun))
     c.call("getIrradiance", 200, query=c.query("getIrradiance", *place, spectral="true",
                                                tilt=30))
     c.call("getIrradiance", 400, query=c.query("getIrradiance", *sun, component="sideways"))
     c.call("getRgb", 200, query=c.query("getRgb", *sun, "view_zenith", "view_azimuth"))
+    check_not_modified(c, "getRgb", c.query("getRgb", *sun, "view_zenith", "view_azimuth"))
     c.call("getRgb", 200, query=c.query("getRgb", *place, "view_zenith", "view_azimuth",
                                         method="three"))
     c.call("postRgb", 200, body=c.body_example("postRgb"))
