@@ -430,8 +430,7 @@ Area evaluations_area() {
     const bool write = id == "createEvaluation" || id == "createJob" || id == "deleteJob" ||
                        id == "pauseJob" || id == "resumeJob";
     if (write) make_write(operation);
-    const bool takes_body =
-        id == "createEvaluation" || id == "createJob" || id == "pauseJob" || id == "resumeJob";
+    const bool takes_body = id == "createEvaluation" || id == "createJob";
     add_common_errors(operation, takes_body);
   }
   return area;
