@@ -1,6 +1,7 @@
 // Operations of the service itself (openapi_area.h): liveness, readiness, metrics, this document
 // and the model list (server/http/http_server.cpp, api/handlers/models_handler.cpp). The examples
-// are answers of a server started with --models preetham,hosek.
+// are answers of a server started with --models preetham,hosek (the 503: preetham,bruneton on an
+// empty cache, while Bruneton's tables were built).
 #include "api/openapi/openapi_area.h"
 
 namespace clearsky::api::openapi {
@@ -178,7 +179,7 @@ Area service_area() {
         "headers": {"Retry-After": {"$ref": "#/components/headers/Retry-After"}},
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/NotReady"},
-          "example": {"error": {"code": "not_ready", "message": "the default tables of some models are being built", "parameter": null}, "models": {"bruneton": {"progress": 0.25, "status": "precomputing"}}}
+          "example": {"error": {"code": "not_ready", "message": "the default tables of some models are being built", "parameter": null}, "models": {"bruneton": {"progress": 0.0042955326460481094, "status": "precomputing"}, "preetham": {"progress": 1.0, "status": "ready"}}}
         }}
       }
     }

@@ -3,7 +3,7 @@
 // handlers check (api/request/views.h, api/request/sky_request.cpp, api/parse/sun_request.h);
 // the 413 limits are the defaults of Limits (api/request/sky_request.h), which the server's
 // --max-views, --max-wavelengths and --max-skydome-size change. The examples are answers of a
-// server started with --models preetham,hosek.
+// server started with --models preetham,hosek (the 503: with bruneton, its tables building).
 #include "api/openapi/openapi_area.h"
 #include "api/request/sky_request.h"
 
@@ -246,7 +246,7 @@ void add_sky_errors(Json& operation, bool get) {
       "The tables this request needs are being built (code model_not_ready): retry after "
       "Retry-After seconds.");
   r["503"]["content"]["application/json"]["example"] = parse(
-      R"json({"error": {"code": "model_not_ready", "message": "model bruneton: its tables for this configuration are being built (in progress, 40% done)", "parameter": "model"}})json");
+      R"json({"error": {"code": "model_not_ready", "message": "model bruneton: its tables for this configuration are being built (in progress, 0% done)", "parameter": "model"}})json");
   if (get && operation["operationId"] == "getSkydome") {
     // Streamed: no tag, since the body is not known before it is sent.
     r["200"]["headers"]["Cache-Control"] = ref("headers", "Cache-Control");
