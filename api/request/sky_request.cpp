@@ -6,6 +6,7 @@
 
 #include "api/error/api_error.h"
 #include "api/request/place_time.h"
+#include "models/atmosphere/atmosphere_parameter_table.h"
 #include "models/core/numeric.h"
 
 namespace clearsky::api {
@@ -48,31 +49,7 @@ SunSpec parse_sun(Parameters& p) {
 Viewpoint parse_viewpoint(Parameters& p) { return {p.number_or("altitude", 0.0, -500.0, 1e7)}; }
 
 bool set_atmosphere_parameter(AtmosphereParameters& a, const std::string& name, double value) {
-  if (name == "alpha")
-    a.angstrom_alpha = value;
-  else if (name == "beta")
-    a.angstrom_beta = value;
-  else if (name == "g")
-    a.mie_phase_g = value;
-  else if (name == "turbidity")
-    a.turbidity = value;
-  else if (name == "albedo")
-    a.ground_albedo = value;
-  else if (name == "mie_single_scattering_albedo")
-    a.mie_single_scattering_albedo = value;
-  else if (name == "rayleigh_scale_height_m")
-    a.rayleigh_scale_height_m = value;
-  else if (name == "mie_scale_height_m")
-    a.mie_scale_height_m = value;
-  else if (name == "rayleigh_temperature_celsius")
-    a.rayleigh_temperature_celsius = value;
-  else if (name == "earth_radius_m")
-    a.earth_radius_m = value;
-  else if (name == "top_radius_m")
-    a.top_radius_m = value;
-  else
-    return false;
-  return true;
+  return clearsky::set_atmosphere_parameter(a, name, value);
 }
 
 ModelConfig parse_config(Parameters& p, const ModelDescriptor& descriptor) {
