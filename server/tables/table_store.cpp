@@ -137,8 +137,13 @@ std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory&
 
 std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory,
                                                   const ModelConfig& config) const {
-  // The configuration was validated by the request's parsing (api::parse_config); the build
-  // validates it once more, once per configuration (models/core/model_factory.h).
+  // The one validation of a request's configuration (a 400 naming the parameter); the build
+  // validates once per configuration (models/core/model_factory.h).
+  try {
+    validate_config(*factory.descriptor, config);
+  } catch (const std::invalid_argument& e) {
+    throw api::from_invalid_argument(e);
+  }
   // The default configuration (most requests) skips building its canonical text.
   static const AtmosphereParameters default_atmosphere;
   static const WavelengthGrid default_grid = ModelConfig{}.wavelengths;
