@@ -12,7 +12,13 @@ packages=(
   libhowardhinnant-date-dev tzdata libxxhash-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   wrk curl python3
+  python3-jsonschema
 )
+# The OpenAPI linter (docs/openapi.md) runs on node and npm: Debian's, unless the machine
+# already has a node with its npm (another distribution's nodejs package ships both).
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  packages+=(nodejs npm)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

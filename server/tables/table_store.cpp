@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "api/error/api_error.h"
+#include "models/core/invalid_input.h"
 
 namespace clearsky::server {
 
@@ -137,13 +138,22 @@ std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory&
 
 std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory,
                                                   const ModelConfig& config) const {
-  // The configuration was validated by the request's parsing (api::parse_config); the build
-  // validates it once more, once per configuration (models/core/model_factory.h).
   // The default configuration (most requests) skips building its canonical text.
   static const AtmosphereParameters default_atmosphere;
   static const WavelengthGrid default_grid = ModelConfig{}.wavelengths;
   const bool plain = config.options.empty() && config.atmosphere == default_atmosphere &&
                      config.wavelengths == default_grid;
+  // Any other configuration is checked against the descriptor before it is queued, so that a
+  // caller that did not parse it from a request (evaluations, jobs, tests) gets a 400 naming the
+  // parameter at once instead of a failed build (the build checks it again, once per build:
+  // models/core/model_factory.h).
+  if (!plain) {
+    try {
+      validate_config(*factory.descriptor, config);
+    } catch (const InvalidInput& e) {
+      throw api::invalid_parameter(e.field(), e.reason());
+    }
+  }
   const std::string canonical = plain ? default_canonical_string() : config.canonical_string();
   const bool is_default = canonical == default_canonical_string();
   const std::string key = entry_key(factory, canonical);

@@ -63,7 +63,7 @@ nlohmann::ordered_json upload(storage::Database& db, const std::filesystem::path
 
 TEST(DatasetsApi, ListAndShowSyntheticCapture) {
   storage::Database db = database_with_synthetic_dataset();
-  const auto list = list_datasets(db);
+  const auto list = list_datasets(db).items;
   ASSERT_EQ(list.size(), 1u);
   EXPECT_EQ(list[0]["name"], "synthetic");
   EXPECT_EQ(list[0]["format"], "kider2014");
@@ -102,7 +102,7 @@ TEST(DatasetsApi, UnknownDatasetOrCaptureIs404AndDeleteRemoves) {
   EXPECT_EQ(status_of([&] { show_dataset(db, "missing"); }), 404);
   EXPECT_EQ(status_of([&] { show_dataset(db, "synthetic", {false, std::string("nope")}); }), 404);
   EXPECT_EQ(delete_dataset(db, "synthetic")["deleted"], "synthetic");
-  EXPECT_TRUE(list_datasets(db).empty());
+  EXPECT_TRUE(list_datasets(db).items.empty());
   EXPECT_EQ(status_of([&] { delete_dataset(db, "synthetic"); }), 404);
 }
 
@@ -136,7 +136,7 @@ TEST(DatasetsApi, OversizedUploadIs413AndLeavesNothing) {
   storage::Database db = storage::open_database(dir.path / "db.sqlite");
   const std::string bytes = file_bytes(clearsky::testing::shared_data_dir() / kArchive);
   EXPECT_EQ(status_of([&] { upload(db, dir.path / "uploads", bytes, bytes.size() - 1); }), 413);
-  EXPECT_TRUE(list_datasets(db).empty());
+  EXPECT_TRUE(list_datasets(db).items.empty());
   EXPECT_TRUE(std::filesystem::is_empty(dir.path / "uploads"));
 }
 
@@ -150,7 +150,7 @@ TEST(DatasetsApi, TruncatedOrForeignUploadIs400AndLeavesNothing) {
       400);
   EXPECT_EQ(status_of([&] { upload(db, dir.path / "u", "this is not an archive", 8u << 20); }),
             400);
-  EXPECT_TRUE(list_datasets(db).empty());
+  EXPECT_TRUE(list_datasets(db).items.empty());
   EXPECT_EQ(status_of([&] { import_dataset(db, "x", "csv", dir.path); }), 400);
 }
 
@@ -165,7 +165,7 @@ TEST(DatasetsApi, SameLabelWithOtherContentIs409) {
   storage::CaptureRepository(db).insert(dataset, c, "other", "test");
   const std::string bytes = file_bytes(clearsky::testing::shared_data_dir() / kArchive);
   EXPECT_EQ(status_of([&] { upload(db, dir.path / "u", bytes, 8u << 20); }), 409);
-  EXPECT_EQ(list_datasets(db)[0]["captures"], 1);
+  EXPECT_EQ(list_datasets(db).items[0]["captures"], 1);
 }
 
 TEST(UploadSpool, StaleFilesOfAKilledProcessAreRemovedAtStartUp) {

@@ -93,8 +93,8 @@ TEST(ImportPool, UploadImportedInTheBackground) {
   const auto dataset = storage::DatasetRepository(f.db).find("noon");
   ASSERT_TRUE(dataset);
   EXPECT_EQ(dataset->samples, 81);
-  EXPECT_EQ(list_imports(f.db, &pool, query({{"status", "succeeded"}})).size(), 1u);
-  EXPECT_EQ(list_imports(f.db, &pool, query({{"dataset", "other"}})).size(), 0u);
+  EXPECT_EQ(list_imports(f.db, &pool, query({{"status", "succeeded"}})).items.size(), 1u);
+  EXPECT_EQ(list_imports(f.db, &pool, query({{"dataset", "other"}})).items.size(), 0u);
   EXPECT_THROW(list_imports(f.db, &pool, query({{"colour", "red"}})), ApiError);
 }
 
@@ -155,7 +155,7 @@ TEST(ImportPool, FullQueueIs503) {
     EXPECT_EQ(shown["status"], "failed");
     EXPECT_EQ(shown["error"]["code"], "invalid_archive") << shown.dump();
   }
-  EXPECT_EQ(list_imports(f.db, &pool, query({})).size(), 2u);  // the refused one left no row
+  EXPECT_EQ(list_imports(f.db, &pool, query({})).items.size(), 2u);  // the refused one left no row
 }
 
 TEST(ImportPool, StartUpFailsInterruptedImports) {

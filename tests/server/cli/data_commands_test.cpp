@@ -84,6 +84,15 @@ TEST(DataCommands, ErrorsAreReportedWithExitStatus1) {
   const Result unknown_model = run("evaluate --dataset missing --models nishita2042 --db " + t.db);
   EXPECT_EQ(unknown_model.exit_code, 1);
   EXPECT_NE(unknown_model.output.find("nishita2042"), std::string::npos) << unknown_model.output;
+  // A parameter that none of the requested models takes (docs/data-api.md "Evaluation
+  // parameters"), refused before anything is read or run.
+  const Result inapplicable =
+      run("evaluate --dataset missing --models bruneton --parameters '{\"turbidity\": 3}' --db " +
+          t.db);
+  EXPECT_EQ(inapplicable.exit_code, 1);
+  EXPECT_NE(inapplicable.output.find("turbidity: applies to none of the requested models"),
+            std::string::npos)
+      << inapplicable.output;
   std::filesystem::create_directories(t.dir);
   const auto bad = t.dir / "bad.7z";
   {

@@ -102,7 +102,7 @@ TEST(Durability, ReadersDuringWritesSeeWholeDatasets) {
   std::thread reader([&] {
     storage::Database db = storage::open_database(path);
     while (!done) {
-      for (const auto& d : api::list_datasets(db)) {
+      for (const auto& d : api::list_datasets(db).items) {
         if (d["captures"] != 4 || d["samples"] != 4 * 81) ++partial;
       }
       ++reads;

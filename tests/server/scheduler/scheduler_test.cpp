@@ -62,7 +62,8 @@ struct Fixture {
     return api::create_job(db,
                            R"({"name": ")" + schedule + model + R"(", "schedule": ")" + schedule +
                                R"(", "dataset": "synthetic", "models": [")" + model + R"("]})",
-                           factories(), kT0)["id"];
+                           factories(), kT0)
+        .body["id"];
   }
   std::size_t runs_of(std::int64_t job_id) {
     std::size_t n = 0;
