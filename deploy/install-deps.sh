@@ -4,11 +4,12 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config git
+  build-essential cmake pkg-config git clang-format
   libcpp-httplib-dev libssl-dev zlib1g-dev nlohmann-json3-dev
   libopenexr-dev openexr libgeographiclib-dev
   libsqlite3-dev sqlite3 libarchive-dev p7zip-full libxxhash-dev
   prometheus-cpp-dev libspdlog-dev libcli11-dev libnlopt-cxx-dev
+  libhowardhinnant-date-dev tzdata libxxhash-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   wrk curl python3
   python3-jsonschema

@@ -38,12 +38,26 @@ Json schemas() {
   "EvaluationTicket": {
     "type": "object",
     "description": "A started evaluation (kept in memory): its state and the ids of its runs once they start.",
-    "required": ["ticket", "status", "runs"],
+    "required": ["ticket", "status", "runs", "models"],
     "additionalProperties": false,
     "properties": {
       "ticket": {"type": "integer", "minimum": 1},
       "status": {"type": "string", "enum": ["queued", "running", "succeeded", "failed"]},
       "runs": {"type": "array", "items": {"type": "integer", "minimum": 1}},
+      "models": {
+        "type": "array",
+        "description": "Each model's run as soon as it starts, in the order they started.",
+        "items": {
+          "type": "object",
+          "required": ["model", "run", "status"],
+          "additionalProperties": false,
+          "properties": {
+            "model": {"type": "string"},
+            "run": {"type": "integer", "minimum": 1},
+            "status": {"type": "string", "enum": ["running", "succeeded", "failed"]}
+          }
+        }
+      },
       "error": {"type": "string", "description": "When failed."},
       "location": {"type": "string", "description": "In the answer of POST: /v1/evaluations/tickets/{ticket}."}
     }
@@ -107,7 +121,7 @@ Json schemas() {
       "dataset": {"type": "string", "nullable": true},
       "model": {"type": "string"},
       "model_version": {"type": "string"},
-      "parameters": {"type": "string", "description": "The run's model configuration, canonical text (history compares runs by it)."},
+      "parameters": {"allOf": [{"$ref": "#/components/schemas/EvaluationParameters"}], "description": "The parameters applied to this run's model, as given (docs/data-api.md)."},
       "software_version": {"type": "string"},
       "wavelength_range_nm": {"type": "array", "minItems": 2, "maxItems": 2, "items": {"type": "number"}},
       "wavelengths_nm": {"type": "array", "nullable": true, "items": {"type": "number"}, "description": "With samples=spectra; null for runs stored before per-sample errors were kept."},
@@ -199,7 +213,7 @@ Json schemas() {
 const char* kJobExample =
     R"json({"id": 1, "name": "nightly", "schedule": "0 3 * * *", "dataset": "synthetic", "models": ["preetham", "hosek"], "parameters": {"turbidity": 3}, "paused": false, "created": "2026-11-23T19:42:24.655Z", "last_run": null, "next_run": "2026-11-24T03:00:00Z", "last_result": []})json";
 const char* kRunExample =
-    R"json({"id": 1, "dataset": "synthetic", "model": "preetham", "model_version": "1", "parameters": "R=6360000;top=6420000;HR=8000;HM=1200;T=15;alpha=0.80000000000000004;beta=0.040000000000000001;ssa=0.80000000000000004;g=0.69999999999999996;turbidity=3;albedo=grass;grid=bins:360,11.75,40", "software_version": "0.1.0", "wavelength_range_nm": [360.0, 720.0], "job": null, "status": "succeeded", "error": null, "started": "2026-11-23T19:42:21.655Z", "finished": "2026-11-23T19:42:21.656Z", "rmse": 123.0398240797635, "timings": {"precompute_seconds": 3.9713e-05, "evaluate_seconds": 0.000182782}, "processing_steps": ["2013-05-27___11.45.00: sample 0 (zenith 77.8849 deg, azimuth 0.0000 deg) replaced by the mean of its ring neighbours 1 and 31", "2013-05-27___11.45.00: sun azimuth estimated from mirror symmetry: 116.077 deg (computed 136.077 deg, 201 candidates, +-20.0 deg in 0.20 deg steps)"], "captures": [{"label": "2013-05-27___11.45.00", "time": "2013-05-27T11:45:00-04:00", "sun_zenith": 26.651259213110777, "sun_azimuth": 116.07696990085265, "rmse": 123.0398240797635, "values_compared": 2511}], "history": {"previous_run": null, "previous_rmse": null, "rmse_changed": null}})json";
+    R"json({"id": 1, "dataset": "synthetic", "model": "preetham", "model_version": "1", "parameters": {"turbidity": 3}, "software_version": "0.1.0", "wavelength_range_nm": [360.0, 720.0], "job": null, "status": "succeeded", "error": null, "started": "2026-11-23T19:42:21.655Z", "finished": "2026-11-23T19:42:21.656Z", "rmse": 123.0398240797635, "timings": {"precompute_seconds": 3.9713e-05, "evaluate_seconds": 0.000182782}, "processing_steps": ["2013-05-27___11.45.00: sample 0 (zenith 77.8849 deg, azimuth 0.0000 deg) replaced by the mean of its ring neighbours 1 and 31", "2013-05-27___11.45.00: sun azimuth estimated from mirror symmetry: 116.077 deg (computed 136.077 deg, 201 candidates, +-20.0 deg in 0.20 deg steps)"], "captures": [{"label": "2013-05-27___11.45.00", "time": "2013-05-27T11:45:00-04:00", "sun_zenith": 26.651259213110777, "sun_azimuth": 116.07696990085265, "rmse": 123.0398240797635, "values_compared": 2511}], "history": {"previous_run": null, "previous_rmse": null, "rmse_changed": null}})json";
 
 Json job_path_parameter() {
   return parse(
@@ -219,7 +233,8 @@ Json operations() {
       {"name": "since", "in": "query", "required": false, "description": "Started at or after this ISO 8601 time.", "schema": {"type": "string", "format": "date-time"}},
       {"name": "until", "in": "query", "required": false, "description": "Started before this ISO 8601 time.", "schema": {"type": "string", "format": "date-time"}},
       {"name": "status", "in": "query", "required": false, "description": "Runs in this state.", "schema": {"$ref": "#/components/schemas/RunStatus"}},
-      {"name": "job", "in": "query", "required": false, "description": "Runs of this scheduled job.", "schema": {"type": "integer", "minimum": 1}},
+      {"name": "job", "in": "query", "required": false, "description": "Runs of this scheduled job (also after the job was deleted).", "schema": {"type": "integer", "minimum": 1}},
+      {"name": "job_id", "in": "query", "required": false, "description": "The same as job (not both).", "schema": {"type": "integer", "minimum": 1}},
       {"$ref": "#/components/parameters/limit"},
       {"$ref": "#/components/parameters/cursor"}
     ],
@@ -254,7 +269,7 @@ Json operations() {
         "headers": {"Location": {"description": "/v1/evaluations/tickets/{ticket}", "required": true, "schema": {"type": "string"}}},
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/EvaluationTicket"},
-          "example": {"ticket": 1, "status": "queued", "runs": [], "location": "/v1/evaluations/tickets/1"}
+          "example": {"ticket": 1, "status": "queued", "runs": [], "models": [], "location": "/v1/evaluations/tickets/1"}
         }}
       },
       "400": {"description": "A body that is not a JSON object, an unknown member, no dataset, or an invalid model list or parameter."},
@@ -294,7 +309,7 @@ Json operations() {
         "description": "The ticket.",
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/EvaluationTicket"},
-          "example": {"ticket": 1, "status": "succeeded", "runs": [1]}
+          "example": {"ticket": 1, "status": "succeeded", "runs": [1], "models": [{"model": "preetham", "run": 1, "status": "succeeded"}]}
         }}
       },
       "400": {"description": "A ticket that is not a positive integer."},
