@@ -22,6 +22,7 @@
 // |       | 16          | non-default table configurations kept / pending        | | build_wait_ms
 // | ms    | 2000        | how long a request waits for a table build before 503  | | retry_after_s
 // | s     | 5           | Retry-After of a 503                                   | |
+// | table_memory_bytes    | byte  | 1 GiB       | tables kept or being built, defaults included (503 beyond; server/README.md) |
 // builder_threads       |       | 1           | concurrent builds of the tables queued at start |
 // | token                 |       | (none)      | bearer token of the write endpoints; none: CLEARSKY_TOKEN, else writes disabled |
 // | models                |       | (all)       | serve only these model ids |
@@ -60,6 +61,7 @@ struct ServerConfig {
   std::size_t max_wavelengths = 2000;
   int max_skydome_size = 4096;
   std::size_t table_capacity = 16;
+  std::size_t table_memory_bytes = std::size_t{1} << 30;
   int build_wait_ms = 2000;
   int retry_after_s = 5;
   unsigned builder_threads = 1;
