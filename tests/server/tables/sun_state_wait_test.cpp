@@ -47,7 +47,7 @@ class SlowSunSky final : public SkyModel {
                                                     const PrecomputeContext&) const override {
     std::lock_guard lock(mutex_);
     if (!state_) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(400));
+      std::this_thread::sleep_for(std::chrono::milliseconds(3000));
       ++preparations();
       state_ = std::make_shared<const SunState>(sun);
     }
@@ -88,10 +88,11 @@ TEST(SunStateWait, AnswersServiceUnavailableWhilePreparingThenServes) {
     EXPECT_EQ(e.status(), 503);
     EXPECT_EQ(e.retry_after_s(), 6);
   }
-  // The refusal comes after the wait, not after the preparation.
-  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(390));
+  // The refusal comes after the wait, not after the preparation (3 s: margin for a loaded
+  // machine).
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(2500));
   std::shared_ptr<const SunState> state;
-  for (int i = 0; i < 200 && !state; ++i) {
+  for (int i = 0; i < 1000 && !state; ++i) {
     try {
       state = store.sun_state(model, sun);
     } catch (const api::ApiError& e) {
