@@ -86,7 +86,7 @@ ModelConfig parse_evaluation_parameters(const nlohmann::json& parameters,
     config.atmosphere.validate();
     // Each option within the range of every requested model that lists it.
     for (const ModelFactory* model : models)
-      validate_config(*model->descriptor, options_for_model(*model->descriptor, config));
+      validate_model_config(*model->descriptor, options_for_model(*model->descriptor, config));
   } catch (const std::invalid_argument& e) {
     throw from_invalid_argument(e);
   }

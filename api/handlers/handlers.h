@@ -1,6 +1,6 @@
-// The JSON/CSV endpoints of HTTP API v1 (DESIGN.md), one file each. Each parses and validates
-// its request completely before computing (errors are ApiError), calls the model through the
-// ModelProvider, and encodes the answer. Thread-safe: they share only the provider.
+// The JSON/CSV endpoints of HTTP API v1 (server/README.md), one file each. Each parses and
+// validates its request completely before computing (errors are ApiError), calls the model
+// through the ModelProvider, and encodes the answer. Thread-safe: they share only the provider.
 #pragma once
 
 #include "api/http/api_types.h"

@@ -6,6 +6,7 @@
 
 #include "api/error/api_error.h"
 #include "api/request/place_time.h"
+#include "models/core/invalid_input.h"
 #include "models/core/numeric.h"
 
 namespace clearsky::api {
@@ -35,7 +36,7 @@ SunSpec parse_sun(Parameters& p) {
       throw missing_parameter("sun_zenith",
                               "give sun_zenith and sun_azimuth, or lat, lon and time");
     }
-    const SolarPosition position = solar_position_checked(parse_place_and_time(p));
+    const SolarPosition position = solar_position_checked(parse_place_and_time(p).position);
     spec.zenith_deg = position.zenith_deg;
     spec.azimuth_deg = position.azimuth_deg;
     spec.from_place_and_time = true;
@@ -45,7 +46,7 @@ SunSpec parse_sun(Parameters& p) {
   return spec;
 }
 
-Viewpoint parse_viewpoint(Parameters& p) { return {p.number_or("altitude", 0.0, -500.0, 1e7)}; }
+Viewpoint parse_viewpoint(Parameters& p) { return {parse_altitude_m(p)}; }
 
 bool set_atmosphere_parameter(AtmosphereParameters& a, const std::string& name, double value) {
   if (name == "alpha")
@@ -105,12 +106,29 @@ ModelConfig parse_config(Parameters& p, const ModelDescriptor& descriptor) {
       config.options[spec.name] = value;
     }
   }
+  validate_model_config(descriptor, config);
+  return config;
+}
+
+void validate_model_config(const ModelDescriptor& descriptor, const ModelConfig& config) {
   try {
     validate_config(descriptor, config);
+  } catch (const InvalidInput& e) {
+    throw from_invalid_input(e);
   } catch (const std::invalid_argument& e) {
+    // A check that does not name its field yet: the option at fault is the one refused when
+    // validated alone (the atmosphere passed above, as it is checked first).
+    for (const auto& [name, value] : config.options) {
+      ModelConfig alone;
+      alone.options[name] = value;
+      try {
+        validate_config(descriptor, alone);
+      } catch (const std::invalid_argument&) {
+        throw ApiError(400, "invalid_parameter", name, e.what());
+      }
+    }
     throw from_invalid_argument(e);
   }
-  return config;
 }
 
 std::optional<std::vector<double>> parse_wavelengths(Parameters& p, const Limits& limits) {

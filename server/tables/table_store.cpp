@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "api/error/api_error.h"
+#include "api/request/sky_request.h"
 
 namespace clearsky::server {
 
@@ -138,7 +139,7 @@ std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory&
 std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory,
                                                   const ModelConfig& config) const {
   try {
-    validate_config(*factory.descriptor, config);
+    api::validate_model_config(*factory.descriptor, config);
   } catch (const std::invalid_argument& e) {
     throw api::from_invalid_argument(e);
   }
