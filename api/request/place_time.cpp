@@ -16,48 +16,29 @@ namespace clearsky::api {
 namespace {
 
 using Kind = PlaceTimeKind;
+using In = SolarPositionInput;
 
+// The table of place_time.h (a test compares the two).
+// clang-format off
 constexpr PlaceTimeParameter kParameters[] = {
-    {"lat",
-     Kind::latitude,
-     "degree",
-     "required",
-     {-90.0, 90.0},
-     "latitude, North positive: decimal or DMS (42d26'36\"N)"},
-    {"lon",
-     Kind::longitude,
-     "degree",
-     "required",
-     {-180.0, 180.0},
-     "longitude, East positive: decimal or DMS (76d28'55\"W)"},
-    {"time",
-     Kind::time,
-     "ISO 8601",
-     "now",
-     {0.0, 6000.0},
-     "instant with offset or Z (2013-05-27T11:45:00-04:00)"},
-    {"altitude",
-     Kind::number,
-     "m",
-     "0",
-     {-500.0, 1e7},
-     "observer above sea level (also the sky's viewpoint)"},
-    {"pressure",
-     Kind::number,
-     "mbar",
-     "1013.25",
-     {0.0, 5000.0},
-     "annual mean local pressure, for refraction"},
-    {"temperature",
-     Kind::number,
-     "Celsius",
-     "15",
-     {-273.0, 6000.0, true, false},
-     "annual mean local temperature, for refraction"},
-    {"delta_t", Kind::number, "s", "69", {-8000.0, 8000.0}, "TT - UT1"},
-    {"delta_ut1", Kind::number, "s", "0", {-1.0, 1.0, true, true}, "UT1 - UTC"},
-    {"refraction", Kind::boolean, "bool", "true", {}, "apply atmospheric refraction to the zenith"},
+    {"lat", Kind::latitude, "degree", "required", {-90.0, 90.0},
+     "latitude, North positive: decimal or DMS (42d26'36\"N)", &In::latitude_deg},
+    {"lon", Kind::longitude, "degree", "required", {-180.0, 180.0},
+     "longitude, East positive: decimal or DMS (76d28'55\"W)", &In::longitude_deg},
+    {"time", Kind::time, "ISO 8601", "now", {0.0, 6000.0},
+     "instant with offset or Z (2013-05-27T11:45:00-04:00)", &In::unix_time_utc_s},
+    {"altitude", Kind::number, "m", "0", {-500.0, 1e7},
+     "observer above sea level (also the sky's viewpoint)", &In::elevation_m},
+    {"pressure", Kind::number, "mbar", "1013.25", {0.0, 5000.0},
+     "annual mean local pressure, for refraction", &In::pressure_mbar},
+    {"temperature", Kind::number, "Celsius", "15", {-273.0, 6000.0, true, false},
+     "annual mean local temperature, for refraction", &In::temperature_c},
+    {"delta_t", Kind::number, "s", "69", {-8000.0, 8000.0}, "TT - UT1", &In::delta_t_s},
+    {"delta_ut1", Kind::number, "s", "0", {-1.0, 1.0, true, true}, "UT1 - UTC", &In::delta_ut1_s},
+    {"refraction", Kind::boolean, "bool", "true", {}, "apply atmospheric refraction to the zenith",
+     nullptr},
 };
+// clang-format on
 
 std::string format_number(double x) {
   std::ostringstream out;
@@ -117,18 +98,18 @@ void read_time(Parameters& p, const PlaceTimeParameter& r, double now_unix_s, Pl
     // api/parse/iso8601_time.h throws its own InvalidParameter; it becomes an ApiError here.
     try {
       const Iso8601Time parsed = parse_iso8601_time(*text, name);
-      out.position.unix_time_utc_s = parsed.unix_time_utc_s;
+      out.position.*r.field = parsed.unix_time_utc_s;
       out.utc_offset_min = parsed.utc_offset_min;
       out.utc_designator = parsed.utc_designator;
     } catch (const InvalidParameter& e) {
       throw invalid_parameter(e.parameter(), e.message());
     }
   } else {
-    out.position.unix_time_utc_s = now_unix_s;
+    out.position.*r.field = now_unix_s;
     out.utc_offset_min = 0;
     out.utc_designator = true;
   }
-  const double t = out.position.unix_time_utc_s;
+  const double t = out.position.*r.field;
   if (!(t >= start_of_year_unix_s(static_cast<int>(r.range.min)) &&
         t < start_of_year_unix_s(static_cast<int>(r.range.max) + 1))) {
     throw invalid_parameter(name, "must lie in the years " + r.range.text() + " (UTC)" +
@@ -155,10 +136,8 @@ PlaceTime parse_place_and_time(Parameters& p, double now_unix_s) {
   for (const PlaceTimeParameter& r : kParameters) {
     switch (r.kind) {
       case Kind::latitude:
-        in.latitude_deg = angle_of(p, r);
-        break;
       case Kind::longitude:
-        in.longitude_deg = angle_of(p, r);
+        in.*r.field = angle_of(p, r);
         break;
       case Kind::time:
         read_time(p, r, now_unix_s, out);
@@ -166,23 +145,9 @@ PlaceTime parse_place_and_time(Parameters& p, double now_unix_s) {
       case Kind::boolean:
         in.refraction = p.boolean_or(std::string(r.name), r.fallback == "true");
         break;
-      case Kind::number: {
-        const double x = number_of(p, r);
-        if (r.name == "altitude") {
-          in.elevation_m = x;
-        } else if (r.name == "pressure") {
-          in.pressure_mbar = x;
-        } else if (r.name == "temperature") {
-          in.temperature_c = x;
-        } else if (r.name == "delta_t") {
-          in.delta_t_s = x;
-        } else if (r.name == "delta_ut1") {
-          in.delta_ut1_s = x;
-        } else {
-          throw std::logic_error("place/time parameter " + std::string(r.name) + " has no field");
-        }
+      case Kind::number:
+        in.*r.field = number_of(p, r);
         break;
-      }
     }
   }
   return out;

@@ -58,6 +58,8 @@ struct PlaceTimeParameter {
   // The accepted values; for time the calendar years (UTC); unused for a boolean.
   Interval range;
   std::string_view meaning;
+  // The SPA input it sets (refraction, the one boolean, sets SolarPositionInput::refraction).
+  double SolarPositionInput::*field = nullptr;
 };
 
 // The table, in its order.
