@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config git
   libcpp-httplib-dev libssl-dev zlib1g-dev nlohmann-json3-dev
   libopenexr-dev openexr libgeographiclib-dev
-  libsqlite3-dev sqlite3 libarchive-dev p7zip-full
+  libsqlite3-dev sqlite3 libarchive-dev p7zip-full libxxhash-dev
   prometheus-cpp-dev libspdlog-dev libcli11-dev libnlopt-cxx-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   wrk curl python3

@@ -1,5 +1,5 @@
 // /v1/datasets, transport-free: list, show, delete and import stored measurement datasets
-// (DESIGN.md "HTTP API v1"). The HTTP layer passes the path's dataset name and the query; the
+// (docs/http-api.md). The HTTP layer passes the path's dataset name and the query; the
 // answers are JSON:
 //   list:   [{"name", "format", "created", "captures", "samples"}]
 //   show:   {"name", "format", "created", "captures": [{"label", "time" (ISO, site offset),

@@ -1,5 +1,5 @@
 // An uploaded request body spooled to a temporary file as it arrives, under a size limit, so
-// that an archive is never held whole in memory (issue 9: "streamed to disk, size-limited").
+// that an archive is never held whole in memory (docs/architecture.md "Storage and durability").
 // The file lives in the given folder with a unique name and is removed when the spool is
 // destroyed, whatever happened. Not thread-safe: one spool per request.
 #pragma once

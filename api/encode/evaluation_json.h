@@ -1,9 +1,9 @@
-// JSON of evaluation results, as DESIGN.md "CLI contract" fixes it for `clearsky evaluate
-// --json` (and the API reuses): {"dataset", "wavelength_range_nm": [min, max], "models": [{
-// "model", "rmse", "captures": [{"time", "sun_zenith", "sun_azimuth", "rmse"}],
-// "precompute_seconds", "evaluate_seconds"}]}; RMSE in mW/(m2.sr.nm), angles in degrees, time
-// ISO 8601 with the site's offset. Keys keep the contract's order. A non-finite number is an error, never a JSON null.
-// On request each capture adds "samples" (SampleDetail::summary: [{"index", "view_zenith",
+// JSON of evaluation results for `clearsky evaluate --json` (docs/architecture.md "Command line"),
+// which the API reuses: {"dataset", "wavelength_range_nm": [min, max], "models": [{"model",
+// "rmse", "captures": [{"time", "sun_zenith", "sun_azimuth", "rmse"}], "precompute_seconds",
+// "evaluate_seconds"}]}; RMSE in mW/(m2.sr.nm), angles in degrees, time ISO 8601 with the site's
+// offset. Keys keep the contract's order. A non-finite number is an error, never a JSON null. On
+// request each capture adds "samples" (SampleDetail::summary: [{"index", "view_zenith",
 // "view_azimuth", "rmse", "bias"}]; SampleDetail::spectra adds each sample's "errors" at the
 // model's "wavelengths_nm"), the values as stored with the run (storage/repositories/
 // sample_errors_blob.h: RMSE and bias float64, angles and errors float32 written with the

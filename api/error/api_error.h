@@ -1,9 +1,9 @@
 // The one error type of the API and the CLI: an HTTP status, a stable machine-readable code, the
 // request parameter at fault (empty when none) and a human-readable message. The server turns
-// it into {"error": {"code", "message", "parameter"}}; the CLI prints the message under the
-// option's name (docs/request-parsing.md). Handlers throw it at the edge (parsing, capability
-// checks); models never see it: they throw clearsky::InvalidInput, which from_invalid_input
-// turns into an ApiError naming the request parameter.
+// it into {"error": {"code", "message", "parameter"}} (docs/http-api.md); the CLI prints the
+// message under the option's name (docs/request-parsing.md). Handlers throw it at the edge
+// (parsing, capability checks); models never see it: they throw clearsky::InvalidInput, which
+// from_invalid_input turns into an ApiError naming the request parameter.
 #pragma once
 
 #include <stdexcept>

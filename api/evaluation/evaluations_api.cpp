@@ -136,49 +136,34 @@ EvaluationRequest parse_evaluation_request(storage::Database& db, const std::str
   return request;
 }
 
-EvaluationFilter parse_evaluation_filter(
-    const std::vector<std::pair<std::string, std::string>>& query) {
+EvaluationFilter parse_evaluation_filter(Parameters query) {
   EvaluationFilter f;
-  for (const auto& [name, value] : query) {
-    if (name == "model")
-      f.model = value;
-    else if (name == "dataset")
-      f.dataset = value;
-    else if (name == "since")
-      f.since_unix_s = time_of(value, name);
-    else if (name == "until")
-      f.until_unix_s = time_of(value, name);
-    else if (name == "status") {
-      if (value != "running" && value != "succeeded" && value != "failed")
-        throw invalid_parameter(name, "one of running, succeeded, failed");
-      f.status = value;
-    } else if (name == "job")
-      f.job_id = parse_id(value, name);
-    else
-      throw unknown_parameter(name, "GET /v1/evaluations");
-  }
+  f.model = query.text("model");
+  f.dataset = query.text("dataset");
+  if (const auto since = query.text("since")) f.since_unix_s = time_of(*since, "since");
+  if (const auto until = query.text("until")) f.until_unix_s = time_of(*until, "until");
+  f.status = query.text("status");
+  if (f.status && *f.status != "running" && *f.status != "succeeded" && *f.status != "failed")
+    throw invalid_parameter("status", "one of running, succeeded, failed");
+  if (const auto job = query.text("job")) f.job_id = parse_id(*job, "job");
+  query.reject_unused();
   return f;
 }
 
-ShowEvaluationOptions parse_show_evaluation_options(
-    const std::vector<std::pair<std::string, std::string>>& query) {
+ShowEvaluationOptions parse_show_evaluation_options(Parameters query) {
   ShowEvaluationOptions options;
-  for (const auto& [name, value] : query) {
-    if (name == "samples") {
-      if (value == "spectra")
-        options.samples = SampleDetail::spectra;
-      else if (value == "true" || value == "1")
-        options.samples = SampleDetail::summary;
-      else if (value == "false" || value == "0" || value.empty())
-        options.samples = SampleDetail::none;
-      else
-        throw invalid_parameter(name, "\"" + value + "\" is not true, false or spectra");
-    } else if (name == "capture") {
-      options.capture = value;
-    } else {
-      throw unknown_parameter(name, "GET /v1/evaluations/{id}");
-    }
+  if (const auto samples = query.text("samples")) {
+    if (*samples == "spectra")
+      options.samples = SampleDetail::spectra;
+    else if (*samples == "true" || *samples == "1")
+      options.samples = SampleDetail::summary;
+    else if (*samples == "false" || *samples == "0" || samples->empty())
+      options.samples = SampleDetail::none;
+    else
+      throw invalid_parameter("samples", "\"" + *samples + "\" is not true, false or spectra");
   }
+  options.capture = query.text("capture");
+  query.reject_unused();
   return options;
 }
 

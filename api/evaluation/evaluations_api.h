@@ -1,6 +1,6 @@
 // /v1/evaluations, transport-free: the request body of POST (what to run), the list of stored
 // runs with filters, and one run with its per-capture results and its comparison with the
-// history (issue 9). JSON:
+// history (docs/http-api.md). JSON:
 //   POST body: {"models": ["preetham", ...] or "all", "dataset": NAME,
 //               "parameters": {"turbidity": 3, "alpha": 1.3, ...}} (parameters optional; names
 //               as the query parameters of the sky endpoints; applied to every model)
@@ -32,6 +32,7 @@
 
 #include "api/encode/evaluation_json.h"
 #include "api/evaluation/evaluation_runner.h"
+#include "api/request/parameters.h"
 #include "storage/sqlite/database.h"
 
 namespace clearsky::api {
@@ -59,16 +60,14 @@ struct EvaluationFilter {
   std::optional<std::int64_t> job_id;
 };
 // model, dataset, since, until, status from query parameters (400 for others).
-EvaluationFilter parse_evaluation_filter(
-    const std::vector<std::pair<std::string, std::string>>& query);
+EvaluationFilter parse_evaluation_filter(Parameters query);
 
 struct ShowEvaluationOptions {
   SampleDetail samples = SampleDetail::none;
   std::optional<std::string> capture;  // one capture by label
 };
 // samples (true, false, spectra) and capture from query parameters (400 for others).
-ShowEvaluationOptions parse_show_evaluation_options(
-    const std::vector<std::pair<std::string, std::string>>& query);
+ShowEvaluationOptions parse_show_evaluation_options(Parameters query);
 
 nlohmann::ordered_json list_evaluations(storage::Database& db, const EvaluationFilter& filter);
 nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_id,

@@ -1,4 +1,4 @@
-// The JSON/CSV endpoints of HTTP API v1 (server/README.md), one file each. Each parses and
+// The JSON/CSV endpoints of HTTP API v1 (docs/http-api.md), one file each. Each parses and
 // validates its request completely before computing (errors are ApiError), calls the model
 // through the ModelProvider, and encodes the answer. Thread-safe: they share only the provider.
 #pragma once

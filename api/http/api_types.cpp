@@ -1,9 +1,45 @@
-// Building parameters from requests, and the JSON and error responses.
+// Building parameters from requests, header lookup, and the JSON and error responses.
 #include "api/http/api_types.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace clearsky::api {
+
+namespace {
+
+bool same_name(std::string_view a, std::string_view b) {
+  return std::ranges::equal(a, b, [](char x, char y) {
+    const auto lower = [](char c) {
+      return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
+    };
+    return lower(x) == lower(y);
+  });
+}
+
+std::optional<std::string_view> find_header(const NameValues& headers, std::string_view name) {
+  for (const auto& [key, value] : headers)
+    if (same_name(key, name)) return std::string_view(value);
+  return std::nullopt;
+}
+
+}  // namespace
+
+const std::string& ApiRequest::path_parameter(std::string_view name) const {
+  for (const auto& [key, value] : path_parameters)
+    if (key == name) return value;
+  throw std::logic_error("route " + route + " has no path parameter " + std::string(name));
+}
+
+std::optional<std::string_view> ApiRequest::header(std::string_view name) const {
+  return find_header(headers, name);
+}
+
+std::string ApiRequest::endpoint() const { return method + " " + (route.empty() ? path : route); }
+
+std::optional<std::string_view> ApiResponse::header(std::string_view name) const {
+  return find_header(headers, name);
+}
 
 nlohmann::json request_body(const ApiRequest& request) {
   try {
@@ -16,15 +52,28 @@ nlohmann::json request_body(const ApiRequest& request) {
 
 Parameters request_parameters(const ApiRequest& request,
                               std::initializer_list<std::string_view> structured) {
-  const std::string endpoint = request.method + " " + request.path;
-  Parameters p = request.method == "POST"
-                     ? Parameters::from_json_object(endpoint, request_body(request), structured)
-                     : Parameters(endpoint);
+  Parameters p =
+      request.method == "POST"
+          ? Parameters::from_json_object(request.endpoint(), request_body(request), structured)
+          : Parameters(request.endpoint());
+  for (const auto& [name, value] : request.query) p.add(name, value);
+  return p;
+}
+
+Parameters query_parameters(const ApiRequest& request) {
+  Parameters p(request.endpoint());
   for (const auto& [name, value] : request.query) p.add(name, value);
   return p;
 }
 
 ApiResponse json_response(const nlohmann::json& body, int status) {
+  ApiResponse r;
+  r.status = status;
+  r.body = body.dump();
+  return r;
+}
+
+ApiResponse ordered_json_response(const nlohmann::ordered_json& body, int status) {
   ApiResponse r;
   r.status = status;
   r.body = body.dump();

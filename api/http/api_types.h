@@ -1,47 +1,109 @@
 // The transport-free request and response of the API handlers: what the server's HTTP layer
-// hands in (method, path, query pairs, body) and what it sends back. Value types.
+// hands in (method, path, path and query parameters, headers, body) and what it sends back,
+// and the context every handler gets. Value types; the route table (api/routes/route_table.h)
+// says which handler answers which request (docs/http-api.md).
 #pragma once
 
+#include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "api/error/api_error.h"
+#include "api/http/body_reader.h"
 #include "api/request/sky_request.h"
 #include "api/service/model_provider.h"
 
 namespace clearsky::api {
 
+class EvaluationPool;
+class ImportPool;
+
+using NameValues = std::vector<std::pair<std::string, std::string>>;
+
 struct ApiRequest {
   std::string method = "GET";
   std::string path;
-  std::vector<std::pair<std::string, std::string>> query;
+  NameValues query;
   std::string body;
+  // The matched route's pattern ("/v1/jobs/{id}"), naming the endpoint in error messages.
+  std::string route = {};
+  // The {name} segments of the route's pattern, decoded.
+  NameValues path_parameters = {};
+  // Header names as received (compared without case by header()).
+  NameValues headers = {};
+  // Routes that stream their body (BodyPolicy::upload) read it here; body is then empty.
+  BodyReader* body_reader = nullptr;
+
+  // The path parameter of that name (std::logic_error when the route has none: a table bug).
+  const std::string& path_parameter(std::string_view name) const;
+  // The first header of that name, compared without case.
+  std::optional<std::string_view> header(std::string_view name) const;
+  // "GET /v1/jobs/{id}": the endpoint as error messages name it.
+  std::string endpoint() const;
 };
+
+// Writes bytes to the client as they are produced; false when the client is gone.
+using ByteSink = std::function<bool(const char* data, std::size_t size)>;
 
 struct ApiResponse {
   int status = 200;
   std::string content_type = "application/json";
   std::string body;
-  std::vector<std::pair<std::string, std::string>> headers;
+  NameValues headers;
   std::string model_id;  // the model that answered, for metrics; empty when none
+  // A streamed body (sent chunked, as it is computed): when set, body is unused. Returns false
+  // when the sink refused data (the client left), which stops the computation.
+  std::function<bool(const ByteSink& sink)> stream = {};
+
+  // The first header of that name, compared without case.
+  std::optional<std::string_view> header(std::string_view name) const;
 };
 
-// What handlers need besides the request.
+// What the data endpoints (datasets, imports, evaluations, jobs) work with. The pools are
+// thread-safe; each request opens its own database connection.
+struct DataServices {
+  std::filesystem::path db_path;
+  std::filesystem::path upload_dir;
+  std::size_t upload_max_bytes = std::size_t{1} << 30;
+  EvaluationPool* evaluations = nullptr;
+  ImportPool* imports = nullptr;
+  std::span<const ModelFactory> models;
+  std::string software_version;
+};
+
+// What handlers need besides the request. Shared by every request: everything in it is
+// immutable or thread-safe.
 struct ApiContext {
   const ModelProvider& models;
   Limits limits;
+  // Null on a server without a database: the data endpoints answer 503.
+  const DataServices* data = nullptr;
+  // The Prometheus text of GET /metrics (empty function: 503).
+  std::function<std::string()> metrics_text = {};
+  // Retry-After of GET /readyz while tables are being built, s.
+  int retry_after_s = 5;
+  // Where handlers report what the client cannot see (a streamed image's unanswered pixels).
+  std::function<void(const std::string& message)> warn = {};
 };
 
 // The request's parameters: the query for GET; for POST, the JSON body's scalar members (the
 // members named in structured are left to the handler) plus the query.
 Parameters request_parameters(const ApiRequest& request,
                               std::initializer_list<std::string_view> structured = {});
+// The query parameters only (routes whose body is not a parameter object, or have none).
+Parameters query_parameters(const ApiRequest& request);
 // The parsed JSON body of a POST (400 when it does not parse).
 nlohmann::json request_body(const ApiRequest& request);
 
 ApiResponse json_response(const nlohmann::json& body, int status = 200);
+// The same for the data endpoints' ordered documents (members in the order written).
+ApiResponse ordered_json_response(const nlohmann::ordered_json& body, int status = 200);
 // {"error": {"code", "message", "parameter"}} with the error's status and Retry-After.
 ApiResponse error_response(const ApiError& error);
 // A JSON number, or std::logic_error for NaN or infinity (NaN never reaches JSON: nlohmann

@@ -1,4 +1,4 @@
-// The bounded background workers that run dataset imports (POST /v1/datasets, issue 9), on
+// The bounded background workers that run dataset imports (POST /v1/datasets), on
 // their own threads, never the HTTP query threads (the same design as the EvaluationPool:
 // a fixed number of workers, a bounded queue refusing with 503, one database connection per
 // worker). Each import is a row of the imports table (storage/repositories/import_repository.h)

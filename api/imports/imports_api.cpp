@@ -58,20 +58,13 @@ nlohmann::ordered_json import_to_json(const storage::ImportRecord& record,
 }
 
 nlohmann::ordered_json list_imports(storage::Database& db, const ImportPool* pool,
-                                    const std::vector<std::pair<std::string, std::string>>& query) {
-  std::optional<std::string> status;
-  std::optional<std::string> dataset;
-  for (const auto& [name, value] : query) {
-    if (name == "status") {
-      if (value != "queued" && value != "running" && value != "succeeded" && value != "failed")
-        throw invalid_parameter(name, "one of queued, running, succeeded, failed");
-      status = value;
-    } else if (name == "dataset") {
-      dataset = value;
-    } else {
-      throw unknown_parameter(name, "GET /v1/imports");
-    }
-  }
+                                    Parameters query) {
+  const std::optional<std::string> status = query.text("status");
+  if (status && *status != "queued" && *status != "running" && *status != "succeeded" &&
+      *status != "failed")
+    throw invalid_parameter("status", "one of queued, running, succeeded, failed");
+  const std::optional<std::string> dataset = query.text("dataset");
+  query.reject_unused();
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
   for (const storage::ImportRecord& r : storage::ImportRepository(db).list(100, status, dataset))
     out.push_back(import_to_json(r, pool ? pool->live_progress(r.id) : std::nullopt));

@@ -1,4 +1,4 @@
-// /v1/imports, transport-free: the state of dataset imports (issue 9), stored rows
+// /v1/imports, transport-free: the state of dataset imports, stored rows
 // (storage/repositories/import_repository.h) with the live progress of those running in the
 // server's ImportPool. JSON of one import:
 //   {"id", "dataset", "format", "source": "upload"|"path", "path" (or null),
@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "api/imports/import_pool.h"
+#include "api/request/parameters.h"
 #include "storage/sqlite/database.h"
 
 namespace clearsky::api {
@@ -34,7 +35,7 @@ nlohmann::ordered_json import_to_json(const storage::ImportRecord& record,
 // The 100 newest, newest first; filters status and dataset from the query (400 for other
 // parameters). pool may be null (no live progress).
 nlohmann::ordered_json list_imports(storage::Database& db, const ImportPool* pool,
-                                    const std::vector<std::pair<std::string, std::string>>& query);
+                                    Parameters query);
 // 404 unknown_import when absent.
 nlohmann::ordered_json show_import(storage::Database& db, const ImportPool* pool, std::int64_t id);
 

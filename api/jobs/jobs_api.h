@@ -1,6 +1,6 @@
-// /v1/jobs, transport-free: scheduled evaluations (issue 9). A job evaluates models against a
-// stored dataset on a 5-field UTC cron schedule (cron_schedule.h); the scheduler
-// (server/scheduler) runs it. JSON:
+// /v1/jobs, transport-free: scheduled evaluations (docs/architecture.md "The scheduler"). A job
+// evaluates models against a stored dataset on a 5-field UTC cron schedule (cron_schedule.h);
+// the scheduler (server/scheduler) runs it. JSON:
 //   create body: {"name", "schedule", "dataset", "models": "all" or [ids], "parameters": {...}}
 //                (parameters as POST /v1/evaluations; optional)
 //   a job:  {"id", "name", "schedule", "dataset", "models": [ids] or "all", "parameters",

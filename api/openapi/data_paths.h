@@ -1,5 +1,5 @@
 // The OpenAPI 3.0 description of the data endpoints (datasets, imports, evaluations, jobs;
-// issue 9), added to the document of openapi_document.h. Errors refer to its Error schema.
+// docs/http-api.md), added to the document of openapi_document.h. Errors refer to its Error schema.
 #pragma once
 
 #include <nlohmann/json.hpp>

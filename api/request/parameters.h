@@ -1,10 +1,10 @@
 // The named parameters of one request (URL query or the scalar fields of a JSON body), read
 // by handlers with typed, range-checked accessors that remember what was read, so that
-// reject_unused() can name any parameter the request carried but the endpoint did not use.
-// The one parameter type of every endpoint and of the CLI, which builds one from its options
-// (docs/request-parsing.md). Numbers are parsed strictly (the whole text, finite; NaN and
-// infinity fail). Errors are ApiError naming the parameter. Not thread-safe: one instance per
-// request.
+// reject_unused() can name any parameter the request carried but the endpoint did not use
+// (docs/conventions.md "Unknown parameters are refused"). The one parameter type of every
+// endpoint and of the CLI, which builds one from its options (docs/request-parsing.md).
+// Numbers are parsed strictly (the whole text, finite; NaN and infinity fail). Errors are
+// ApiError naming the parameter. Not thread-safe: one instance per request.
 #pragma once
 
 #include <initializer_list>

@@ -91,7 +91,8 @@ double start_of_year_unix_s(int year) {
   return duration<double>(day.time_since_epoch()).count();
 }
 
-void read_time(Parameters& p, const PlaceTimeParameter& r, double now_unix_s, PlaceTime& out) {
+void read_time(Parameters& p, const PlaceTimeParameter& r, std::optional<double> now_unix_s,
+               PlaceTime& out) {
   const std::string name(r.name);
   const auto text = p.text(name);
   if (text) {
@@ -105,7 +106,8 @@ void read_time(Parameters& p, const PlaceTimeParameter& r, double now_unix_s, Pl
       throw invalid_parameter(e.parameter(), e.message());
     }
   } else {
-    out.position.*r.field = now_unix_s;
+    if (!now_unix_s) throw missing_parameter(name, "this endpoint has no default instant");
+    out.position.*r.field = *now_unix_s;
     out.utc_offset_min = 0;
     out.utc_designator = true;
   }
@@ -130,7 +132,7 @@ double current_unix_time_s() {
   return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
-PlaceTime parse_place_and_time(Parameters& p, double now_unix_s) {
+PlaceTime parse_place_and_time(Parameters& p, std::optional<double> now_unix_s) {
   PlaceTime out;
   SolarPositionInput& in = out.position;
   for (const PlaceTimeParameter& r : kParameters) {

@@ -18,11 +18,14 @@
 // | refraction  | bool     | true     | true/false      | apply atmospheric refraction to the zenith              |
 // clang-format on
 //
-// Years are those of the instant in UTC; SPA itself covers -2000 to 6000, the ISO 8601 parser
+// time defaults to now on GET /v1/sun and `clearsky sun`; the sky endpoints require it (a GET
+// answer there is cacheable, so it must not depend on the clock). Years are those of the
+// instant in UTC; SPA itself covers -2000 to 6000, the ISO 8601 parser
 // years 0000-9999. Every refusal is an ApiError (400) naming the parameter; the ranges lie within
 // SPA's own checks, which solar_position_checked maps back to these names all the same.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -74,9 +77,10 @@ struct PlaceTime {
 // The current instant, seconds since 1970-01-01T00:00:00Z (the default of time).
 double current_unix_time_s();
 
-// Reads every parameter of the table (marking them used); now_unix_s is the instant taken when
-// time is absent.
-PlaceTime parse_place_and_time(Parameters& p, double now_unix_s = current_unix_time_s());
+// Reads every parameter of the table (marking them used). now_unix_s is the instant taken when
+// time is absent; without it (the sky endpoints, whose GET answers are cacheable) time is
+// required.
+PlaceTime parse_place_and_time(Parameters& p, std::optional<double> now_unix_s);
 // altitude alone, by its row of the table (the viewpoint of a sky given by sun_zenith).
 double parse_altitude_m(Parameters& p);
 // solar_position() with its InvalidInput turned into a 400 naming the request parameter.

@@ -36,7 +36,8 @@ SunSpec parse_sun(Parameters& p) {
       throw missing_parameter("sun_zenith",
                               "give sun_zenith and sun_azimuth, or lat, lon and time");
     }
-    const SolarPosition position = solar_position_checked(parse_place_and_time(p).position);
+    const SolarPosition position =
+        solar_position_checked(parse_place_and_time(p, std::nullopt).position);
     spec.zenith_deg = position.zenith_deg;
     spec.azimuth_deg = position.azimuth_deg;
     spec.from_place_and_time = true;

@@ -1,4 +1,4 @@
-// Where each pixel of a skydome image looks (DESIGN.md GET /v1/skydome):
+// Where each pixel of a skydome image looks (GET /v1/skydome, docs/http-api.md):
 //  - fisheye: size x size, equidistant (zenith angle proportional to the distance from the
 //    centre; the horizon on the inscribed circle), seen from below looking up: North at the
 //    top, East on the LEFT, as on a sky chart. Pixels outside the circle see nothing.

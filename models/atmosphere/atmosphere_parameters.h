@@ -1,5 +1,5 @@
 // The atmosphere every physically based model shares (paper section "Model parameters";
-// ../shared/data/README.md), as one parameter set with the study's values as defaults.
+// docs/architecture.md "The atmosphere"), as one parameter set with the study's values as defaults.
 //
 // | name                         | unit | default | valid range     | meaning                                  |
 // |------------------------------|------|---------|-----------------|------------------------------------------|

@@ -1,5 +1,5 @@
 // The spectral quantities of an AtmosphereParameters on a wavelength grid, as the 2016 study
-// computed them (IMPLEMENTATION-NOTES "Atmosphere"):
+// computed them (docs/architecture.md "The atmosphere"):
 //  - Rayleigh sea-level scattering = extinction: Penndorf (0 C) x 273.16 / (273.16 + T),
 //    point-sampled and held beyond 360..830 nm (e.g. 6.678e-5 /m at 360 nm for 15 C);
 //  - aerosol (Mie) sea-level extinction beta (lambda / 1000 nm)^-alpha / H_M, scattering the

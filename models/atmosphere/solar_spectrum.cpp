@@ -33,7 +33,8 @@ double mean_of_rows(double lo_nm, double hi_nm) {
 
 double solar_spectrum_at_point_nm(double wavelength_nm) {
   // Inside the paper's grid, the study's rule for tabulated inputs: linear interpolation of the
-  // 40-bin table, each bin value standing at its bin's start (IMPLEMENTATION-NOTES "Evaluation").
+  // 40-bin table, each bin value standing at its bin's start (docs/architecture.md "Conventions
+  // and units").
   const auto& bins = ReferenceSpectra::get().solar_irradiance_40_bins;
   if (wavelength_nm >= bins.min_nm() && wavelength_nm <= bins.max_nm()) {
     return bins.at(wavelength_nm, OutOfRange::error);

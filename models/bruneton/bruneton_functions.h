@@ -1,6 +1,6 @@
 // The pure functions of Bruneton and Neyret 2008, "Precomputed Atmospheric Scattering"
-// (EGSR 2008), as the 2016 study ran them (../shared/paper/IMPLEMENTATION-NOTES.md,
-// "Bruneton = Elek"): the ray-length limit, the parameterisations of the transmittance,
+// (EGSR 2008), as the 2016 study ran them (models/bruneton/README.md, "The
+// parameterisation"): the ray-length limit, the parameterisations of the transmittance,
 // irradiance and 4D scattering tables, and the texel <-> (r, mu, mu_s, nu) mappings.
 //
 // Notation (paper section 4): r distance to the planet centre (m), mu cosine of the view

@@ -1,5 +1,5 @@
 // The physical tables of models/data compiled into the library, so that the models need no
-// file system (STYLE.md "Architecture": loaders take streams). Paths are relative to
+// file system (docs/architecture.md "Layers": loaders take streams). Paths are relative to
 // models/data, e.g. "spectra/cie1931_2deg_xyz.csv".
 #pragma once
 

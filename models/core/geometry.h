@@ -1,6 +1,6 @@
-// Directions and positions of the sky queries. Angles in radians inside models/ (degrees only
-// at the API edge); azimuth clockwise from North (DESIGN.md "Domain conventions"), zenith from
-// the local vertical. Local frame: x East, y North, z up.
+// Directions and positions of the sky queries. Angles in radians inside models/ (degrees only at
+// the API edge); azimuth clockwise from North (docs/architecture.md "Conventions and units"),
+// zenith from the local vertical. Local frame: x East, y North, z up.
 #pragma once
 
 #include <cmath>

@@ -1,5 +1,5 @@
-// What a model is and what it can answer, published as is by the API (STYLE.md
-// "Architecture"): id, version, citation, spectral range, parameter table, capabilities.
+// What a model is and what it can answer, published as is by the API (docs/model-contract.md):
+// id, version, citation, spectral range, parameter table, capabilities.
 // A request outside the capabilities is refused before anything is computed.
 #pragma once
 

@@ -1,5 +1,5 @@
-// Numerical guards shared by every model (STYLE.md habit 3): rounding error is absorbed, a
-// real bug (an argument far outside the domain) trips an assertion in debug builds.
+// Numerical guards shared by every model (docs/conventions.md "Numerical guards"): rounding error
+// is absorbed, a real bug (an argument far outside the domain) trips an assertion in debug builds.
 #pragma once
 
 #include <algorithm>

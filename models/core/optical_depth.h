@@ -1,6 +1,6 @@
 // Optical depth and transmittance along rays through the paper's atmosphere: two exponential
 // density profiles exp(-h/H) (Rayleigh H_R, Mie H_M) above a ground sphere, inside a top
-// sphere (IMPLEMENTATION-NOTES "Atmosphere"). Extinction is Rayleigh scattering plus Mie
+// sphere (docs/architecture.md "The atmosphere"). Extinction is Rayleigh scattering plus Mie
 // extinction (no absorbing gas), so the transmittance of a path is
 //   T = exp(-(beta_R L_R + beta_M,ext L_M)),
 // with L the "optical lengths" (integrals of relative density along the path, metres).

@@ -1,6 +1,6 @@
-// The slow double-precision reference of single scattering along a view ray, which the fast
-// paths of the numerical models (Nishita93's tables, O'Neal's Chapman approximation,
-// Bruneton's 4D tables) are tested against (STYLE.md habit 7).
+// The slow double-precision reference of single scattering along a view ray, which the fast paths
+// of the numerical models (Nishita93's tables, O'Neal's Chapman approximation, Bruneton's 4D
+// tables) are tested against (docs/conventions.md "Fast paths against slow references").
 //
 //   L = E_sun  integral over the view segment of
 //         T(x, x_d) T_sun(x_d) [beta_R rho_R(h) P_R(nu) + beta_M,sca rho_M(h) P_CS(nu, g)] dd

@@ -1,4 +1,4 @@
-// The interface every model implements (STYLE.md "Architecture").
+// The interface every model implements (docs/model-contract.md).
 //
 // Life cycle: a ModelFactory turns a ModelConfig (atmosphere, wavelength grid, model options)
 // into an immutable SkyModel; that is the model's precomputation (tables), explicit and

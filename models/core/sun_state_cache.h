@@ -1,7 +1,8 @@
-// A bounded, shared cache of immutable per-sun states (DESIGN.md "Architecture": per-sun
-// preparation returns an immutable state; STYLE.md: never a mutable cache inside a const
-// method without synchronisation). Models whose precomputation depends on the sun (Haber,
-// Nishita96) key their states by (model configuration, sun zenith bucket) and ask this cache:
+// A bounded, shared cache of immutable per-sun states (docs/architecture.md "Precomputation and
+// caches": per-sun preparation returns an immutable state; docs/conventions.md "Immutable shared
+// state": never a mutable cache inside a const method without synchronisation). Models whose
+// precomputation depends on the sun (Haber, Nishita96) key their states by (model configuration,
+// sun zenith bucket) and ask this cache:
 //  - single flight: concurrent requests for a key that is being built wait for that one build
 //    instead of starting their own;
 //  - bounded: at most `capacity` finished states are kept, the least recently used is dropped

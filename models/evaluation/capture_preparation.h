@@ -1,5 +1,5 @@
 // The steps that turn an imported capture into what the paper's evaluation compares with
-// (IMPLEMENTATION-NOTES "Evaluation"), each recorded in the capture's processing_steps:
+// (models/evaluation/README.md), each recorded in the capture's processing_steps:
 //  1. repair of the known-defective samples (sample_repair.h), before anything else;
 //  2. the sun position from the capture's time and site with NREL's SPA
 //     (models/solar/solar_position.h). The study used the PSA algorithm with parallax and no

@@ -1,8 +1,8 @@
-// Interpolation of a quantity measured on the 81 directions of the Kider et al. 2014 scan over
-// the whole hemisphere, as the 2016 study did for its sun-azimuth estimate (IMPLEMENTATION-NOTES
-// "Evaluation"): the 81 directions are the 9x9 nodes of the unit square mapped to the disk by
-// the Shirley-Chiu concentric map, disk radius r -> zenith acos(1 - r^2). They lie on rings
-// k = 0..4 at r = k / 4.5 (zenith 0, 18.08, 36.63, 56.25, 77.88 degrees), ring k holding 8k
+// Interpolation of a quantity measured on the 81 directions of the Kider et al. 2014 scan over the
+// whole hemisphere, as the 2016 study did for its sun-azimuth estimate
+// (models/evaluation/README.md): the 81 directions are the 9x9 nodes of the unit square mapped to
+// the disk by the Shirley-Chiu concentric map, disk radius r -> zenith acos(1 - r^2). They lie on
+// rings k = 0..4 at r = k / 4.5 (zenith 0, 18.08, 36.63, 56.25, 77.88 degrees), ring k holding 8k
 // samples at clockwise azimuths m * 360 / (8k) degrees. A value in direction (zenith, azimuth)
 // is a Catmull-Rom cubic, in u = 4.5 sqrt(1 - cos(zenith)), of the values of the four nearest
 // rings at that azimuth, each itself a periodic Catmull-Rom cubic of its ring's samples. Ring

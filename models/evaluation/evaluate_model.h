@@ -1,10 +1,10 @@
 // The paper's accuracy measure of a sky model against measured skies (Bruneton 2016, section
-// "Results"; IMPLEMENTATION-NOTES "Evaluation"). Per capture: the root mean square, over the
-// 81 measured directions and the model-grid wavelengths inside 360..720 nm (31 wavelengths,
-// 360 to 712.5 nm, on the paper's 40-bin grid), of model minus measurement, the measured 1-nm
-// spectra read by linear interpolation at those wavelengths; the model is queried at viewer
-// altitude 0 with the capture's computed sun zenith and estimated sun azimuth. Total: the root
-// of the mean of the per-capture squared RMSE. RMSE in mW/(m2.sr.nm).
+// "Quantitative evaluations"; models/evaluation/README.md). Per capture: the root mean square, over
+// the 81 measured directions and the model-grid wavelengths inside 360..720 nm (31 wavelengths, 360
+// to 712.5 nm, on the paper's 40-bin grid), of model minus measurement, the measured 1-nm spectra
+// read by linear interpolation at those wavelengths; the model is queried at viewer altitude 0 with
+// the capture's computed sun zenith and estimated sun azimuth. Total: the root of the mean of the
+// per-capture squared RMSE. RMSE in mW/(m2.sr.nm).
 // Per sample (direction) the result keeps the RMSE over the compared wavelengths, the mean
 // signed error (bias) and the signed error at each compared wavelength, all model minus
 // measurement: every sample compares the same wavelengths, so the capture's RMSE is the root of

@@ -24,13 +24,13 @@ struct SiteLocation {
   double elevation_m = 0;
 };
 
-// The Kider et al. 2014 site: roof of Rhodes Hall, Cornell University (../shared/data/README.md).
+// The Kider et al. 2014 site: roof of Rhodes Hall, Cornell University (Kider et al. 2014).
 inline SiteLocation kider_cornell_site() { return {42.443449, -76.481962, 250.0}; }
 
 // Quality flags of a sample (bit set).
 enum SampleQualityFlag : std::uint32_t {
   // Known to be wrong as measured: Kider's sample 0 (North, lowest ring) is systematically off
-  // (Bruneton 2016, IMPLEMENTATION-NOTES "Evaluation").
+  // (Bruneton 2016; models/evaluation/README.md).
   kSampleKnownDefective = 1u << 0,
   // The spectrum was replaced by the mean of its two ring neighbours (repair_defective_samples).
   kSampleRepaired = 1u << 1,

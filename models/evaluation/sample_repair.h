@@ -1,5 +1,5 @@
 // Repair of samples known to be defective, as the 2016 study did for Kider's North sample
-// (IMPLEMENTATION-NOTES "Evaluation": sample 0 is replaced, before anything else, by the mean
+// (models/evaluation/README.md: sample 0 is replaced, before anything else, by the mean
 // of its two ring neighbours, file azimuths 11.25 and 348.75; it stays one of the 81). It is an
 // explicit, recorded step of an evaluation, never applied by a loader.
 #pragma once

@@ -1,6 +1,6 @@
 // The sun azimuth of a measured sky, estimated from the sky's mirror symmetry about the sun's
 // vertical plane, as the 2016 study did because the azimuth of Kider's instrument drifts while
-// the zenith from time and place matches (IMPLEMENTATION-NOTES "Evaluation"). For each
+// the zenith from time and place matches (models/evaluation/README.md). For each
 // candidate azimuth a (computed - 20, computed - 19.8, ... up to the first >= computed + 20
 // degrees), the error is the sum over 16 view zeniths acos((i + 0.5) / 16) and 64 view
 // azimuths j * 360 / 64 of |integral over wavelength of (L(zenith, phi) - L(zenith, 2a - phi))|,

@@ -1,5 +1,5 @@
 // Pure physics of the Haber model as the 2016 study implemented it (paper section "Haber
-// Model", "Our implementation"; IMPLEMENTATION-NOTES "Haber"): the atmosphere is cut into
+// Model", "Our implementation"; models/haber/README.md): the atmosphere is cut into
 // layers of equal Rayleigh mass up to 35 km, each of constant density (the density at the
 // layer's middle height), and transmittances are computed exactly through these layers.
 // Transmittance uses Rayleigh scattering plus Mie extinction (no absorber).

@@ -1,5 +1,5 @@
 // The per-sun precomputation of the Haber model (Haber et al. 2005) as the 2016 study
-// implemented it (paper section "Haber Model"; IMPLEMENTATION-NOTES "Haber"):
+// implemented it (paper section "Haber Model"; models/haber/README.md):
 //  - a spherical grid centred on the viewer: n_phi azimuth sectors (only n_phi / 2 stored, the
 //    sky being symmetric about the sun's vertical plane), rings of the same angular width from
 //    the zenith to just below the horizon, shells from 10 m growing by

@@ -1,5 +1,5 @@
 // The Hosek-Wilkie model (Hosek and Wilkie 2012; paper section "Hosek Model"): the fitted
-// spectral sky distribution with the study's choices (IMPLEMENTATION-NOTES "Hosek").
+// spectral sky distribution with the study's choices (models/hosek/README.md).
 //
 // | parameter    | unit | default | range   | meaning                                            |
 // |--------------|------|---------|---------|----------------------------------------------------|

@@ -1,7 +1,7 @@
 // The Hosek-Wilkie fitted coefficients (Hosek and Wilkie 2012, "An Analytic Model for Full
 // Spectral Sky-Dome Radiance"; 2013, "Adding a Solar Radiance Function to the Hosek Skylight
 // Model"), parsed once from the embedded tables of models/data/hosek (BSD-3, see the LICENSE
-// beside them; layout in ../shared/data/README.md "hosek/").
+// beside them; their layout below).
 //
 // Every sky dataset holds, for each channel (an 11-band spectrum 320..720 nm every 40 nm, or
 // the 3 channels of the RGB and XYZ versions), ground albedo 0 and 1, turbidity 1..10 and the

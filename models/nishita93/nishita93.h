@@ -1,5 +1,5 @@
 // The Nishita93 model (Nishita, Sirai, Tadamura, Nakamae 1993; paper section "Nishita93
-// Model") as the 2016 study implemented it (IMPLEMENTATION-NOTES "Nishita93"): single
+// Model") as the 2016 study implemented it (models/nishita93/README.md): single
 // scattering integrated along each view ray over its crossings with 64 spheres of equal
 // Rayleigh optical depth, with the transmittance to the sun read from 2D tables built on those
 // spheres and 64 sun-aligned cylinders (nishita93_tables.h, nishita93_functions.h).

@@ -1,6 +1,6 @@
-// Nishita93's per-ray single scattering (Nishita et al. 1993, section 4; IMPLEMENTATION-NOTES
-// "Nishita93"): the view ray is sampled where it crosses the spheres of the tables (plus the
-// observer, the ray's tangent point when it passes one, and the end of the segment), and
+// Nishita93's per-ray single scattering (Nishita et al. 1993, section 4;
+// models/nishita93/README.md): the view ray is sampled where it crosses the spheres of the tables
+// (plus the observer, the ray's tangent point when it passes one, and the end of the segment), and
 //   L = E_sun [beta_R P_R(nu) I_R + beta_M,sca P_CS(nu) I_M],
 //   I_p = trapezoid over the samples of rho_p(x) exp(-(beta_R (L_R,view + L_R,sun) +
 //                                                    beta_M,ext (L_M,view + L_M,sun))),

@@ -1,5 +1,5 @@
 // Nishita93's precomputation (Nishita et al. 1993, section 4; paper section "Nishita93 Model",
-// IMPLEMENTATION-NOTES "Nishita93"): the atmosphere is cut by n_s spheres of equal steps of
+// models/nishita93/README.md): the atmosphere is cut by n_s spheres of equal steps of
 // Rayleigh density (layers of equal Rayleigh optical depth), ground to top,
 //   r_i = R - H_R ln(1 + a i / (n_s - 1)),   a = exp(-(R_top - R) / H_R) - 1,
 // and by n_c cylinders of radii R_top j / (n_c - 1) whose axis points at the sun. At the

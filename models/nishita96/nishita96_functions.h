@@ -1,5 +1,5 @@
 // Pure functions of the Nishita96 model's double scattering (Nishita et al. 1996; paper
-// section "Nishita96 Model"; IMPLEMENTATION-NOTES "Nishita96"): the 8 sampling directions in
+// section "Nishita96 Model"; models/nishita96/README.md): the 8 sampling directions in
 // the sun's vertical plane and the phase functions integrated over the solid angle of each.
 //
 // Frame: z up, x towards the sun's azimuth; the sun is (sin sz, 0, cos sz). A direction in the
@@ -25,7 +25,7 @@ inline Vec3 direction_of_angle(double a_rad) { return {std::sin(a_rad), 0.0, std
 // each w credited to its NEAREST sampling direction (largest dot product, the first on ties):
 // the study's midpoint rule on 32 x 64 (theta, phi) cells. The study's code compared each
 // candidate against sampling direction [theta index] instead of [candidate]; this is the fixed
-// search (IMPLEMENTATION-NOTES "Nishita96").
+// search (models/nishita96/README.md, "The binning bug").
 struct PhaseIntegrals {
   std::array<double, kSamplingDirections> rayleigh{};
   std::array<double, kSamplingDirections> mie{};

@@ -1,5 +1,5 @@
 // The per-sun precomputation of Nishita96 as the 2016 study implemented it (paper section
-// "Nishita96 Model", "Our Implementation"; IMPLEMENTATION-NOTES "Nishita96"): for each of the
+// "Nishita96 Model", "Our Implementation"; models/nishita96/README.md): for each of the
 // 8 sampling directions s, a table of the single-scattered radiance arriving from s (sunlight
 // scattered once along the ray towards s, plus the sunlit ground seen along it, Lambertian
 // with the ground albedo), per unit solar irradiance, W/(m2.sr.nm) per W/(m2.nm).

@@ -1,5 +1,5 @@
 // The O'Neal model (O'Neil 2005, GPU Gems 2 chapter 16; paper section "O'Neal Model") as the
-// 2016 study implemented it (IMPLEMENTATION-NOTES "O'Neal"): single scattering by a few
+// 2016 study implemented it (models/oneal/README.md): single scattering by a few
 // midpoint samples along each view ray, with Schuler's Chapman-function approximation for
 // every transmittance instead of a table (oneal_functions.h). No precomputation.
 //

@@ -1,5 +1,5 @@
 // O'Neal's per-ray single scattering (O'Neil, "Accurate Atmospheric Scattering", GPU Gems 2,
-// 2005, chapter 16; paper section "O'Neal Model"; IMPLEMENTATION-NOTES "O'Neal"), with the
+// 2005, chapter 16; paper section "O'Neal Model"; models/oneal/README.md), with the
 // 2016 study's changes: separate Rayleigh and Mie scale heights, the Rayleigh phase function,
 // and O'Neil's fitted scale function replaced by Schuler's approximation of the Chapman
 // function (Schuler 2012, GPU Pro 3):

@@ -1,5 +1,5 @@
 // The Preetham model (Preetham, Shirley and Smits 1999; paper section "Preetham Model") with
-// the 2016 study's choices (IMPLEMENTATION-NOTES "Preetham"): Perez distributions of the
+// the 2016 study's choices (models/preetham/README.md): Perez distributions of the
 // luminance Y and chromaticities x, y from the zenith values, and the absolute spectral
 // radiance S0 + M1 S1 + M2 S2 (CIE daylight basis, point-sampled on the grid) scaled so that
 // 683 lm/W x integral of y_bar L over the study's 40 bins (360 + 11.75 i nm, i = 0..39) equals

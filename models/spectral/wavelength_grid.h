@@ -1,7 +1,8 @@
 // The wavelengths a computation runs at. Two kinds, kept explicit because they integrate
 // differently:
 //  - bins: sample i stands for [start + i w, start + (i + 1) w) and is integrated as that bin
-//    (the 2016 study's grid: 40 bins of 11.75 nm from 360 nm, IMPLEMENTATION-NOTES "Evaluation");
+//    (the 2016 study's grid: 40 bins of 11.75 nm from 360 nm,
+//    docs/architecture.md "Conventions and units");
 //  - points: arbitrary increasing wavelengths, integrated with the trapezoid rule.
 // Wavelengths in nanometres. Immutable value type; thread-safe.
 #pragma once

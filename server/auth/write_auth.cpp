@@ -1,6 +1,7 @@
 // Bearer tokens for writes (write_auth.h).
 #include "server/auth/write_auth.h"
 
+#include <openssl/crypto.h>
 #include <spdlog/sinks/stdout_sinks.h>
 #include <spdlog/spdlog.h>
 
@@ -16,17 +17,12 @@ std::shared_ptr<spdlog::logger> audit_logger() {
 }
 
 bool constant_time_equal(std::string_view expected, std::string_view candidate) {
-  // Every byte of expected is visited whatever candidate holds; a length difference is
-  // folded into the same accumulator instead of returning early.
-  unsigned char difference = expected.size() == candidate.size() ? 0 : 1;
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    const unsigned char c =
-        candidate.empty() ? 0 : static_cast<unsigned char>(candidate[i % candidate.size()]);
-    difference |= static_cast<unsigned char>(static_cast<unsigned char>(expected[i]) ^ c);
-  }
-  // volatile: the compiler may not turn the loop into an early-exit comparison.
-  volatile unsigned char result = difference;
-  return result == 0;
+  // CRYPTO_memcmp takes the same time whatever the bytes; a candidate of another length is
+  // compared with expected itself, so that the time depends on expected's length only.
+  const bool same_length = expected.size() == candidate.size();
+  const std::string_view compared = same_length ? candidate : expected;
+  const bool equal = CRYPTO_memcmp(expected.data(), compared.data(), expected.size()) == 0;
+  return same_length && equal;
 }
 
 WriteAuthorizer::WriteAuthorizer(std::optional<std::string> token) {
@@ -39,6 +35,14 @@ WriteAuthorizer WriteAuthorizer::from_option_or_environment(const std::string& o
   if (environment_value != nullptr && *environment_value != '\0')
     return WriteAuthorizer(std::string(environment_value));
   return WriteAuthorizer(std::nullopt);
+}
+
+bool WriteAuthorizer::allows(std::string_view authorization_header) const {
+  constexpr std::string_view kScheme = "Bearer ";
+  if (!token_ || authorization_header.size() <= kScheme.size() ||
+      authorization_header.substr(0, kScheme.size()) != kScheme)
+    return false;
+  return constant_time_equal(*token_, authorization_header.substr(kScheme.size()));
 }
 
 void WriteAuthorizer::authorize(std::string_view method, std::string_view path,

@@ -1,8 +1,10 @@
-// Bearer-token authorisation of the write endpoints (POST, DELETE, imports; issue 9): the
+// Bearer-token authorisation of the write endpoints (POST, DELETE, imports): the
 // token is configured with --token or the CLEARSKY_TOKEN environment variable (the option
 // wins); with no token configured, writes are disabled (403) and reads stay open. A request's
-// "Authorization: Bearer TOKEN" is compared with the configured token in constant time (the
-// time depends on the configured token's length only, never on where the texts differ).
+// "Authorization: Bearer TOKEN" is compared with the configured token in constant time
+// (OpenSSL's CRYPTO_memcmp; the time depends on the configured token's length only, never on
+// where the texts differ). The server checks it from the route table's needs-token column
+// before it reads the request's body (server/http/http_server.cpp).
 // Every write attempt, allowed or not, is logged on the spdlog logger "audit" (never the
 // token itself). Thread-safety: immutable after construction.
 #pragma once
@@ -33,6 +35,8 @@ class WriteAuthorizer {
                                                     const char* environment_value);
 
   bool writes_enabled() const { return token_.has_value(); }
+  // Whether the header carries the token (false when none is configured). Logs nothing.
+  bool allows(std::string_view authorization_header) const;
   // Throws ApiError 403 (writes_disabled) when no token is configured, 401 (unauthorized)
   // when the header is absent, not "Bearer ...", or carries another token. Logs the attempt.
   void authorize(std::string_view method, std::string_view path,

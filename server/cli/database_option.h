@@ -1,4 +1,4 @@
-// The --db option every data command takes (DESIGN.md "CLI contract"), and opening the
+// The --db option every data command takes (docs/architecture.md "Command line"), and opening the
 // database it names (parent folder created, schema migrated).
 #pragma once
 

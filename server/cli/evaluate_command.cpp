@@ -37,7 +37,8 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
       "--parameters", options->parameters,
       "JSON object of atmosphere parameters and model options, as the \"parameters\" of "
       "POST /v1/evaluations, e.g. '{\"turbidity\": 3, \"scattering_orders\": 2}'");
-  command->add_flag("--json", options->json, "Print the results as JSON (DESIGN.md CLI contract)");
+  command->add_flag("--json", options->json,
+                    "Print the results as one JSON object (RMSE in mW/(m2.sr.nm))");
   command
       ->add_flag("--samples{true}", options->samples,
                  "Per-sample RMSE and bias of each capture; --samples=spectra also the "

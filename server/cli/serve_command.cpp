@@ -98,7 +98,7 @@ void run_server(const server::ServerConfig& config, const std::string& software_
       config.token, std::getenv("CLEARSKY_TOKEN"));
   if (!auth.writes_enabled())
     spdlog::warn("no token (--token or CLEARSKY_TOKEN): write endpoints are disabled");
-  server::DataServices data;
+  api::DataServices data;
   data.db_path = db_path;
   data.upload_dir =
       (db_path.has_parent_path() ? db_path.parent_path() : std::filesystem::path(".")) / "uploads";
@@ -116,15 +116,14 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   };
   api::ImportPool imports(open_database, import_options);
   data.imports = &imports;
-  data.pool = &evaluations;
-  data.auth = &auth;
+  data.evaluations = &evaluations;
   data.models = registered;
   data.software_version = software_version;
   server::Scheduler scheduler(open_database, evaluations, software_version);
   scheduler.start();
 
   server::HttpServer http(config, tables, metrics);
-  http.add_data_routes(data);
+  http.add_data_services(data, auth);
   const int port = http.bind();
   spdlog::info("clearsky serving on http://{}:{} ({} workers, {} models, cache {}, database {})",
                config.host, port, config.worker_threads(), registered.size(), config.cache_dir,
@@ -248,6 +247,11 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
       ->add_option("--evaluation-queue", config->evaluation_queue,
                    "Evaluations waiting for a worker (503 beyond)")
       ->capture_default_str();
+  command
+      ->add_option("--cors-origin", config->cors_origins,
+                   "An origin browsers may call the API from, e.g. https://example.org "
+                   "(repeatable; * for any; default: none)")
+      ->allow_extra_args(false);
   command->callback([config, software_version] { run_server(*config, software_version); });
 }
 

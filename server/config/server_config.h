@@ -1,5 +1,6 @@
-// The server's configuration: command-line options of `clearsky serve` (or the same keys in
-// its --config file), with the limits the HTTP layer enforces (STYLE.md habit 14).
+// The server's configuration: command-line options of `clearsky serve` (or the same keys in its
+// --config file), with the limits the HTTP layer enforces (docs/conventions.md "One HTTP
+// boundary").
 //
 // | option                | unit  | default     | meaning |
 // |-----------------------|-------|-------------|--------------------------------------------------------|
@@ -29,6 +30,7 @@
 // | import_queue          |       | 8           | imports waiting for a worker (503 beyond) |
 // | evaluation_workers    |       | 1           | background evaluation threads (never HTTP workers) |
 // | evaluation_queue      |       | 16          | evaluations waiting for a worker (503 beyond)          |
+// | cors_origins          |       | (none)      | origins browsers may call the API from (CORS; "*": any; docs/http-api.md) |
 // | prebuild_three        |       | true        | also build each model on the 3-wavelength grid of
 // /v1/rgb?method=three at start (after the defaults) |
 #pragma once
@@ -67,6 +69,7 @@ struct ServerConfig {
   std::size_t evaluation_queue = 16;
   unsigned import_workers = 1;
   std::size_t import_queue = 8;
+  std::vector<std::string> cors_origins;  // empty: no cross-origin access
 
   // The worker count threads resolves to.
   unsigned worker_threads() const;

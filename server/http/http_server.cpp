@@ -1,4 +1,5 @@
-// Route table, error handling, access log and metrics of the HTTP server.
+// The route table on cpp-httplib: pre-routing checks, the generic installation of the
+// routes, error handling, access log and metrics of the HTTP server.
 #include "server/http/http_server.h"
 
 #include <httplib.h>
@@ -7,11 +8,11 @@
 #include <sys/socket.h>
 
 #include <chrono>
+#include <set>
 
-#include "api/handlers/handlers.h"
-#include "api/openapi/openapi_document.h"
+#include "api/http/cache_policy.h"
 #include "api/parse/invalid_parameter.h"
-#include "api/skydome/skydome_render.h"
+#include "api/routes/route_match.h"
 #include "server/http/bounded_task_queue.h"
 #include "server/http/request_body.h"
 
@@ -20,34 +21,23 @@ namespace clearsky::server {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+using HandlerResponse = httplib::Server::HandlerResponse;
 
-// Per-request bookkeeping between the pre-routing handler and the logger, which cpp-httplib
-// runs on the same worker thread for one request.
+// Per-request bookkeeping from the pre-routing handler (or the Expect handler) to the route's
+// handler and the logger, which cpp-httplib runs on the same worker thread for one request.
 struct RequestInfo {
   Clock::time_point start;
   std::string model;
+  api::RouteMatch match;
+  // The metrics and access-log label: the route's pattern ("other" for unknown paths), so
+  // that the label set stays bounded.
+  std::string_view endpoint = "other";
 };
 thread_local RequestInfo current_request;
 
-const std::vector<std::pair<std::string, std::string>> kRoutes = {
-    {"GET", "/healthz"},      {"GET", "/readyz"},       {"GET", "/metrics"},
-    {"GET", "/openapi.json"}, {"GET", "/v1/models"},    {"GET", "/v1/sun"},
-    {"GET", "/v1/radiance"},  {"POST", "/v1/radiance"}, {"GET", "/v1/irradiance"},
-    {"GET", "/v1/rgb"},       {"POST", "/v1/rgb"},      {"GET", "/v1/skydome"},
-};
-
-std::string endpoint_label(const std::string& path) {
-  for (const auto& [method, route] : kRoutes) {
-    if (route == path) return route;
-  }
-  return "other";
-}
-
-void send(httplib::Response& res, const api::ApiResponse& response) {
-  res.status = response.status;
-  for (const auto& [name, value] : response.headers) res.set_header(name, value);
-  res.set_content(response.body, response.content_type);
-  current_request.model = response.model_id;
+void begin_request(const httplib::Request& req) {
+  current_request = {Clock::now(), {}, api::match_route(req.method, req.path), "other"};
+  if (current_request.match.path_known()) current_request.endpoint = current_request.match.pattern;
 }
 
 api::ApiRequest to_api_request(const httplib::Request& req) {
@@ -55,34 +45,59 @@ api::ApiRequest to_api_request(const httplib::Request& req) {
   r.method = req.method;
   r.path = req.path;
   for (const auto& [name, value] : req.params) r.query.emplace_back(name, value);
-  r.body = req.body;
+  for (const auto& [name, value] : req.headers) r.headers.emplace_back(name, value);
+  const api::RouteMatch& match = current_request.match;
+  if (match.route != nullptr) {
+    r.route = match.route->pattern;
+    r.path_parameters = match.path_parameters;
+  }
   return r;
 }
 
-// Whether path is one of the served POST routes; "{name}" segments match any segment.
-bool is_post_route(const std::string& path) {
-  const auto segments = [](std::string_view text) {
-    std::vector<std::string_view> parts;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-      const std::size_t end = std::min(text.find('/', start), text.size());
-      parts.push_back(text.substr(start, end - start));
-      start = end + 1;
-    }
-    return parts;
-  };
-  const auto requested = segments(path);
-  for (const auto& [method, route] : HttpServer::routes()) {
-    if (method != "POST") continue;
-    const auto pattern = segments(route);
-    if (pattern.size() != requested.size()) continue;
-    bool match = true;
-    for (std::size_t i = 0; i < pattern.size() && match; ++i)
-      match = pattern[i] == requested[i] ||
-              (pattern[i].size() > 2 && pattern[i].front() == '{' && !requested[i].empty());
-    if (match) return true;
+bool chunked(const httplib::Request& req) {
+  return req.get_header_value("Transfer-Encoding").find("chunked") != std::string::npos;
+}
+
+// A body follows the head, unread so far.
+bool body_pending(const httplib::Request& req) {
+  return chunked(req) || req.get_header_value<std::uint64_t>("Content-Length") > 0;
+}
+
+api::ApiError body_too_large(std::size_t limit_bytes, const char* what) {
+  return api::too_large("body", std::string(what) + " is above the limit of " +
+                                    std::to_string(limit_bytes) + " bytes");
+}
+
+// The refusal of a write route's request without the right token (401 with
+// WWW-Authenticate, or 403 when writes are disabled); logged on "audit".
+api::ApiResponse refuse_write(const WriteAuthorizer& auth, const httplib::Request& req) {
+  try {
+    auth.authorize(req.method, req.path, req.get_header_value("Authorization"), req.remote_addr);
+  } catch (const api::ApiError& e) {
+    api::ApiResponse response = api::error_response(e);
+    if (e.status() == 401) response.headers.emplace_back("WWW-Authenticate", "Bearer");
+    return response;
   }
-  return false;
+  throw std::logic_error("refuse_write called for an authorised request");
+}
+
+// A write's handler with its outcome on the "audit" logger, whatever happens.
+api::ApiResponse run_write(const api::Route& route, const api::ApiContext& context,
+                           const api::ApiRequest& request, const httplib::Request& req) {
+  try {
+    api::ApiResponse response = route.handler(context, request);
+    audit_logger()->info("write done: {} {} from {} -> {}", req.method, req.path, req.remote_addr,
+                         response.status);
+    return response;
+  } catch (const api::ApiError& e) {
+    audit_logger()->info("write failed: {} {} from {} -> {} {}", req.method, req.path,
+                         req.remote_addr, e.status(), e.code());
+    throw;
+  } catch (...) {
+    audit_logger()->info("write failed: {} {} from {} -> 500", req.method, req.path,
+                         req.remote_addr);
+    throw;
+  }
 }
 
 std::shared_ptr<spdlog::logger> access_logger() {
@@ -98,23 +113,17 @@ std::shared_ptr<spdlog::logger> access_logger() {
 
 }  // namespace
 
-const std::vector<std::pair<std::string, std::string>>& HttpServer::routes() {
-  static const std::vector<std::pair<std::string, std::string>> all = [] {
-    auto routes = kRoutes;
-    routes.insert(routes.end(), data_routes().begin(), data_routes().end());
-    return routes;
-  }();
-  return all;
-}
-
-void HttpServer::add_data_routes(const DataServices& services) {
-  install_data_routes(*http_, services, {config_.payload_max_bytes, config_.body_limit_bytes()});
-}
-
 HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& metrics)
     : config_(config),
       tables_(tables),
       metrics_(metrics),
+      cors_(config.cors_origins),
+      context_{tables,
+               {config.max_views, config.max_wavelengths, config.max_skydome_size},
+               nullptr,
+               [this] { return metrics_.scrape(tables_.table_bytes()); },
+               config.retry_after_s,
+               [](const std::string& message) { spdlog::warn("{}", message); }},
       http_(std::make_unique<httplib::Server>()) {
   const unsigned workers = config_.worker_threads();
   const std::size_t queued = config_.max_queued;
@@ -135,10 +144,16 @@ HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& 
   });
   // Small responses go out at once (no Nagle delay waiting for the client's delayed ACK).
   http_->set_tcp_nodelay(true);
-  install_routes();
+  install();
 }
 
 HttpServer::~HttpServer() { stop(); }
+
+void HttpServer::add_data_services(const api::DataServices& services, const WriteAuthorizer& auth) {
+  data_ = services;
+  context_.data = &data_;
+  auth_ = &auth;
+}
 
 int HttpServer::bind() {
   int port = config_.port;
@@ -164,41 +179,116 @@ void HttpServer::stop() {
 
 bool HttpServer::running() const { return http_->is_running(); }
 
-void HttpServer::install_routes() {
-  httplib::Server& s = *http_;
-  const api::Limits limits{config_.max_views, config_.max_wavelengths, config_.max_skydome_size};
+void HttpServer::send(const httplib::Request& req, httplib::Response& res,
+                      api::ApiResponse response) {
+  // Answers without a cache policy (errors, refusals) are never stored.
+  if (!response.header("Cache-Control")) response.headers.emplace_back("Cache-Control", "no-store");
+  const std::string origin = req.get_header_value("Origin");
+  cors_.add_headers(
+      req.has_header("Origin") ? std::optional<std::string_view>(origin) : std::nullopt, response);
+  res.status = response.status;
+  for (const auto& [name, value] : response.headers) res.set_header(name, value);
+  current_request.model = response.model_id;
+  if (response.stream) {
+    res.set_chunked_content_provider(
+        response.content_type,
+        [stream = std::move(response.stream)](std::size_t, httplib::DataSink& sink) {
+          const bool complete = stream([&sink](const char* data, std::size_t size) {
+            return sink.is_writable() && sink.write(data, size);
+          });
+          if (complete) sink.done();
+          return complete;
+        });
+  } else if (response.status != 204 && response.status != 304) {
+    res.set_content(std::move(response.body), response.content_type);
+  }
+}
 
-  // Bodies that no route reads (other methods, unknown POST paths) are refused above the
-  // payload limit before they are read: cpp-httplib would buffer them whole up to the upload
-  // limit. The connection is closed, since the body is left unread. The POST routes limit
-  // their bodies where they read them (read_limited_body; the upload route's spool).
+void HttpServer::answer(const httplib::Request& req, httplib::Response& res,
+                        const httplib::ContentReader* content) {
+  const api::Route* route = current_request.match.route;
+  if (route == nullptr) throw std::logic_error("a request reached dispatch without its route");
+  api::ApiRequest request = to_api_request(req);
+  std::optional<UploadBodyReader> upload;
+  if (content != nullptr && route->body == api::BodyPolicy::upload) {
+    upload.emplace(req, *content, config_.max_upload_bytes);
+    request.body_reader = &*upload;
+  } else if (content != nullptr) {
+    // JSON bodies are kept; a body a route does not take is drained under the same limit.
+    std::string body =
+        read_limited_body(req, *content, config_.payload_max_bytes, config_.body_limit_bytes());
+    if (route->body == api::BodyPolicy::json) request.body = std::move(body);
+  } else if (route->body == api::BodyPolicy::json) {
+    request.body = req.body;
+  }
+  api::ApiResponse response = route->needs_token ? run_write(*route, context_, request, req)
+                                                 : route->handler(context_, request);
+  api::apply_caching(route->caching, request, response);
+  send(req, res, std::move(response));
+}
+
+void HttpServer::install() {
+  httplib::Server& s = *http_;
+
+  // Everything decided from the head, before any body is read: the route, OPTIONS, the body a
+  // route does not read, the token. A refusal leaves a pending body unread: the connection is
+  // then closed (the client must not send the body as the next request).
   s.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
-    current_request = {Clock::now(), {}};
-    if (req.method == "POST" && is_post_route(req.path))
-      return httplib::Server::HandlerResponse::Unhandled;
-    const bool chunked =
-        req.get_header_value("Transfer-Encoding").find("chunked") != std::string::npos;
-    if (chunked ||
-        req.get_header_value<std::uint64_t>("Content-Length") > config_.payload_max_bytes) {
-      send(res, api::error_response(api::too_large(
-                    "body", "the request body is above the limit of " +
-                                std::to_string(config_.payload_max_bytes) + " bytes")));
-      res.set_header("Connection", "close");
-      return httplib::Server::HandlerResponse::Handled;
+    begin_request(req);
+    const api::RouteMatch& match = current_request.match;
+    const bool pending = body_pending(req);
+    const auto refuse = [&](api::ApiResponse response) {
+      if (pending) response.headers.emplace_back("Connection", "close");
+      send(req, res, std::move(response));
+      return HandlerResponse::Handled;
+    };
+    if (req.method == "OPTIONS" && match.path_known())
+      return refuse(cors_.options(to_api_request(req), api::allow_header(match)));
+    // POST routes read (or drain) their body under their own limit; other bodies would be
+    // buffered whole by cpp-httplib up to the upload limit: refused above the payload limit.
+    const bool reads_body = match.route != nullptr && match.route->method == "POST";
+    if (!reads_body && (chunked(req) || req.get_header_value<std::uint64_t>("Content-Length") >
+                                            config_.payload_max_bytes)) {
+      api::ApiResponse response =
+          api::error_response(body_too_large(config_.payload_max_bytes, "the request body"));
+      response.headers.emplace_back("Connection", "close");
+      return refuse(std::move(response));
     }
-    return httplib::Server::HandlerResponse::Unhandled;
+    if (!match.path_known())
+      return refuse(api::error_response(
+          api::ApiError(404, "not_found", "",
+                        "no route " + req.method + " " + req.path + " (see /openapi.json)")));
+    if (match.route == nullptr) {
+      api::ApiResponse response = api::error_response(
+          api::ApiError(405, "method_not_allowed", "",
+                        req.method + " is not served on " + req.path + " (see /openapi.json)"));
+      response.headers.emplace_back("Allow", api::allow_header(match));
+      return refuse(std::move(response));
+    }
+    if (match.route->needs_token && !auth_->allows(req.get_header_value("Authorization")))
+      return refuse(refuse_write(*auth_, req));
+    return HandlerResponse::Unhandled;
   });
 
   // A client that asks before sending its body (Expect: 100-continue, as curl does above
-  // 1 MB) learns of a body above the limit of its route at once and never sends it.
+  // 1 MB) learns at once of a body above the limit of its route, or of a missing token, and
+  // never sends the body.
   s.set_expect_100_continue_handler([this](const httplib::Request& req, httplib::Response& res) {
-    const bool upload = req.method == "POST" && req.path == "/v1/datasets";
+    const api::RouteMatch match = api::match_route(req.method, req.path);
+    const bool upload = match.route != nullptr && match.route->body == api::BodyPolicy::upload;
     const std::size_t limit = upload ? config_.max_upload_bytes : config_.payload_max_bytes;
-    if (req.get_header_value<std::uint64_t>("Content-Length") <= limit) return 100;
-    current_request = {Clock::now(), {}};
-    send(res, api::error_response(api::too_large(
-                  "body", std::string(upload ? "the upload" : "the request body") +
-                              " is above the limit of " + std::to_string(limit) + " bytes")));
+    api::ApiResponse refusal;
+    if (req.get_header_value<std::uint64_t>("Content-Length") > limit) {
+      refusal =
+          api::error_response(body_too_large(limit, upload ? "the upload" : "the request body"));
+    } else if (match.route != nullptr && match.route->needs_token &&
+               !auth_->allows(req.get_header_value("Authorization"))) {
+      refusal = refuse_write(*auth_, req);
+    } else {
+      return 100;
+    }
+    begin_request(req);
+    send(req, res, std::move(refusal));
     // cpp-httplib 0.11.4 writes this answer without its Content-Length (curl then waits for the
     // connection to close, and sends the body meanwhile); the body is never read: close.
     res.set_header("Content-Length", std::to_string(res.body.size()));
@@ -208,27 +298,29 @@ void HttpServer::install_routes() {
 
   // The one exception handler: typed API errors keep their status; anything else is a 500
   // whose details go to the log, not to the client.
-  s.set_exception_handler([](const httplib::Request& req, httplib::Response& res,
-                             std::exception_ptr error) {
-    try {
-      std::rethrow_exception(error);
-    } catch (const api::ApiError& e) {
-      send(res, api::error_response(e));
-    } catch (const api::InvalidParameter& e) {
-      send(res, api::error_response(api::invalid_parameter(e.parameter(), e.message())));
-    } catch (const std::exception& e) {
-      spdlog::error("{} {}: {}", req.method, req.path, e.what());
-      send(res, api::error_response(api::ApiError(500, "internal_error", "", "internal error")));
-    } catch (...) {
-      spdlog::error("{} {}: unknown exception", req.method, req.path);
-      send(res, api::error_response(api::ApiError(500, "internal_error", "", "internal error")));
-    }
-  });
+  s.set_exception_handler(
+      [this](const httplib::Request& req, httplib::Response& res, std::exception_ptr error) {
+        try {
+          std::rethrow_exception(error);
+        } catch (const api::ApiError& e) {
+          send(req, res, api::error_response(e));
+        } catch (const api::InvalidParameter& e) {
+          send(req, res, api::error_response(api::invalid_parameter(e.parameter(), e.message())));
+        } catch (const std::exception& e) {
+          spdlog::error("{} {}: {}", req.method, req.path, e.what());
+          send(req, res,
+               api::error_response(api::ApiError(500, "internal_error", "", "internal error")));
+        } catch (...) {
+          spdlog::error("{} {}: unknown exception", req.method, req.path);
+          send(req, res,
+               api::error_response(api::ApiError(500, "internal_error", "", "internal error")));
+        }
+      });
 
-  // httplib's own errors (no route, payload too large, bad request line) in the same format.
-  s.set_error_handler(
-      httplib::Server::HandlerWithResponse([](const httplib::Request& req, httplib::Response& res) {
-        if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
+  // httplib's own errors (payload too large, bad request line) in the same format.
+  s.set_error_handler(httplib::Server::HandlerWithResponse(
+      [this](const httplib::Request& req, httplib::Response& res) {
+        if (!res.body.empty()) return HandlerResponse::Unhandled;
         std::string code = "http_error";
         std::string message = "HTTP error " + std::to_string(res.status);
         if (res.status == 404) {
@@ -239,14 +331,14 @@ void HttpServer::install_routes() {
           message = "the request body is above the configured limit";
         }
         const int status = res.status;
-        send(res, api::error_response(api::ApiError(status, code, "", message)));
-        return httplib::Server::HandlerResponse::Handled;
+        send(req, res, api::error_response(api::ApiError(status, code, "", message)));
+        return HandlerResponse::Handled;
       }));
 
   s.set_logger([this](const httplib::Request& req, const httplib::Response& res) {
     const double seconds =
         std::chrono::duration<double>(Clock::now() - current_request.start).count();
-    const std::string endpoint = endpoint_label(req.path);
+    const std::string endpoint(current_request.endpoint);
     metrics_.observe_request(endpoint, current_request.model, res.status, seconds);
     access_logger()->info(
         R"({{"remote":"{}","method":"{}","path":"{}","status":{},"bytes":{},"ms":{:.3f},"model":"{}","endpoint":"{}"}})",
@@ -254,87 +346,28 @@ void HttpServer::install_routes() {
         current_request.model, endpoint);
   });
 
-  const auto handle =
-      [this, limits](api::ApiResponse (*handler)(const api::ApiContext&, const api::ApiRequest&)) {
-        return [this, limits, handler](const httplib::Request& req, httplib::Response& res) {
-          const api::ApiContext context{tables_, limits};
-          send(res, handler(context, to_api_request(req)));
-        };
-      };
-  // POST bodies are read under the payload limit, not buffered by cpp-httplib (whose limit is
-  // the upload one).
-  const auto handle_post = [this, limits](api::ApiResponse (*handler)(const api::ApiContext&,
-                                                                      const api::ApiRequest&)) {
-    return [this, limits, handler](const httplib::Request& req, httplib::Response& res,
-                                   const httplib::ContentReader& content) {
-      api::ApiRequest request = to_api_request(req);
-      request.body =
-          read_limited_body(req, content, config_.payload_max_bytes, config_.body_limit_bytes());
-      const api::ApiContext context{tables_, limits};
-      send(res, handler(context, request));
-    };
+  // The routes: pre-routing matched each request against the table, so each method the table
+  // uses has one catch-all handler that runs the matched route.
+  std::set<std::string_view> methods;
+  for (const api::Route& route : api::routes()) methods.insert(route.method);
+  const auto plain = [this](const httplib::Request& req, httplib::Response& res) {
+    answer(req, res, nullptr);
   };
-  s.Get("/v1/models", handle(api::get_models));
-  s.Get("/v1/sun", handle(api::get_sun));
-  s.Get("/v1/radiance", handle(api::radiance));
-  s.Post("/v1/radiance", handle_post(api::radiance));
-  s.Get("/v1/irradiance", handle(api::irradiance));
-  s.Get("/v1/rgb", handle(api::rgb));
-  s.Post("/v1/rgb", handle_post(api::rgb));
-
-  // The skydome is checked completely before the response starts; then it is computed band by
-  // band and streamed (chunked) from the content provider, which owns the render job.
-  s.Get("/v1/skydome", [this, limits](const httplib::Request& req, httplib::Response& res) {
-    const api::ApiContext context{tables_, limits};
-    auto job = std::make_shared<const api::SkydomeRender>(
-        api::prepare_skydome(context, to_api_request(req)));
-    current_request.model = job->model_id();
-    res.set_header("Content-Disposition", "inline; filename=\"sky.exr\"");
-    res.set_chunked_content_provider("image/x-exr", [job](std::size_t, httplib::DataSink& sink) {
-      std::size_t unanswered = 0;
-      const bool complete = job->write(
-          [&sink](const char* data, std::size_t size) {
-            return sink.is_writable() && sink.write(data, size);
-          },
-          0, &unanswered);
-      if (unanswered > 0)
-        spdlog::warn("skydome {}: {} pixels without a value, written as 0", job->model_id(),
-                     unanswered);
-      if (complete) sink.done();
-      return complete;
-    });
-  });
-
-  s.Get("/healthz", [](const httplib::Request&, httplib::Response& res) {
-    res.set_content(R"({"status":"ok"})", "application/json");
-  });
-  s.Get("/readyz", [this](const httplib::Request&, httplib::Response& res) {
-    nlohmann::json models = nlohmann::json::object();
-    for (const ModelFactory& f : tables_.factories()) {
-      const api::ModelState state = tables_.default_state(f);
-      models[f.descriptor->id] = {{"status", api::to_string(state.status)},
-                                  {"progress", api::finite(state.progress)}};
-    }
-    if (tables_.ready()) {
-      res.set_content(nlohmann::json{{"status", "ready"}, {"models", models}}.dump(),
-                      "application/json");
-      return;
-    }
-    api::ApiResponse response = api::error_response(
-        api::ApiError(503, "not_ready", "", "the default tables of some models are being built",
-                      config_.retry_after_s));
-    nlohmann::json body = nlohmann::json::parse(response.body);
-    body["models"] = models;
-    response.body = body.dump();
-    send(res, response);
-  });
-  s.Get("/openapi.json", [](const httplib::Request&, httplib::Response& res) {
-    static const std::string document = api::openapi_document().dump(2);
-    res.set_content(document, "application/json");
-  });
-  s.Get("/metrics", [this](const httplib::Request&, httplib::Response& res) {
-    res.set_content(metrics_.scrape(tables_.table_bytes()), "text/plain; version=0.0.4");
-  });
+  const auto with_body = [this](const httplib::Request& req, httplib::Response& res,
+                                const httplib::ContentReader& content) {
+    answer(req, res, &content);
+  };
+  for (const std::string_view method : methods) {
+    if (method == "GET")
+      s.Get(".*", plain);
+    else if (method == "DELETE")
+      s.Delete(".*", plain);
+    else if (method == "POST")
+      s.Post(".*", with_body);
+    else
+      throw std::logic_error("the route table uses a method the server cannot install: " +
+                             std::string(method));
+  }
 }
 
 }  // namespace clearsky::server

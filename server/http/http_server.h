@@ -1,26 +1,37 @@
-// The HTTP boundary (STYLE.md habit 14): cpp-httplib wired to the api/ handlers, in one place.
-// - routes of DESIGN.md "HTTP API v1" (routes() lists them, for the OpenAPI coverage test);
+// The HTTP boundary: cpp-httplib serving the route table of api/routes/route_table.h, in one
+// place (docs/http-api.md "From socket to handler").
+// - before a body is read (pre-routing): the route is found (404, or 405 with Allow), OPTIONS
+//   and CORS preflights are answered, bodies a route does not read are refused above the
+//   payload limit, and the bearer token of a write route is checked (401/403);
+// - each route's transport-free handler runs with the server's ApiContext; its body is read by
+//   the route's body policy (JSON under the payload limit, uploads streamed), its answer gets
+//   the cache headers of its policy (ETag, 304) and CORS headers, and a streamed answer is
+//   sent chunked;
 // - one exception handler (ApiError -> its status; anything else, caught with catch (...),
-//   -> 500), and one error format {"error": {"code", "message", "parameter"}}, also for
-//   httplib's own errors (404 unknown path, 413 payload);
+//   -> 500) and one error format {"error": {"code", "message", "parameter"}}, also for
+//   httplib's own errors (413 payload, bad request line);
 // - limits from ServerConfig: worker threads, bounded queue, payload, timeouts, keep-alive;
-// - a structured access log line per request (spdlog logger "access") and Prometheus metrics.
+// - a structured access log line per request (spdlog logger "access"), Prometheus metrics
+//   labelled by route pattern, and an "audit" line for every write with its outcome.
 // Thread-safety: start()/stop() from one controlling thread; requests run on the workers.
 #pragma once
 
 #include <memory>
 #include <string>
-#include <utility>
-#include <vector>
 
+#include "api/http/api_types.h"
+#include "api/http/cors.h"
+#include "server/auth/write_auth.h"
 #include "server/config/server_config.h"
-#include "server/http/data_routes.h"
 #include "server/metrics/metrics.h"
 #include "server/tables/table_store.h"
 
 namespace httplib {
 class Server;
-}
+class ContentReader;
+struct Request;
+struct Response;
+}  // namespace httplib
 
 namespace clearsky::server {
 
@@ -28,6 +39,11 @@ class HttpServer {
  public:
   HttpServer(const ServerConfig& config, TableStore& tables, Metrics& metrics);
   ~HttpServer();
+
+  // The services of the data endpoints (datasets, imports, evaluations, jobs) and the bearer
+  // token of the write routes; both must outlive the server. Call before bind(). Without
+  // them the data endpoints answer 503 and writes 403.
+  void add_data_services(const api::DataServices& services, const WriteAuthorizer& auth);
 
   // Binds config.host:config.port (port 0: a free port); returns the bound port. Throws
   // std::runtime_error when it cannot bind.
@@ -37,18 +53,22 @@ class HttpServer {
   void stop();
   bool running() const;
 
-  // Every (method, path) served, the data endpoints (data_routes.h) included.
-  static const std::vector<std::pair<std::string, std::string>>& routes();
-
-  // Adds the data endpoints (datasets, evaluations, jobs); services must outlive the server.
-  void add_data_routes(const DataServices& services);
-
  private:
-  void install_routes();
+  void install();
+  // The matched route's answer (pre-routing found it); content is null for methods whose
+  // body cpp-httplib reads itself.
+  void answer(const httplib::Request& req, httplib::Response& res,
+              const httplib::ContentReader* content);
+  void send(const httplib::Request& req, httplib::Response& res, api::ApiResponse response);
 
   ServerConfig config_;
   TableStore& tables_;
   Metrics& metrics_;
+  api::CorsPolicy cors_;
+  api::DataServices data_;
+  api::ApiContext context_;
+  WriteAuthorizer no_token_{std::nullopt};
+  const WriteAuthorizer* auth_ = &no_token_;
   std::unique_ptr<httplib::Server> http_;
   int listen_socket_ = -1;
 };

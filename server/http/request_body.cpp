@@ -7,15 +7,23 @@
 
 namespace clearsky::server {
 
+namespace {
+
+// A request with neither Content-Length nor chunked transfer coding has no body (RFC 9112
+// section 6.3): `curl -X POST .../pause` must not wait for one nor be refused.
+bool has_body(const httplib::Request& req) {
+  return req.has_header("Content-Length") || req.has_header("Transfer-Encoding");
+}
+
+}  // namespace
+
 std::string read_limited_body(const httplib::Request& req, const httplib::ContentReader& content,
                               std::size_t limit_bytes, std::size_t drain_limit_bytes) {
   const auto too_large = [limit_bytes] {
     return api::too_large(
         "body", "the request body is above the limit of " + std::to_string(limit_bytes) + " bytes");
   };
-  // A request with neither Content-Length nor chunked transfer coding has no body (RFC 9112
-  // section 6.3): `curl -X POST .../pause` must not wait for one nor be refused.
-  if (!req.has_header("Content-Length") && !req.has_header("Transfer-Encoding")) return {};
+  if (!has_body(req)) return {};
   // A declared length beyond the drain limit is refused by cpp-httplib itself (skipped).
   if (req.get_header_value<std::uint64_t>("Content-Length") > drain_limit_bytes) {
     content([](const char*, std::size_t) { return true; });
@@ -36,6 +44,23 @@ std::string read_limited_body(const httplib::Request& req, const httplib::Conten
   if (!complete)
     throw api::ApiError(400, "invalid_body", "body", "body: the request body could not be read");
   return body;
+}
+
+bool UploadBodyReader::read(const std::function<bool(std::string_view piece)>& receive) {
+  if (!has_body(req_)) return true;
+  bool stopped = false;
+  const bool complete = content_([&](const char* data, std::size_t size) {
+    if (receive(std::string_view(data, size))) return true;
+    stopped = true;
+    return false;
+  });
+  if (complete) return true;
+  if (stopped) return false;
+  // cpp-httplib skips, without calling the receiver, a body above its payload limit.
+  if (req_.get_header_value<std::uint64_t>("Content-Length") > limit_bytes_)
+    throw api::too_large(
+        "body", "the upload is above the limit of " + std::to_string(limit_bytes_) + " bytes");
+  throw api::ApiError(400, "invalid_body", "body", "body: the upload could not be read");
 }
 
 }  // namespace clearsky::server

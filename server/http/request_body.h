@@ -1,14 +1,18 @@
-// Request bodies under the small payload limit on routes that read them through cpp-httplib's
-// ContentReader. cpp-httplib 0.11.4 (Debian 12) has one payload limit for the whole server,
-// applied only to bodies with a Content-Length (it skips such a body and answers 413; chunked
-// bodies are not limited), so the server sets it to the upload limit and every other POST
-// route reads its body here: kept up to limit_bytes, then read and discarded up to
-// drain_limit_bytes so that the client, still sending, gets the 413 (a server that stops
-// reading makes the client fail on its write); beyond drain_limit_bytes the connection is cut.
+// Request bodies read through cpp-httplib's ContentReader, under the route's limit
+// (api/routes/route_table.h BodyPolicy). cpp-httplib 0.11.4 (Debian 12) has one payload limit
+// for the whole server, applied only to bodies with a Content-Length (it skips such a body and
+// answers 413; chunked bodies are not limited), so the server sets it to the largest body any
+// route takes (the upload) and:
+// - JSON bodies are read here: kept up to limit_bytes, then read and discarded up to
+//   drain_limit_bytes so that the client, still sending, gets the 413 (a server that stops
+//   reading makes the client fail on its write); beyond drain_limit_bytes the connection is cut;
+// - uploads are streamed to the handler through api::BodyReader (UploadBodyReader).
 #pragma once
 
 #include <cstddef>
 #include <string>
+
+#include "api/http/body_reader.h"
 
 namespace httplib {
 class ContentReader;
@@ -21,5 +25,19 @@ namespace clearsky::server {
 // its Content-Length or by what arrived), 400 (invalid_body) when it could not be read.
 std::string read_limited_body(const httplib::Request& req, const httplib::ContentReader& content,
                               std::size_t limit_bytes, std::size_t drain_limit_bytes);
+
+// An upload as it arrives, for one request on the worker that serves it.
+class UploadBodyReader final : public api::BodyReader {
+ public:
+  UploadBodyReader(const httplib::Request& req, const httplib::ContentReader& content,
+                   std::size_t limit_bytes)
+      : req_(req), content_(content), limit_bytes_(limit_bytes) {}
+  bool read(const std::function<bool(std::string_view piece)>& receive) override;
+
+ private:
+  const httplib::Request& req_;
+  const httplib::ContentReader& content_;
+  std::size_t limit_bytes_;
+};
 
 }  // namespace clearsky::server

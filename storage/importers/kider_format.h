@@ -1,4 +1,4 @@
-// The Kider et al. 2014 measurement format (../shared/data/README.md "kider2014"): one capture
+// The Kider et al. 2014 measurement format (Kider et al. 2014, ACM TOG 33(6)): one capture
 // is 81 text files named DATE___HH.MM.SS_-_INDEX____AZIMUTH___ELEVATION.asd.rad.txt, each a
 // header line then "wavelength_nm radiance" rows, 350..2500 nm every 1 nm, W/(m2.sr.nm).
 // AZIMUTH is counter-clockwise from North and ELEVATION above the horizon, both in degrees;

@@ -1,4 +1,4 @@
-// Dataset imports (issue 9) as rows of the imports table: what is imported (dataset, format,
+// Dataset imports as rows of the imports table: what is imported (dataset, format,
 // an upload or a server-side path), its state (queued, running, succeeded, failed), timings,
 // the last progress recorded, the report (JSON text) on success and the error on failure.
 // An import is recorded before it is queued so that a crash leaves a trace, which start-up

@@ -1,6 +1,7 @@
-// Schema migrations (migrations.h). Tables (issue 3): datasets of measured captures, their
-// samples (spectra as float64 blobs), evaluation runs with per-capture results, and scheduled
-// evaluation jobs; (issue 9) dataset imports. Times are ISO 8601 UTC text except capture instants (unix seconds).
+// Schema migrations (migrations.h). Tables (docs/architecture.md "Storage and durability"):
+// datasets of measured captures, their samples (spectra as float64 blobs), evaluation runs with
+// per-capture results, and scheduled evaluation jobs; dataset imports. Times are ISO 8601 UTC text
+// except capture instants (unix seconds).
 #include "storage/schema/migrations.h"
 
 #include <string>
@@ -115,7 +116,7 @@ BEGIN
     SELECT 1 FROM evaluation_capture_results WHERE sample_errors_id = OLD.sample_errors_id);
 END;
 )sql",
-      // Version 3: dataset imports run as background jobs (issue 9). A row per import, kept
+      // Version 3: dataset imports run as background jobs. A row per import, kept
       // after its dataset is deleted (no foreign key); progress columns hold the last known
       // counts (the live ones are in the server's memory while it runs).
       R"sql(

@@ -1,8 +1,8 @@
-// SQLite through RAII (STYLE.md "cpp-httplib and SQLiteCpp"): a Database owns one connection,
-// a Statement one prepared statement, a Transaction rolls back unless committed. Destructors
-// never throw. Errors are SqliteError carrying SQLite's result code and message.
-// Connections open with WAL journaling (files), foreign keys on and a busy timeout, so that
-// several processes (server, CLI) can share one file.
+// SQLite through RAII (docs/conventions.md "Resources and transactions"): a Database owns one
+// connection, a Statement one prepared statement, a Transaction rolls back unless committed.
+// Destructors never throw. Errors are SqliteError carrying SQLite's result code and message.
+// Connections open with WAL journaling (files), foreign keys on and a busy timeout, so that several
+// processes (server, CLI) can share one file.
 // Thread-safety: a Database and its Statements belong to one thread at a time; open one
 // connection per thread (SQLite's serialized mode is not relied upon).
 #pragma once

@@ -1,8 +1,8 @@
-// Run time of the two analytic models (issue 4 targets, single thread): one 40-wavelength
-// radiance after the per-sun preparation, a batch of the 81 evaluation directions, the sky
-// irradiance (default quadrature, 24 x 48 directions), and the per-sun preparation itself.
-// Hosek is measured both as the study evaluates it (one state per grid wavelength) and on its
-// 11 native bands interpolated (native_bands = 1).
+// Run time of the two analytic models (measured in the models' READMEs, single thread): one
+// 40-wavelength radiance after the per-sun preparation, a batch of the 81 evaluation directions,
+// the sky irradiance (default quadrature, 24 x 48 directions), and the per-sun preparation itself.
+// Hosek is measured both as the study evaluates it (one state per grid wavelength) and on its 11
+// native bands interpolated (native_bands = 1).
 #include <benchmark/benchmark.h>
 
 #include <cmath>

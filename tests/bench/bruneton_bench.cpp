@@ -87,7 +87,7 @@ void BM_BrunetonPrecomputePaper(benchmark::State& state) {
 BENCHMARK(BM_BrunetonPrecomputePaper)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 // Args: r, mu, mu_s, nu, orders. Reports the precomputation time and the RMSE on the 15
-// public captures (when ../shared/data is present).
+// public captures (when the measurement data is present, README.md "Data").
 void BM_BrunetonSettings(benchmark::State& state) {
   ModelConfig config;
   config.options["table_r_size"] = static_cast<double>(state.range(0));

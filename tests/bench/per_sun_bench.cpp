@@ -2,7 +2,7 @@
 // resolution and at cheaper settings (their RMSE on the 15 captures is in the models'
 // READMEs), one 40-wavelength radiance, a batch of the 81 measured directions, and the sky
 // irradiance at the ground (SkyModel's 24 x 48 quadrature). Precomputations use all cores
-// (the targets are per sun angle on 2 cores: Haber < 5 s, Nishita96 < 0.1 s and
+// (the targets are per sun angle on 2 cores: Haber < 5 s, Nishita96 < 0.1 s and
 // 30 MB); queries run on one thread (Nishita96 < 30 us per radiance, < 50 ms per sky
 // irradiance). Each precomputation iteration uses a new model so that its cache is cold.
 #include <benchmark/benchmark.h>

@@ -2,7 +2,7 @@
 // settings (points of the run-time-vs-error curve; the RMSE of each setting is printed by
 // tests/accuracy/single_scattering/single_scattering_accuracy_test.cpp): one 40-wavelength
 // radiance, a batch of the 81 measured directions, the sky irradiance at the ground, and
-// Nishita93's precomputation. Single thread. Issue 5 targets: Nishita93 < 5 us per radiance
+// Nishita93's precomputation. Single thread. Targets: Nishita93 < 5 us per radiance
 // and < 10 ms per sky irradiance (the study's code: 23 us, 232 ms); O'Neal < 1 us.
 #include <benchmark/benchmark.h>
 

@@ -1,4 +1,4 @@
-// The 15 public Kider et al. 2014 captures of 2013-05-27 (../shared/data/kider2014), loaded
+// The 15 public Kider et al. 2014 captures of 2013-05-27 (README.md "Data"), loaded
 // once per process and prepared as the paper's evaluation does (capture_preparation.h: North
 // sample repaired, SPA sun zenith without refraction, sun azimuth estimated from the sky's
 // symmetry), so that an accuracy test is a few lines:

@@ -1,5 +1,6 @@
-// Where tests find ../shared/data (the Kider 2014 measurements). Absent data skips a test with
-// a message, except under CI=true, where it is a failure (DESIGN.md "Set-up contract").
+// Where tests find the measurement data (the Kider 2014 captures; README.md "Data"). Absent data
+// skips a test with a message, except under CI=true, where it is a failure (CONTRIBUTING.md "Build
+// and test").
 #pragma once
 
 #include <gtest/gtest.h>

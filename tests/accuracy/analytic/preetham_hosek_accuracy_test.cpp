@@ -1,7 +1,7 @@
-// The RMSE of Preetham and Hosek-Wilkie on the 15 public Kider captures of 2013-05-27
-// against the 2016 study's code on the same captures (IMPLEMENTATION-NOTES "Reference RMSE"):
-// Preetham 88.72, Hosek 41.59 mW/(m2.sr.nm); within 5%. The paper's 88.1 and 41.5 are over
-// 17 captures, two of which are not public.
+// The RMSE of Preetham and Hosek-Wilkie on the 15 public Kider captures of 2013-05-27 against the
+// 2016 study's code on the same captures (docs/architecture.md "Evaluation against measurements"):
+// Preetham 88.72, Hosek 41.59 mW/(m2.sr.nm); within 5%. The paper's 88.1 and 41.5 are over 17
+// captures, two of which are not public.
 #include <gtest/gtest.h>
 
 #include <cstdio>

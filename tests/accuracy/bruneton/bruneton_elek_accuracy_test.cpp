@@ -1,5 +1,5 @@
 // Bruneton 2008 and Elek 2010 against the 15 public captures of 2013-05-27 (Kider et al.
-// 2014): the study's code scores 11.34 mW/(m2.sr.nm) for both (IMPLEMENTATION-NOTES); we
+// 2014): the study's code scores 11.34 mW/(m2.sr.nm) for both (models/bruneton/README.md); we
 // require the same within 3%. The tables are precomputed once at the paper's resolution on
 // the paper's 40 wavelengths; Elek, identical on that grid, loads them from an in-memory
 // cache instead of precomputing them again.

@@ -1,4 +1,4 @@
-// Issue 3's acceptance check: `clearsky import kider` of the 15 public archives gives 15
+// The import's acceptance check: `clearsky import kider` of the 15 public archives gives 15
 // captures x 81 samples, and a second import changes nothing. Runs the executable.
 #include <gtest/gtest.h>
 #include <sys/wait.h>

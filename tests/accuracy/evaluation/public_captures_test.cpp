@@ -1,6 +1,6 @@
 // The 15 public captures as the accuracy tests see them (tests/support/public_captures.h):
 // complete, repaired, with SPA sun zeniths and estimated azimuths matching the 2016 study's
-// (IMPLEMENTATION-NOTES "Evaluation": 09:30 zenith 48.938, azimuth 91.142 estimated; 11:45
+// (models/evaluation/README.md: 09:30 zenith 48.938, azimuth 91.142 estimated; 11:45
 // zenith 26.654, azimuth 122.265 estimated). Prints the estimate of every capture.
 #include "tests/support/public_captures.h"
 

@@ -1,5 +1,5 @@
 // The sun-azimuth estimate on the real Kider captures against the 2016 study's own estimates
-// (IMPLEMENTATION-NOTES "Evaluation"): from the study's computed azimuths, 09:30 98.142 ->
+// (models/evaluation/README.md): from the study's computed azimuths, 09:30 98.142 ->
 // 91.142 and 11:45 136.065 -> 122.265 degrees. This isolates the estimate from the solar
 // position algorithm (the same candidate wins, so the match is exact); public_captures_test.cpp
 // checks the whole preparation.

@@ -1,7 +1,7 @@
-// RMSE of the per-sun models (Haber, Nishita96) on the 15 public captures of 2013-05-27
-// against the study's code (IMPLEMENTATION-NOTES "Reference RMSE"): Haber 14.80 (paper 14.7
-// on 17 captures). Each capture builds one per-sun state (about a second each for Haber on
-// 2 cores), so the test runs the full precomputation 15 times.
+// RMSE of the per-sun models (Haber, Nishita96) on the 15 public captures of 2013-05-27 against the
+// study's code (docs/architecture.md "Evaluation against measurements"): Haber 14.80 (paper 14.7 on
+// 17 captures). Each capture builds one per-sun state (about a second each for Haber on 2 cores),
+// so the test runs the full precomputation 15 times.
 #include <gtest/gtest.h>
 
 #include <cstdio>

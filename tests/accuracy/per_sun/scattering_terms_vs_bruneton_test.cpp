@@ -1,14 +1,13 @@
-// The single and double scattering terms of Haber and Nishita96 against Bruneton's (paper:
-// "We validated it by comparing its single and double scattering terms with those of the
-// Haber and Bruneton models"; issue 7). Bruneton's single scattering is its radiance with
-// scattering_orders = 1, its double scattering the radiance with 2 orders minus that. Haber's
-// terms likewise from its scattering_orders option; Nishita96's from radiance_orders().
-// Like for like: ground albedo 0 for all three (Haber has no ground at all; Bruneton and
-// Nishita96 would otherwise add grass-reflected light to their double scattering), 3
-// wavelengths, ground-level observer, sun at azimuth 0 (view azimuths are from the sun;
-// Haber's dome is read bilinearly between its cell centres). Prints the ratio model term /
-// Bruneton term per sun, direction and wavelength, then min / median / max per model and
-// term; the bounds below hold the measured ranges.
+// The single and double scattering terms of Haber and Nishita96 against Bruneton's (paper: "We
+// validated it by comparing its single and double scattering terms with those of the Haber and
+// Bruneton models", section "Nishita96 Model"). Bruneton's single scattering is its radiance with
+// scattering_orders = 1, its double scattering the radiance with 2 orders minus that. Haber's terms
+// likewise from its scattering_orders option; Nishita96's from radiance_orders(). Like for like:
+// ground albedo 0 for all three (Haber has no ground at all; Bruneton and Nishita96 would otherwise
+// add grass-reflected light to their double scattering), 3 wavelengths, ground-level observer, sun
+// at azimuth 0 (view azimuths are from the sun; Haber's dome is read bilinearly between its cell
+// centres). Prints the ratio model term / Bruneton term per sun, direction and wavelength, then
+// min / median / max per model and term; the bounds below hold the measured ranges.
 #include <gtest/gtest.h>
 
 #include <algorithm>

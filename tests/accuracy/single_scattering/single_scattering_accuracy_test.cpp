@@ -1,7 +1,7 @@
 // Nishita93 and O'Neal against the 15 public Kider captures (paper sections "Nishita93 Model",
-// "O'Neal Model"; IMPLEMENTATION-NOTES "Reference RMSE"): the study's code scores 26.49
-// (Nishita93) and 49.75 (O'Neal, 4 samples) mW/(m2.sr.nm) on these captures; we must be within
-// 5 %. The paper also reports that O'Neal with 32 samples gives "almost the same results as
+// "O'Neal Model"; docs/architecture.md "Evaluation against measurements"): the study's code scores
+// 26.49 (Nishita93) and 49.75 (O'Neal, 4 samples) mW/(m2.sr.nm) on these captures; we must be
+// within 5 %. The paper also reports that O'Neal with 32 samples gives "almost the same results as
 // Nishita93": within 2 % per capture.
 #include <gtest/gtest.h>
 

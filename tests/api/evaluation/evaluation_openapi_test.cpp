@@ -11,8 +11,16 @@
 namespace clearsky::api {
 namespace {
 
+// Query parameters from (name, value) pairs.
+Parameters query(const std::vector<std::pair<std::string, std::string>>& pairs) {
+  Parameters p("GET /test");
+  for (const auto& [name, value] : pairs) p.add(name, value);
+  return p;
+}
+
 TEST(EvaluationOpenApi, ShowRunParametersAreThoseTheHandlerTakes) {
-  const nlohmann::json& operation = openapi_document()["paths"]["/v1/evaluations/{id}"]["get"];
+  const nlohmann::ordered_json& operation =
+      openapi_document()["paths"]["/v1/evaluations/{id}"]["get"];
   std::vector<std::string> query_names;
   for (const auto& parameter : operation["parameters"]) {
     if (parameter["in"] != "query") continue;
@@ -20,18 +28,18 @@ TEST(EvaluationOpenApi, ShowRunParametersAreThoseTheHandlerTakes) {
     query_names.push_back(name);
     if (parameter["schema"].contains("enum")) {
       for (const auto& value : parameter["schema"]["enum"])
-        EXPECT_NO_THROW(parse_show_evaluation_options({{name, value.get<std::string>()}}))
+        EXPECT_NO_THROW(parse_show_evaluation_options(query({{name, value.get<std::string>()}})))
             << name << "=" << value;
     } else {
-      EXPECT_NO_THROW(parse_show_evaluation_options({{name, "x"}})) << name;
+      EXPECT_NO_THROW(parse_show_evaluation_options(query({{name, "x"}}))) << name;
     }
   }
   EXPECT_EQ(query_names, (std::vector<std::string>{"samples", "capture"}));
-  EXPECT_THROW(parse_show_evaluation_options({{"samples", "all"}}), ApiError);
-  EXPECT_THROW(parse_show_evaluation_options({{"errors", "true"}}), ApiError);
+  EXPECT_THROW(parse_show_evaluation_options(query({{"samples", "all"}})), ApiError);
+  EXPECT_THROW(parse_show_evaluation_options(query({{"errors", "true"}})), ApiError);
 
   const auto& samples = operation["parameters"][1];
-  EXPECT_EQ(samples["schema"]["enum"], nlohmann::json::array({"false", "true", "spectra"}));
+  EXPECT_EQ(samples["schema"]["enum"], nlohmann::ordered_json::array({"false", "true", "spectra"}));
   const std::string description = samples["description"];
   for (const char* word : {"view_zenith", "bias", "errors", "wavelengths_nm", "null"})
     EXPECT_NE(description.find(word), std::string::npos) << word;

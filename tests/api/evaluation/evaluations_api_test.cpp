@@ -25,6 +25,13 @@
 namespace clearsky::api {
 namespace {
 
+// Query parameters from (name, value) pairs.
+Parameters query(const std::vector<std::pair<std::string, std::string>>& pairs) {
+  Parameters p("GET /test");
+  for (const auto& [name, value] : pairs) p.add(name, value);
+  return p;
+}
+
 double sky(const ViewDirection& v, double nm) {
   return 0.05 + 0.02 * std::sin(v.zenith_rad) * std::cos(v.azimuth_rad - 120.0 * kDegree) +
          1e-5 * (nm - 500);
@@ -216,25 +223,29 @@ TEST(EvaluationsApi, BackgroundRunsAreStoredListedAndComparedWithHistory) {
 
   // Lists, newest first, with filters.
   EXPECT_EQ(list_evaluations(f.db, {}).size(), 5u);
-  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter({{"model", "exact"}})).size(), 1u);
-  EXPECT_EQ(list_evaluations(
-                f.db, parse_evaluation_filter({{"model", "offset"}, {"dataset", "synthetic"}}))
+  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter(query({{"model", "exact"}}))).size(),
+            1u);
+  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter(
+                                       query({{"model", "offset"}, {"dataset", "synthetic"}})))
                 .size(),
             4u);
   EXPECT_EQ(
-      list_evaluations(f.db, parse_evaluation_filter({{"since", "2000-01-01T00:00:00Z"}})).size(),
+      list_evaluations(f.db, parse_evaluation_filter(query({{"since", "2000-01-01T00:00:00Z"}})))
+          .size(),
       5u);
   EXPECT_EQ(
-      list_evaluations(f.db, parse_evaluation_filter({{"until", "2000-01-01T00:00:00Z"}})).size(),
+      list_evaluations(f.db, parse_evaluation_filter(query({{"until", "2000-01-01T00:00:00Z"}})))
+          .size(),
       0u);
-  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter({{"status", "failed"}})).size(), 0u);
+  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter(query({{"status", "failed"}}))).size(),
+            0u);
   const auto newest = list_evaluations(f.db, {})[0];
   EXPECT_EQ(newest["id"], pool.ticket(fourth)->run_ids[0]);
   EXPECT_NEAR(newest["rmse"].get<double>(), 4.0, 1e-9);
-  EXPECT_EQ(status_of([&] { parse_evaluation_filter({{"since", "yesterday"}}); }), 400);
-  EXPECT_EQ(status_of([&] { parse_evaluation_filter({{"colour", "red"}}); }), 400);
+  EXPECT_EQ(status_of([&] { parse_evaluation_filter(query({{"since", "yesterday"}})); }), 400);
+  EXPECT_EQ(status_of([&] { parse_evaluation_filter(query({{"colour", "red"}})); }), 400);
   EXPECT_EQ(status_of([&] {
-              list_evaluations(f.db, parse_evaluation_filter({{"dataset", "x"}}));
+              list_evaluations(f.db, parse_evaluation_filter(query({{"dataset", "x"}})));
             }),
             404);
   EXPECT_EQ(status_of([&] { show_evaluation(f.db, 999); }), 404);
@@ -281,7 +292,7 @@ TEST(EvaluationsApi, PerSampleErrorsOnRequest) {
   ASSERT_EQ(pool.ticket(t)->status, "succeeded");
   const std::int64_t id = pool.ticket(t)->run_ids[0];
   const auto options = [](std::vector<std::pair<std::string, std::string>> query) {
-    return parse_show_evaluation_options(query);
+    return parse_show_evaluation_options(clearsky::api::query(query));
   };
 
   const auto plain = show_evaluation(f.db, id);

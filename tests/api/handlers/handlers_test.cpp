@@ -139,6 +139,10 @@ TEST_F(Handlers, ErrorsNameTheParameter) {
   expect_error(call(radiance, "GET", "/v1/radiance", with({{"view_zenith", "45"}})), 400,
                "view_azimuth");
   expect_error(call(radiance, "GET", "/v1/radiance", with(q({{"lat", "40"}}))), 400, "lat");
+  // A cacheable sky answer never depends on the clock: time has no default here.
+  expect_error(call(radiance, "GET", "/v1/radiance",
+                    q({{"model", "testsky"}, {"lat", "40"}, {"lon", "-76"}})),
+               400, "time");
   expect_error(call(radiance, "GET", "/v1/radiance",
                     q({{"model", "nope"}, {"sun_zenith", "3"}, {"sun_azimuth", "3"}})),
                404, "model");

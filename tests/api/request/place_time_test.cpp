@@ -26,7 +26,8 @@ TEST(PlaceTime, ParsesTimesWithOffsets) {
   for (const char* t :
        {"2013-05-27T15:45:00Z", "2013-05-27T11:45:00-04:00", "2013-05-27T21:15+05:30"}) {
     Parameters p = place("42", "-76", t);
-    EXPECT_DOUBLE_EQ(parse_place_and_time(p).position.unix_time_utc_s, 1369669500.0) << t;
+    EXPECT_DOUBLE_EQ(parse_place_and_time(p, std::nullopt).position.unix_time_utc_s, 1369669500.0)
+        << t;
   }
 }
 
@@ -35,7 +36,7 @@ TEST(PlaceTime, RejectsMalformedTimesNamingTime) {
        {"2013-05-27T11:45:00", "2013-13-01T00:00Z", "2013-02-29T00:00Z", "yesterday"}) {
     Parameters p = place("42", "-76", bad);
     try {
-      parse_place_and_time(p);
+      parse_place_and_time(p, std::nullopt);
       ADD_FAILURE() << bad;
     } catch (const ApiError& e) {
       EXPECT_EQ(e.status(), 400) << bad;
@@ -46,12 +47,12 @@ TEST(PlaceTime, RejectsMalformedTimesNamingTime) {
 
 TEST(PlaceTime, DecodesDmsAndChecksHemispheres) {
   Parameters p = place("42d26'36\"N", "76d28'55\"W", "2013-05-27T11:45:00-04:00");
-  const SolarPositionInput in = parse_place_and_time(p).position;
+  const SolarPositionInput in = parse_place_and_time(p, std::nullopt).position;
   EXPECT_NEAR(in.latitude_deg, 42.0 + 26.0 / 60 + 36.0 / 3600, 1e-12);
   EXPECT_NEAR(in.longitude_deg, -(76.0 + 28.0 / 60 + 55.0 / 3600), 1e-12);
   Parameters q = place("42E", "0", "2013-05-27T11:45:00-04:00");
   try {
-    parse_place_and_time(q);
+    parse_place_and_time(q, std::nullopt);
     ADD_FAILURE();
   } catch (const ApiError& e) {
     EXPECT_EQ(e.parameter(), "lat");
@@ -60,7 +61,7 @@ TEST(PlaceTime, DecodesDmsAndChecksHemispheres) {
 
 TEST(PlaceTime, SunThroughSpa) {
   Parameters p = place("42.44", "-76.48", "2013-05-27T11:45:00-04:00");
-  const SolarPosition s = solar_position_checked(parse_place_and_time(p).position);
+  const SolarPosition s = solar_position_checked(parse_place_and_time(p, std::nullopt).position);
   EXPECT_NEAR(s.zenith_deg, 26.64, 0.02);
   EXPECT_NEAR(s.azimuth_deg, 136.07, 0.02);
 }
@@ -123,6 +124,19 @@ TEST(PlaceTime, DefaultsAreTheTablesAndTimeDefaultsToNow) {
   EXPECT_DOUBLE_EQ(r.position.delta_t_s, 69.0);
   EXPECT_DOUBLE_EQ(r.position.delta_ut1_s, 0.0);
   EXPECT_TRUE(r.position.refraction);
+}
+
+TEST(PlaceTime, WithoutNowTimeIsRequired) {
+  Parameters p("GET /v1/radiance");
+  p.add("lat", "42");
+  p.add("lon", "-76");
+  try {
+    (void)parse_place_and_time(p, std::nullopt);
+    ADD_FAILURE();
+  } catch (const ApiError& e) {
+    EXPECT_EQ(e.code(), "missing_parameter");
+    EXPECT_EQ(e.parameter(), "time");
+  }
 }
 
 TEST(PlaceTime, ErrorsNameTheParameter) {

@@ -1,4 +1,5 @@
-// The paper's atmosphere on the 40-bin grid: values quoted in IMPLEMENTATION-NOTES.md.
+// The paper's atmosphere on the 40-bin grid: values quoted in docs/architecture.md
+// "The atmosphere".
 #include "models/atmosphere/atmosphere_spectra.h"
 
 #include <gtest/gtest.h>

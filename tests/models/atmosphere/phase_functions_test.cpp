@@ -1,4 +1,5 @@
-// Phase functions integrate to 1 over the sphere (STYLE.md habit 6).
+// Phase functions integrate to 1 over the sphere (docs/conventions.md "Physical
+// identities").
 #include "models/atmosphere/phase_functions.h"
 
 #include <gtest/gtest.h>

@@ -34,7 +34,7 @@ TEST(OpticalDepth, VerticalRayMatchesClosedFormForBothScaleHeights) {
 }
 
 TEST(OpticalDepth, VerticalTransmittanceIsExpOfColumnDepth) {
-  // tau = k H (1 - exp(-Htop / H)) for each profile (STYLE.md habit 6).
+  // tau = k H (1 - exp(-Htop / H)) for each profile (docs/conventions.md "Physical identities").
   const AtmosphereSpectra atmosphere = paper_atmosphere();
   const Spectrum t = transmittance_to_space(atmosphere, kR, 1.0, RayQuadratureOptions::reference());
   for (std::size_t i = 0; i < t.size(); ++i) {

@@ -1,6 +1,6 @@
-// The checks around model queries, with a test model of known answers: a uniform sky of
-// radiance L gives irradiance pi L on a horizontal plane (STYLE.md habit 6), statuses are
-// set before computing, and bad values never leave a query.
+// The checks around model queries, with a test model of known answers: a uniform sky of radiance L
+// gives irradiance pi L on a horizontal plane (docs/conventions.md "Physical identities"), statuses
+// are set before computing, and bad values never leave a query.
 #include "models/core/sky_model.h"
 
 #include <gtest/gtest.h>

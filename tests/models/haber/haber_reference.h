@@ -1,8 +1,9 @@
-// Slow reference for the Haber model's scattering terms (STYLE.md habit 7): single and double
-// scattering towards a ground viewer by direct numerical integration, with the model's own
-// physics (layered densities and transmittance, isotropic Rayleigh, Cornette-Shanks for
-// single-scattered Mie, isotropic second scattering, no ground albedo) but none of its grid:
-// Gauss-Legendre within each layer along the rays and over the sphere of directions.
+// Slow reference for the Haber model's scattering terms (docs/conventions.md "Fast paths against
+// slow references"): single and double scattering towards a ground viewer by direct numerical
+// integration, with the model's own physics (layered densities and transmittance, isotropic
+// Rayleigh, Cornette-Shanks for single-scattered Mie, isotropic second scattering, no ground
+// albedo) but none of its grid: Gauss-Legendre within each layer along the rays and over the sphere
+// of directions.
 #pragma once
 
 #include <algorithm>

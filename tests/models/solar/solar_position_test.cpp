@@ -1,6 +1,6 @@
 // Solar position and sunrise/transit/sunset against published values: the SPA report's example
 // (Reda and Andreas 2004, appendix A.5) and the Kider et al. 2014 capture site of the study
-// (Cornell, Ithaca NY, 2013-05-27; IMPLEMENTATION-NOTES.md), plus physical consistency checks,
+// (Cornell, Ithaca NY, 2013-05-27; models/evaluation/README.md), plus physical consistency checks,
 // polar day and night, and validation.
 #include "models/solar/solar_position.h"
 

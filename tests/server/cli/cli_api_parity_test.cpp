@@ -1,8 +1,8 @@
-// The CLI (offline, `clearsky import kider` and `clearsky evaluate`) and the API path (an
-// uploaded archive spooled to disk and imported on the background import pool, an evaluation
-// on the background evaluation pool) give identical results on the same captures (issue 9,
-// item 6): the same import report, and Preetham on two public captures, down to the
-// per-sample errors (`clearsky evaluate --json --samples=spectra` against
+// The CLI (offline, `clearsky import kider` and `clearsky evaluate`) and the API path (an uploaded
+// archive spooled to disk and imported on the background import pool, an evaluation on the
+// background evaluation pool) give identical results on the same captures (docs/architecture.md
+// "Storage and durability"): the same import report, and Preetham on two public captures, down to
+// the per-sample errors (`clearsky evaluate --json --samples=spectra` against
 // GET /v1/evaluations/{id}?samples=spectra).
 #include <gtest/gtest.h>
 #include <sys/wait.h>

@@ -104,7 +104,8 @@ TEST(DataCommands, ErrorsAreReportedWithExitStatus1) {
   EXPECT_NE(bad_import.output.find("bad.7z"), std::string::npos) << bad_import.output;
 }
 
-// With the first registered model (when any is registered): the JSON of the CLI contract.
+// With the first registered model (when any is registered): the JSON of docs/architecture.md
+// "Command line".
 TEST(DataCommands, EvaluatePrintsTheContractJson) {
   CLEARSKY_REQUIRE_SHARED_DATA("kider2014/2013-05-27/RADIANCE");
   if (registered_models().empty()) GTEST_SKIP() << "no model registered yet";

@@ -1,8 +1,8 @@
-// Durability of the API's writes (issue 9, item 5) on a database file: a process killed with
-// SIGKILL during an evaluation leaves a run that start-up marks failed, and readers on their
-// own connections during writes see whole datasets only (WAL). The kill during an import is
-// tested in tests/storage/importers/kider_importer_test.cpp; a job due during downtime in
-// tests/server/scheduler/scheduler_test.cpp.
+// Durability of the API's writes (docs/architecture.md "Storage and durability") on a database
+// file: a process killed with SIGKILL during an evaluation leaves a run that start-up marks failed,
+// and readers on their own connections during writes see whole datasets only (WAL). The kill during
+// an import is tested in tests/storage/importers/kider_importer_test.cpp; a job due during downtime
+// in tests/server/scheduler/scheduler_test.cpp.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>

@@ -1,8 +1,8 @@
-// Durability of an import (issue 9, item 5) with the real `clearsky serve` binary: the 15
-// public captures' .7z files packed into one tar are uploaded, the server is killed with
-// SIGKILL while the import runs (its progress already above zero), and the server restarted
-// on the same database shows no partial dataset, the import failed as interrupted, no spool
-// file left behind; then the same upload imports completely.
+// Durability of an import (docs/architecture.md "Storage and durability") with the real `clearsky
+// serve` binary: the 15 public captures' .7z files packed into one tar are uploaded, the server is
+// killed with SIGKILL while the import runs (its progress already above zero), and the server
+// restarted on the same database shows no partial dataset, the import failed as interrupted, no
+// spool file left behind; then the same upload imports completely.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <httplib.h>

@@ -4,13 +4,10 @@
 // client, still sending, reads it (the body is drained, not cut), whether the size is declared
 // (Content-Length) or only found on arrival (chunked); a client asking first (Expect:
 // 100-continue) is told before it sends the body.
-#include <arpa/inet.h>
 #include <gtest/gtest.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <unistd.h>
 
 #include "tests/server/http/data_server_fixture.h"
+#include "tests/server/http/raw_request.h"
 
 namespace clearsky::server {
 namespace {
@@ -102,37 +99,6 @@ TEST_F(BodyLimits, UploadsHaveTheirOwnLimit) {
   EXPECT_TRUE(std::filesystem::is_empty(dir.path / "uploads"));
 }
 
-// The request head alone, with Expect: 100-continue; returns what the server answers before
-// any body byte is sent.
-std::string ask_before_sending(int port, const std::string& head) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(static_cast<std::uint16_t>(port));
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  std::string answer;
-  if (::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0 &&
-      ::send(fd, head.data(), head.size(), 0) == static_cast<ssize_t>(head.size())) {
-    timeval timeout{10, 0};
-    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof timeout);
-    char buffer[4096];
-    // The first answer: its head, and its body when it gives a length.
-    for (;;) {
-      const auto end = answer.find("\r\n\r\n");
-      if (end != std::string::npos) {
-        const auto length_at = answer.find("Content-Length: ");
-        if (length_at == std::string::npos || length_at > end) break;
-        if (answer.size() >= end + 4 + std::stoul(answer.substr(length_at + 16))) break;
-      }
-      const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
-      if (n <= 0) break;
-      answer.append(buffer, static_cast<std::size_t>(n));
-    }
-  }
-  ::close(fd);
-  return answer;
-}
-
 TEST_F(BodyLimits, ExpectContinueIsAnsweredByTheLimitOfTheRoute) {
   const auto head = [](const std::string& target, std::size_t length) {
     return "POST " + target +
@@ -143,13 +109,13 @@ TEST_F(BodyLimits, ExpectContinueIsAnsweredByTheLimitOfTheRoute) {
   // Above the payload limit on a query route, above the upload limit on the upload route: 413
   // before the body is sent.
   const auto answer = [this, &head](const std::string& target, std::size_t length) {
-    return ask_before_sending(port, head(target, length)).substr(0, 12);
+    return testing::ask_before_sending(port, head(target, length)).substr(0, 12);
   };
   EXPECT_EQ(answer("/v1/radiance", kPayload + 1), "HTTP/1.1 413");
   EXPECT_EQ(answer("/v1/datasets?name=d", kUpload + 1), "HTTP/1.1 413");
   // A complete answer (its length given, so that curl does not wait for the connection to
   // close, sending the body meanwhile), telling the client to close.
-  const std::string refused = ask_before_sending(port, head("/v1/radiance", kPayload + 1));
+  const std::string refused = testing::ask_before_sending(port, head("/v1/radiance", kPayload + 1));
   const auto length_at = refused.find("Content-Length: ");
   ASSERT_NE(length_at, std::string::npos) << refused;
   const std::size_t length = std::stoul(refused.substr(length_at + 16));
@@ -169,9 +135,9 @@ TEST_F(BodyLimits, APostWithoutABodyHasAnEmptyBody) {
   const auto head = [](const std::string& target) {
     return "POST " + target + " HTTP/1.1\r\nHost: 127.0.0.1\r\nAuthorization: Bearer t0ken\r\n\r\n";
   };
-  const std::string pause = ask_before_sending(port, head("/v1/jobs/7/pause"));
+  const std::string pause = testing::ask_before_sending(port, head("/v1/jobs/7/pause"));
   EXPECT_EQ(pause.substr(0, 12), "HTTP/1.1 404") << pause;
-  const std::string radiance = ask_before_sending(port, head("/v1/radiance"));
+  const std::string radiance = testing::ask_before_sending(port, head("/v1/radiance"));
   EXPECT_EQ(radiance.substr(0, 12), "HTTP/1.1 400") << radiance;
   EXPECT_EQ(radiance.find("could not be read"), std::string::npos) << radiance;
 }

@@ -11,7 +11,10 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
 
+#include "api/evaluation/evaluation_pool.h"
+#include "api/imports/import_pool.h"
 #include "models/registry.h"
 #include "server/http/http_server.h"
 #include "storage/schema/migrations.h"
@@ -23,7 +26,7 @@ namespace clearsky::server::testing {
 class DataServerFixture : public ::testing::Test {
  protected:
   void start(std::optional<std::string> token, std::size_t payload_max_bytes = 8u << 20,
-             std::size_t max_upload_bytes = 64u << 20) {
+             std::size_t max_upload_bytes = 64u << 20, std::vector<std::string> cors_origins = {}) {
     db_path = dir.path / "sky.db";
     storage::open_database(db_path);
     ServerConfig config;
@@ -32,6 +35,7 @@ class DataServerFixture : public ::testing::Test {
     config.threads = 8;
     config.payload_max_bytes = payload_max_bytes;
     config.max_upload_bytes = max_upload_bytes;
+    config.cors_origins = std::move(cors_origins);
     tables =
         std::make_unique<TableStore>(clearsky::testing::test_factories(), TableStore::Options{});
     const auto path = db_path;
@@ -42,13 +46,12 @@ class DataServerFixture : public ::testing::Test {
     services.db_path = db_path;
     services.upload_dir = dir.path / "uploads";
     services.upload_max_bytes = max_upload_bytes;
-    services.pool = pool.get();
+    services.evaluations = pool.get();
     services.imports = imports.get();
-    services.auth = auth.get();
     services.models = registered_models();
     services.software_version = "test";
     http = std::make_unique<HttpServer>(config, *tables, metrics);
-    http->add_data_routes(services);
+    http->add_data_services(services, *auth);
     port = http->bind();
     thread = std::thread([this] { http->listen(); });
     for (int i = 0; i < 400 && !http->running(); ++i)
@@ -88,7 +91,7 @@ class DataServerFixture : public ::testing::Test {
   std::unique_ptr<api::EvaluationPool> pool;
   std::unique_ptr<api::ImportPool> imports;
   std::unique_ptr<WriteAuthorizer> auth;
-  DataServices services;
+  api::DataServices services;
   std::unique_ptr<HttpServer> http;
   std::thread thread;
   int port = 0;

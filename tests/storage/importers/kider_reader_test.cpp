@@ -1,5 +1,5 @@
 // Tests of reading Kider captures from the published .7z archives and from folders
-// (storage/importers/kider_reader.h), on ../shared/data/kider2014.
+// (storage/importers/kider_reader.h), on the Kider 2014 captures (README.md "Data").
 #include "storage/importers/kider_reader.h"
 
 #include <gtest/gtest.h>

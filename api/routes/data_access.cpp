@@ -1,0 +1,23 @@
+// Data services, connections and the clock for the data routes (data_access.h).
+#include "api/routes/data_access.h"
+
+#include <chrono>
+
+namespace clearsky::api {
+
+const DataServices& data_services(const ApiContext& context) {
+  if (context.data == nullptr)
+    throw ApiError(503, "no_database", "", "this server serves no datasets, evaluations or jobs");
+  return *context.data;
+}
+
+storage::Database open_database(const ApiContext& context) {
+  return storage::Database::open(data_services(context).db_path);
+}
+
+double now_unix_s() {
+  using namespace std::chrono;
+  return duration<double>(system_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace clearsky::api

@@ -1,0 +1,100 @@
+// /v1/datasets in the route table (route_handlers.h): list, show, delete, and the import of
+// an uploaded archive (or a server-side path) as a background job.
+#include <memory>
+
+#include "api/datasets/datasets_api.h"
+#include "api/datasets/upload_spool.h"
+#include "api/imports/imports_api.h"
+#include "api/routes/data_access.h"
+#include "api/routes/route_handlers.h"
+
+namespace clearsky::api {
+
+namespace {
+
+// The uploaded body spooled to disk as it arrives, under the upload limit.
+std::unique_ptr<UploadSpool> spool_body(const ApiRequest& request, const DataServices& data) {
+  auto spool = std::make_unique<UploadSpool>(data.upload_dir, data.upload_max_bytes);
+  if (request.body_reader == nullptr) {
+    spool->append(request.body);
+    return spool;
+  }
+  std::exception_ptr failure;
+  request.body_reader->read([&](std::string_view piece) {
+    try {
+      spool->append(piece);
+      return true;
+    } catch (...) {
+      failure = std::current_exception();
+      return false;
+    }
+  });
+  if (failure) std::rethrow_exception(failure);
+  return spool;
+}
+
+}  // namespace
+
+ApiResponse list_datasets_route(const ApiContext& context, const ApiRequest& request) {
+  query_parameters(request).reject_unused();
+  storage::Database db = open_database(context);
+  return ordered_json_response(list_datasets(db));
+}
+
+ApiResponse get_dataset_route(const ApiContext& context, const ApiRequest& request) {
+  Parameters p = query_parameters(request);
+  ShowDatasetOptions options;
+  options.samples = p.boolean_or("samples", false);
+  options.capture = p.text("capture");
+  p.reject_unused();
+  storage::Database db = open_database(context);
+  return ordered_json_response(show_dataset(db, request.path_parameter("name"), options));
+}
+
+ApiResponse delete_dataset_route(const ApiContext& context, const ApiRequest& request) {
+  query_parameters(request).reject_unused();
+  storage::Database db = open_database(context);
+  return ordered_json_response(delete_dataset(db, request.path_parameter("name")));
+}
+
+// The body is the archive; or no body and path=SERVER_PATH (an archive or folder on the
+// server: the token holder is the administrator). Checked here (parameters, format, path,
+// size), then imported on the ImportPool: 202 with the import's state and its Location.
+ApiResponse import_dataset_route(const ApiContext& context, const ApiRequest& request) {
+  const DataServices& data = data_services(context);
+  Parameters p = query_parameters(request);
+  storage::NewImport what;
+  what.dataset = p.text("name").value_or("");
+  what.format = p.text("format").value_or("kider");
+  const std::optional<std::string> path = p.text("path");
+  p.reject_unused();
+  if (what.dataset.empty()) throw missing_parameter("name", "the dataset to import into");
+  check_import_format(what.format);
+  std::unique_ptr<UploadSpool> spool = spool_body(request, data);
+  std::filesystem::path source;
+  if (path) {
+    if (spool->size_bytes() > 0) throw conflicting_parameters("path", "an uploaded body");
+    spool.reset();
+    what.source = "path";
+    what.path = *path;
+    std::error_code error;
+    if (!std::filesystem::exists(what.path, error))
+      throw invalid_parameter("path", "no file or folder " + what.path + " on the server");
+    source = what.path;
+  } else {
+    if (spool->size_bytes() == 0)
+      throw missing_parameter("body", "the archive (.7z, zip or tar), or path=");
+    what.source = "upload";
+    what.upload_bytes = static_cast<std::int64_t>(spool->size_bytes());
+    source = spool->finish();
+  }
+  if (data.imports == nullptr)
+    throw ApiError(503, "imports_unavailable", "", "this server runs no import workers");
+  storage::Database db = open_database(context);
+  const std::int64_t id = data.imports->submit(db, what, source, std::move(spool));
+  ApiResponse response = ordered_json_response(show_import(db, data.imports, id), 202);
+  response.headers.emplace_back("Location", import_location(id));
+  return response;
+}
+
+}  // namespace clearsky::api

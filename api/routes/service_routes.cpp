@@ -1,0 +1,62 @@
+// /healthz, /readyz, /metrics and /openapi.json (route_handlers.h).
+#include <algorithm>
+
+#include "api/openapi/openapi_document.h"
+#include "api/routes/route_handlers.h"
+
+namespace clearsky::api {
+
+namespace {
+
+// These routes take no parameter either: a query is refused like everywhere else.
+void no_parameters(const ApiRequest& request) { query_parameters(request).reject_unused(); }
+
+}  // namespace
+
+ApiResponse healthz(const ApiContext&, const ApiRequest& request) {
+  no_parameters(request);
+  ApiResponse response;
+  response.body = R"({"status":"ok"})";
+  return response;
+}
+
+// 200 when the default tables of every model are ready, else 503 with Retry-After; both with
+// each model's state.
+ApiResponse readyz(const ApiContext& context, const ApiRequest& request) {
+  no_parameters(request);
+  nlohmann::json models = nlohmann::json::object();
+  bool ready = true;
+  for (const ModelFactory& f : context.models.factories()) {
+    const ModelState state = context.models.default_state(f);
+    ready = ready && state.status == ModelState::Status::ready;
+    models[f.descriptor->id] = {{"status", to_string(state.status)},
+                                {"progress", finite(state.progress)}};
+  }
+  if (ready) return json_response(nlohmann::json{{"status", "ready"}, {"models", models}});
+  ApiResponse response = error_response(
+      ApiError(503, "not_ready", "", "the default tables of some models are being built",
+               context.retry_after_s));
+  nlohmann::json body = nlohmann::json::parse(response.body);
+  body["models"] = models;
+  response.body = body.dump();
+  return response;
+}
+
+ApiResponse metrics(const ApiContext& context, const ApiRequest& request) {
+  no_parameters(request);
+  if (!context.metrics_text) throw ApiError(503, "no_metrics", "", "this server keeps no metrics");
+  ApiResponse response;
+  response.content_type = "text/plain; version=0.0.4";
+  response.body = context.metrics_text();
+  return response;
+}
+
+ApiResponse openapi(const ApiContext&, const ApiRequest& request) {
+  no_parameters(request);
+  static const std::string document = openapi_document().dump(2);
+  ApiResponse response;
+  response.body = document;
+  return response;
+}
+
+}  // namespace clearsky::api

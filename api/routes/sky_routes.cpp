@@ -1,0 +1,39 @@
+// GET /v1/sun and GET /v1/skydome in the route table (route_handlers.h).
+#include <memory>
+
+#include "api/handlers/handlers.h"
+#include "api/routes/route_handlers.h"
+#include "api/skydome/skydome_render.h"
+
+namespace clearsky::api {
+
+// Without `time` the answer is the sun of the current instant: a new answer at every call,
+// which no cache may keep (the route's caching is for answers with an explicit time).
+ApiResponse get_sun_route(const ApiContext& context, const ApiRequest& request) {
+  ApiResponse response = get_sun(context, request);
+  bool timed = false;
+  for (const auto& [name, value] : request.query) timed = timed || name == "time";
+  if (!timed) response.headers.emplace_back("Cache-Control", "no-store");
+  return response;
+}
+
+// The image is checked completely before the answer starts (errors are ordinary error
+// answers); then it is computed band by band as the client reads it (api/skydome/).
+ApiResponse get_skydome(const ApiContext& context, const ApiRequest& request) {
+  auto job = std::make_shared<const SkydomeRender>(prepare_skydome(context, request));
+  ApiResponse response;
+  response.content_type = "image/x-exr";
+  response.model_id = job->model_id();
+  response.headers.emplace_back("Content-Disposition", "inline; filename=\"sky.exr\"");
+  response.stream = [job, warn = context.warn](const ByteSink& sink) {
+    std::size_t unanswered = 0;
+    const bool complete = job->write(sink, 0, &unanswered);
+    if (unanswered > 0 && warn)
+      warn("skydome " + job->model_id() + ": " + std::to_string(unanswered) +
+           " pixels without a value, written as 0");
+    return complete;
+  };
+  return response;
+}
+
+}  // namespace clearsky::api
