@@ -17,8 +17,8 @@ namespace clearsky {
 std::span<const ModelFactory> registered_models() {
   static const std::vector<ModelFactory> factories = {
       // The paper's order: Nishita93, Nishita96, Preetham, O'Neal, Haber, Bruneton, Elek, Hosek.
-      nishita93_factory(), nishita96_factory(), preetham_factory(), oneal_factory(),
-      haber::kFactory,     bruneton_factory(),  elek_factory(),     hosek_factory(),
+      nishita93_factory(),    nishita96_factory(), preetham_factory(), oneal_factory(),
+      haber::model_factory(), bruneton_factory(),  elek_factory(),     hosek_factory(),
   };
   return factories;
 }

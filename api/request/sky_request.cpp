@@ -6,7 +6,7 @@
 
 #include "api/error/api_error.h"
 #include "api/request/place_time.h"
-#include "models/core/invalid_input.h"
+#include "models/atmosphere/atmosphere_parameter_table.h"
 #include "models/core/numeric.h"
 
 namespace clearsky::api {
@@ -50,31 +50,7 @@ SunSpec parse_sun(Parameters& p) {
 Viewpoint parse_viewpoint(Parameters& p) { return {parse_altitude_m(p)}; }
 
 bool set_atmosphere_parameter(AtmosphereParameters& a, const std::string& name, double value) {
-  if (name == "alpha")
-    a.angstrom_alpha = value;
-  else if (name == "beta")
-    a.angstrom_beta = value;
-  else if (name == "g")
-    a.mie_phase_g = value;
-  else if (name == "turbidity")
-    a.turbidity = value;
-  else if (name == "albedo")
-    a.ground_albedo = value;
-  else if (name == "mie_single_scattering_albedo")
-    a.mie_single_scattering_albedo = value;
-  else if (name == "rayleigh_scale_height_m")
-    a.rayleigh_scale_height_m = value;
-  else if (name == "mie_scale_height_m")
-    a.mie_scale_height_m = value;
-  else if (name == "rayleigh_temperature_celsius")
-    a.rayleigh_temperature_celsius = value;
-  else if (name == "earth_radius_m")
-    a.earth_radius_m = value;
-  else if (name == "top_radius_m")
-    a.top_radius_m = value;
-  else
-    return false;
-  return true;
+  return clearsky::set_atmosphere_parameter(a, name, value);
 }
 
 ModelConfig parse_config(Parameters& p, const ModelDescriptor& descriptor) {
@@ -114,20 +90,7 @@ ModelConfig parse_config(Parameters& p, const ModelDescriptor& descriptor) {
 void validate_model_config(const ModelDescriptor& descriptor, const ModelConfig& config) {
   try {
     validate_config(descriptor, config);
-  } catch (const InvalidInput& e) {
-    throw from_invalid_input(e);
   } catch (const std::invalid_argument& e) {
-    // A check that does not name its field yet: the option at fault is the one refused when
-    // validated alone (the atmosphere passed above, as it is checked first).
-    for (const auto& [name, value] : config.options) {
-      ModelConfig alone;
-      alone.options[name] = value;
-      try {
-        validate_config(descriptor, alone);
-      } catch (const std::invalid_argument&) {
-        throw ApiError(400, "invalid_parameter", name, e.what());
-      }
-    }
     throw from_invalid_argument(e);
   }
 }

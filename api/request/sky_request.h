@@ -48,9 +48,8 @@ Viewpoint parse_viewpoint(Parameters& p);
 // The model's configuration with the request's overrides of the parameters its descriptor
 // lists (400 naming the parameter for a value out of range).
 ModelConfig parse_config(Parameters& p, const ModelDescriptor& descriptor);
-// validate_config (models/core/sky_model.h) with its refusals as a 400 naming the request
-// parameter: an InvalidInput by its field, an option's plain std::invalid_argument by the option
-// that fails when validated alone, anything else as "model".
+// validate_config (models/core/sky_model.h) with its refusals (clearsky::InvalidInput) as a 400
+// naming the request parameter (from_invalid_argument).
 void validate_model_config(const ModelDescriptor& descriptor, const ModelConfig& config);
 // wavelengths: "400,500,600" or "start:stop:step" (stop included within rounding); absent:
 // nullopt.

@@ -1,21 +1,27 @@
 // The atmosphere every physically based model shares (paper section "Model parameters";
-// docs/architecture.md "The atmosphere"), as one parameter set with the study's values as defaults.
+// docs/architecture.md "The atmosphere"), as one parameter set with the study's values as
+// defaults. The parameters are declared once, in atmosphere_parameter_table.h
+// (docs/model-contract.md); this table restates them for the reader and is checked against it
+// by tests/models/atmosphere/atmosphere_parameter_table_test.cpp (names, members, units,
+// defaults, ranges).
 //
-// | name                         | unit | default | valid range     | meaning                                  |
-// |------------------------------|------|---------|-----------------|------------------------------------------|
-// | earth_radius_m               | m    | 6360e3  | (0, inf)        | ground sphere                            |
-// | top_radius_m                 | m    | 6420e3  | > earth radius  | top of the atmosphere                    |
-// | rayleigh_scale_height_m      | m    | 8000    | (0, 1e5]        | air density exp(-h/H)                    |
-// | mie_scale_height_m           | m    | 1200    | (0, 1e5]        | aerosol density exp(-h/H)                |
-// | rayleigh_temperature_celsius | C    | 15      | [-100, 100]     | Penndorf 0 C table x 273.16/(273+T)       |
-// | angstrom_alpha               | -    | 0.8     | [0, 4]          | aerosol optical depth beta lambda_um^-alpha |
-// | angstrom_beta                | -    | 0.04    | [0, 2]          | aerosol optical depth at 1 um            |
-// | mie_single_scattering_albedo | -    | 0.8     | [0, 1]          | aerosol scattering / extinction          |
-// | mie_phase_g                  | -    | 0.7     | (-1, 1)         | Cornette-Shanks asymmetry                |
-// | turbidity                    | -    | 2.53    | [1, 10]         | Linke-style turbidity (Preetham, Hosek)  |
-// | ground_albedo                | -    | grass   | [0, 1] or grass | Lambertian ground reflectance            |
+// | name                         | member                       | unit | default | range           | meaning                                     |
+// |------------------------------|------------------------------|------|---------|-----------------|---------------------------------------------|
+// | earth_radius_m               | earth_radius_m               | m    | 6360e3  | (0, inf)        | ground sphere                               |
+// | top_radius_m                 | top_radius_m                 | m    | 6420e3  | (0, inf)        | top of the atmosphere, > earth_radius_m     |
+// | rayleigh_scale_height_m      | rayleigh_scale_height_m      | m    | 8000    | (0, 1e5]        | air density exp(-h/H)                       |
+// | mie_scale_height_m           | mie_scale_height_m           | m    | 1200    | (0, 1e5]        | aerosol density exp(-h/H)                   |
+// | rayleigh_temperature_celsius | rayleigh_temperature_celsius | C    | 15      | [-100, 100]     | Penndorf 0 C table x 273.16/(273.16+T)      |
+// | alpha                        | angstrom_alpha               | -    | 0.8     | [0, 4]          | aerosol optical depth beta lambda_um^-alpha |
+// | beta                         | angstrom_beta                | -    | 0.04    | [0, 2]          | aerosol optical depth at 1 um               |
+// | mie_single_scattering_albedo | mie_single_scattering_albedo | -    | 0.8     | [0, 1]          | aerosol scattering / extinction             |
+// | g                            | mie_phase_g                  | -    | 0.7     | [-0.999, 0.999] | Cornette-Shanks asymmetry                   |
+// | turbidity                    | turbidity                    | -    | 2.53    | [1, 10]         | Linke-style turbidity (Preetham, Hosek)     |
+// | albedo                       | ground_albedo                | -    | grass   | [0, 1]          | Lambertian ground reflectance               |
 //
-// Value type; thread-safe. validate() is written so that NaN fails it.
+// "name" is the name in requests and in InvalidInput::field(). A model may narrow a range in
+// its descriptor (Preetham: turbidity in [2, 10]). Value type; thread-safe. validate() is
+// written so that NaN fails it.
 #pragma once
 
 #include <optional>
@@ -24,16 +30,19 @@
 namespace clearsky {
 
 struct AtmosphereParameters {
-  double earth_radius_m = 6360e3;
-  double top_radius_m = 6420e3;
-  double rayleigh_scale_height_m = 8000.0;
-  double mie_scale_height_m = 1200.0;
-  double rayleigh_temperature_celsius = 15.0;
-  double angstrom_alpha = 0.8;
-  double angstrom_beta = 0.04;
-  double mie_single_scattering_albedo = 0.8;
-  double mie_phase_g = 0.7;
-  double turbidity = 2.53;
+  // The defaults of atmosphere_parameter_table.h.
+  AtmosphereParameters();
+
+  double earth_radius_m;
+  double top_radius_m;
+  double rayleigh_scale_height_m;
+  double mie_scale_height_m;
+  double rayleigh_temperature_celsius;
+  double angstrom_alpha;
+  double angstrom_beta;
+  double mie_single_scattering_albedo;
+  double mie_phase_g;
+  double turbidity;
   // Empty: the spectral albedo of grass (Feister and Grewe 1995); otherwise a constant.
   std::optional<double> ground_albedo;
 

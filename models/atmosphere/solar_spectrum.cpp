@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "models/core/invalid_input.h"
 #include "models/spectral/reference_spectra.h"
 
 namespace clearsky {
@@ -16,8 +17,9 @@ namespace {
 double mean_of_rows(double lo_nm, double hi_nm) {
   const auto& astm = ReferenceSpectra::get().astm_g173_extraterrestrial;
   if (lo_nm < astm.min_nm() || hi_nm > astm.max_nm() + 5.0) {
-    throw std::out_of_range("solar spectrum: [" + std::to_string(lo_nm) + ", " +
-                            std::to_string(hi_nm) + "] nm is outside ASTM G-173 (280..4000 nm)");
+    throw InvalidInput("wavelengths", "the solar spectrum over [" + std::to_string(lo_nm) + ", " +
+                                          std::to_string(hi_nm) +
+                                          "] nm is outside ASTM G-173 (280..4000 nm)");
   }
   const auto& nm = astm.wavelengths_nm();
   const auto first = std::lower_bound(nm.begin(), nm.end(), lo_nm);

@@ -14,7 +14,12 @@ namespace clearsky {
 
 inline constexpr double kPointSolarWindowNm = 11.75;
 
-// Throws std::out_of_range for wavelengths outside ASTM G-173 (280..4000 nm).
+// The point wavelengths whose window lies within the ASTM G-173 rows (280..4000 nm, the last
+// row's 5 nm step included): the spectral range of every model built on AtmosphereSpectra.
+inline constexpr double kSolarSpectrumMinNm = 280.0 + 0.5 * kPointSolarWindowNm;
+inline constexpr double kSolarSpectrumMaxNm = 4005.0 - 0.5 * kPointSolarWindowNm;
+
+// Throws InvalidInput("wavelengths", ...) for a wavelength whose window leaves ASTM G-173.
 double solar_spectrum_at_point_nm(double wavelength_nm);
 Spectrum solar_irradiance_on(const WavelengthGrid& grid);
 

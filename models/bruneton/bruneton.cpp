@@ -7,8 +7,11 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "models/atmosphere/atmosphere_parameter_table.h"
 #include "models/atmosphere/phase_functions.h"
+#include "models/atmosphere/solar_spectrum.h"
 #include "models/core/content_hash.h"
+#include "models/core/invalid_input.h"
 #include "models/core/ray_sphere.h"
 
 namespace clearsky {
@@ -20,34 +23,10 @@ using bruneton::ScratchRow;
 // Bumped whenever the numbers of the tables change (part of every cache key).
 constexpr const char* kTablesVersion = "1";
 
-ParameterSpec integer_option(std::string name, std::string description, double value, double min,
-                             double max) {
-  ParameterSpec p;
-  p.name = std::move(name);
-  p.description = std::move(description);
-  p.default_value = value;
-  p.min_value = min;
-  p.max_value = max;
-  p.integer = true;
-  return p;
-}
-
 // The 2008 code's range: mu_s clamped to -0.1975 before lookup (101.39 degrees). A function,
 // not a constant, so that descriptors built during static initialisation see its value.
 double default_max_sun_zenith_deg() {
   return radians_to_degrees(bruneton::SunRange::legacy().max_sun_zenith_rad());
-}
-
-ParameterSpec atmosphere_parameter(std::string name, std::string description, double value,
-                                   double min, double max) {
-  ParameterSpec p;
-  p.name = std::move(name);
-  p.description = std::move(description);
-  p.default_value = value;
-  p.min_value = min;
-  p.max_value = max;
-  p.atmosphere = true;
-  return p;
 }
 
 // float rows of a spectrum, padded to the tables' stride.
@@ -77,76 +56,90 @@ bool enter_atmosphere(const bruneton::ShellGeometry& g, double& r, double& mu, d
 }  // namespace
 
 const ModelDescriptor& bruneton_descriptor() {
-  static const ModelDescriptor d = [] {
-    ModelDescriptor m;
-    m.id = "bruneton";
-    m.name = "Bruneton 2008";
-    m.version = kTablesVersion;
-    m.citation =
-        "E. Bruneton and F. Neyret, Precomputed Atmospheric Scattering, Computer Graphics Forum "
-        "27(4) "
-        "(EGSR 2008), 1079-1086";
-    m.summary =
-        "All orders of scattering precomputed by the method of Bruneton and Neyret 2008 into 4D "
-        "tables over "
-        "altitude, view zenith, sun zenith and view-sun angle (32 x 128 x 32 x 8), with 2D "
-        "transmittance (256 x 64) "
-        "and ground irradiance (64 x 16) tables; 4 scattering orders, single scattering stored as "
-        "separate Rayleigh "
-        "and Mie tables without phase function, orders 2..4 summed, grass albedo in the multiple "
-        "scattering and "
-        "the irradiance, as the 2016 study ran it on 40 wavelengths (the original used 3). O(1) "
-        "queries from the "
-        "ground to space, aerial perspective, sun up to 101.39 degrees zenith (up to 120 with "
-        "the option max_sun_zenith_deg, which widens the tables' sun axis).";
-    m.parameters = {
-        integer_option("scattering_orders",
-                       "orders of scattering precomputed (1: single scattering)", 4, 1, 10),
-        integer_option("table_r_size", "4D tables: number of altitudes (RES_R)", 32, 2, 128),
-        integer_option("table_mu_size", "4D tables: number of view zenith cosines (RES_MU, even)",
-                       128, 4, 512),
-        integer_option("table_mu_s_size", "4D tables: number of sun zenith cosines (RES_MU_S)", 32,
-                       2, 128),
-        integer_option("table_nu_size", "4D tables: number of view-sun angle cosines (RES_NU)", 8,
-                       2, 64),
-        [] {
-          ParameterSpec p;
-          p.name = "max_sun_zenith_deg";
-          p.unit = "deg";
-          p.description =
-              "largest sun zenith angle the tables cover; the default (acos(-0.1975)) is the "
-              "2008 code's sun mapping, any other value spreads the same number of sun texels "
-              "(table_mu_s_size) from the zenith to that angle";
-          p.default_value = default_max_sun_zenith_deg();
-          p.min_value = 95.0;
-          p.max_value = 120.0;
-          return p;
-        }(),
-        atmosphere_parameter("alpha", "Angstrom exponent of the aerosols", 0.8, 0.0, 4.0),
-        atmosphere_parameter("beta", "Angstrom turbidity (aerosol optical depth at 1 um)", 0.04,
-                             0.0, 2.0),
-        atmosphere_parameter("g", "Cornette-Shanks asymmetry of the aerosols", 0.7, -0.999, 0.999),
-        atmosphere_parameter("albedo", "Lambertian ground albedo (default: grass spectrum)", 0.0,
-                             0.0, 1.0),
-    };
-    m.capabilities.min_altitude_m = 0.0;
-    m.capabilities.max_altitude_m = 1e8;
-    m.capabilities.view_from_space = true;
-    m.capabilities.view_below_horizon = true;
-    m.capabilities.aerial_perspective = true;
-    m.capabilities.max_sun_zenith_deg = default_max_sun_zenith_deg();
-    m.capabilities.scattering_orders = 4;
-    m.capabilities.per_sun_precomputation = false;
-    return m;
-  }();
+  static const ModelDescriptor d{
+      .id = "bruneton",
+      .name = "Bruneton 2008",
+      .version = kTablesVersion,
+      .citation =
+          "E. Bruneton and F. Neyret, Precomputed Atmospheric Scattering, Computer "
+          "Graphics Forum 27(4) (EGSR 2008), 1079-1086",
+      .summary =
+          "All orders of scattering precomputed by the method of Bruneton and Neyret 2008 into "
+          "4D tables over altitude, view zenith, sun zenith and view-sun angle (32 x 128 x 32 x "
+          "8), with 2D transmittance (256 x 64) and ground irradiance (64 x 16) tables; 4 "
+          "scattering orders, single scattering stored as separate Rayleigh and Mie tables "
+          "without phase function, orders 2..4 summed, grass albedo in the multiple scattering "
+          "and the irradiance, as the 2016 study ran it on 40 wavelengths (the original used 3). "
+          "O(1) queries from the ground to space, aerial perspective, sun up to 101.39 degrees "
+          "zenith (up to 120 with the option max_sun_zenith_deg, which widens the tables' sun "
+          "axis).",
+      .min_wavelength_nm = kSolarSpectrumMinNm,
+      .max_wavelength_nm = kSolarSpectrumMaxNm,
+      .parameters =
+          {
+              {.name = "scattering_orders",
+               .description = "orders of scattering precomputed (1: single scattering)",
+               .default_value = 4,
+               .min_value = 1,
+               .max_value = 10,
+               .integer = true},
+              {.name = "table_r_size",
+               .description = "4D tables: number of altitudes (RES_R)",
+               .default_value = 32,
+               .min_value = 2,
+               .max_value = 128,
+               .integer = true},
+              {.name = "table_mu_size",
+               .description = "4D tables: number of view zenith cosines (RES_MU, even)",
+               .default_value = 128,
+               .min_value = 4,
+               .max_value = 512,
+               .integer = true},
+              {.name = "table_mu_s_size",
+               .description = "4D tables: number of sun zenith cosines (RES_MU_S)",
+               .default_value = 32,
+               .min_value = 2,
+               .max_value = 128,
+               .integer = true},
+              {.name = "table_nu_size",
+               .description = "4D tables: number of view-sun angle cosines (RES_NU)",
+               .default_value = 8,
+               .min_value = 2,
+               .max_value = 64,
+               .integer = true},
+              {.name = "max_sun_zenith_deg",
+               .unit = "deg",
+               .description =
+                   "largest sun zenith angle the tables cover; the default (acos(-0.1975)) is "
+                   "the 2008 code's sun mapping, any other value spreads the same number of sun "
+                   "texels (table_mu_s_size) from the zenith to that angle",
+               .default_value = default_max_sun_zenith_deg(),
+               .min_value = 95.0,
+               .max_value = 120.0},
+              atmosphere_parameter_spec("alpha"),
+              atmosphere_parameter_spec("beta"),
+              atmosphere_parameter_spec("g"),
+              atmosphere_parameter_spec("albedo"),
+          },
+      .capabilities =
+          {
+              .min_altitude_m = 0.0,
+              .max_altitude_m = 1e8,
+              .view_from_space = true,
+              .view_below_horizon = true,
+              .aerial_perspective = true,
+              .max_sun_zenith_deg = default_max_sun_zenith_deg(),
+              .scattering_orders = 4,
+              .per_sun_precomputation = false,
+              .sun_irradiance = true,
+              .sky_irradiance = true,
+          },
+  };
   return d;
 }
 
 ModelFactory bruneton_factory() {
-  return {&bruneton_descriptor(), [](const ModelConfig& config, const PrecomputeContext& context) {
-            return std::shared_ptr<const SkyModel>(
-                BrunetonModel::create(bruneton_descriptor(), config, context));
-          }};
+  return make_model_factory<&bruneton_descriptor, &BrunetonModel::build>();
 }
 
 bruneton::Resolution BrunetonModel::resolution(const ModelDescriptor& descriptor,
@@ -157,7 +150,7 @@ bruneton::Resolution BrunetonModel::resolution(const ModelDescriptor& descriptor
   res.mu = static_cast<int>(option_or_default(descriptor, config, "table_mu_size"));
   res.mu_s = static_cast<int>(option_or_default(descriptor, config, "table_mu_s_size"));
   res.nu = static_cast<int>(option_or_default(descriptor, config, "table_nu_size"));
-  if (res.mu % 2 != 0) throw std::invalid_argument("table_mu_size: must be even");
+  if (res.mu % 2 != 0) throw InvalidInput("table_mu_size", "must be even");
   const double max_sun_zenith_deg = option_or_default(descriptor, config, "max_sun_zenith_deg");
   // Within rounding of the default: the 2008 mapping, so that an explicit default shares its
   // tables.
@@ -190,8 +183,13 @@ std::string BrunetonModel::cache_key(const ModelConfig& config) {
 std::shared_ptr<const BrunetonModel> BrunetonModel::create(const ModelDescriptor& descriptor,
                                                            const ModelConfig& config,
                                                            const PrecomputeContext& context) {
-  validate_config(descriptor, config);
-  return std::shared_ptr<const BrunetonModel>(new BrunetonModel(descriptor, config, context));
+  return build(validated_config(descriptor, config), context);
+}
+
+std::shared_ptr<const BrunetonModel> BrunetonModel::build(const ValidatedConfig& config,
+                                                          const PrecomputeContext& context) {
+  return std::shared_ptr<const BrunetonModel>(
+      new BrunetonModel(config.descriptor(), config.config(), context));
 }
 
 BrunetonModel::BrunetonModel(const ModelDescriptor& descriptor, ModelConfig config,

@@ -3,15 +3,20 @@
 // of scattering precomputed into 4D tables over (r, mu, mu_s, nu), then O(1) queries from the
 // ground to space, with aerial perspective and the sun below the horizon.
 //
-// | parameter          | unit | default | range    | meaning                                  |
-// |--------------------|------|---------|----------|------------------------------------------|
-// | scattering_orders  | -    | 4       | 1..10    | orders of scattering precomputed         |
-// | table_r_size       | -    | 32      | 2..128   | 4D tables: altitudes (RES_R)             |
-// | table_mu_size      | -    | 128     | 4..512   | 4D tables: view zenith cosines (even)    |
-// | table_mu_s_size    | -    | 32      | 2..128   | 4D tables: sun zenith cosines (RES_MU_S) |
-// | table_nu_size      | -    | 8       | 2..64    | 4D tables: view-sun cosines (RES_NU)     |
-// | max_sun_zenith_deg | deg  | 101.39  | 95..120  | sun range of the 4D and irradiance tables|
-// plus the shared atmosphere (alpha, beta, g, albedo; AtmosphereParameters).
+// | parameter          | unit | default | range           | meaning                                                          |
+// |--------------------|------|---------|-----------------|------------------------------------------------------------------|
+// | scattering_orders  | -    | 4       | [1, 10]         | orders of scattering precomputed                                 |
+// | table_r_size       | -    | 32      | [2, 128]        | 4D tables: altitudes (RES_R)                                     |
+// | table_mu_size      | -    | 128     | [4, 512]        | 4D tables: view zenith cosines (RES_MU, even)                    |
+// | table_mu_s_size    | -    | 32      | [2, 128]        | 4D tables: sun zenith cosines (RES_MU_S)                         |
+// | table_nu_size      | -    | 8       | [2, 64]         | 4D tables: view-sun cosines (RES_NU)                             |
+// | max_sun_zenith_deg | deg  | 101.39  | [95, 120]       | sun range of the 4D and irradiance tables                        |
+// | alpha              | -    | 0.8     | [0, 4]          | Angstrom exponent of the aerosols (atmosphere)                   |
+// | beta               | -    | 0.04    | [0, 2]          | aerosol optical depth at 1 um (atmosphere)                       |
+// | g                  | -    | 0.7     | [-0.999, 0.999] | Cornette-Shanks asymmetry (atmosphere)                           |
+// | albedo             | -    | grass   | [0, 1]          | ground albedo; grass: Feister and Grewe, per lambda (atmosphere) |
+// (atmosphere): the shared parameters of models/atmosphere/atmosphere_parameter_table.h. This
+// table is checked against the descriptor by tests/models/contract/model_contract_test.cpp.
 //
 // Limits: by default the tables hold mu_s >= -0.1975 (the 2008 code), so the sun is answered up
 // to 101.39 degrees zenith; max_sun_zenith_deg (up to 120) spreads the same sun texels over a
@@ -27,18 +32,22 @@
 #include <string>
 
 #include "models/bruneton/bruneton_tables.h"
+#include "models/core/model_factory.h"
 #include "models/core/sky_model.h"
 
 namespace clearsky {
 
 class BrunetonModel : public SkyModel {
  public:
-  // Validates config against descriptor, then loads the tables from context.cache when a valid
-  // blob exists, else precomputes them (and stores them in the cache). Throws
-  // std::invalid_argument for an invalid config, PrecomputeCancelled when cancelled.
+  // Validates config against descriptor, then build(). Throws InvalidInput naming the
+  // parameter for an invalid config.
   static std::shared_ptr<const BrunetonModel> create(const ModelDescriptor& descriptor,
                                                      const ModelConfig& config,
                                                      const PrecomputeContext& context);
+  // Loads the tables from context.cache when a valid blob exists, else precomputes them (and
+  // stores them in the cache). Throws PrecomputeCancelled when cancelled.
+  static std::shared_ptr<const BrunetonModel> build(const ValidatedConfig& config,
+                                                    const PrecomputeContext& context);
 
   // The descriptor it was created with, its capabilities.max_sun_zenith_deg set to what the
   // tables cover (option max_sun_zenith_deg).

@@ -22,6 +22,7 @@
 #include <utility>
 
 #include "models/atmosphere/phase_functions.h"
+#include "models/core/invalid_input.h"
 #include "models/core/parallel.h"
 
 namespace clearsky::bruneton {
@@ -717,17 +718,24 @@ struct Builder {
 };
 
 void validate(const Resolution& res) {
-  auto require = [](bool ok, const char* what) {
-    if (!ok) throw std::invalid_argument(what);
+  // The 4D sizes and the orders are the model's options (bruneton.cpp); the others are fixed
+  // by the implementation and named by their Resolution member.
+  auto require = [](bool ok, const char* field, const char* reason) {
+    if (!ok) throw InvalidInput(field, reason);
   };
-  require(res.r >= 2 && res.mu >= 4 && res.mu % 2 == 0 && res.mu_s >= 2 && res.nu >= 2,
-          "resolution: 4D table sizes too small (r >= 2, mu >= 4 and even, mu_s >= 2, nu >= 2)");
-  require(res.transmittance_mu >= 2 && res.transmittance_r >= 2 && res.irradiance_mu_s >= 2 &&
-              res.irradiance_r >= 2,
-          "resolution: 2D table sizes too small");
-  require(res.transmittance_steps >= 1 && res.inscatter_steps >= 1 && res.sphere_samples >= 1 &&
-              res.irradiance_samples >= 2 && res.orders >= 1,
-          "resolution: sample counts too small");
+  require(res.r >= 2, "table_r_size", "must be >= 2");
+  require(res.mu >= 4 && res.mu % 2 == 0, "table_mu_size", "must be even and >= 4");
+  require(res.mu_s >= 2, "table_mu_s_size", "must be >= 2");
+  require(res.nu >= 2, "table_nu_size", "must be >= 2");
+  require(res.orders >= 1, "scattering_orders", "must be >= 1");
+  require(res.transmittance_mu >= 2, "transmittance_mu", "must be >= 2");
+  require(res.transmittance_r >= 2, "transmittance_r", "must be >= 2");
+  require(res.irradiance_mu_s >= 2, "irradiance_mu_s", "must be >= 2");
+  require(res.irradiance_r >= 2, "irradiance_r", "must be >= 2");
+  require(res.transmittance_steps >= 1, "transmittance_steps", "must be >= 1");
+  require(res.inscatter_steps >= 1, "inscatter_steps", "must be >= 1");
+  require(res.sphere_samples >= 1, "sphere_samples", "must be >= 1");
+  require(res.irradiance_samples >= 2, "irradiance_samples", "must be >= 2");
 }
 
 }  // namespace

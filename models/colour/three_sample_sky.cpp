@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "models/core/invalid_input.h"
+
 namespace clearsky {
 
 ThreeSampleSky::ThreeSampleSky(std::shared_ptr<const SkyModel> three_point_model,
@@ -11,12 +13,12 @@ ThreeSampleSky::ThreeSampleSky(std::shared_ptr<const SkyModel> three_point_model
     : SkyModel(std::move(target_config)), inner_(std::move(three_point_model)) {
   if (!inner_) throw std::invalid_argument("three-sample sky: no model");
   if (!(inner_->wavelengths() == method_.grid())) {
-    throw std::invalid_argument("three-sample sky: the model must be built on " +
-                                method_.grid().canonical_string());
+    throw InvalidInput("wavelengths", "the three-sample sky's model must be built on " +
+                                          method_.grid().canonical_string());
   }
   if (!(inner_->config().atmosphere == config().atmosphere)) {
-    throw std::invalid_argument(
-        "three-sample sky: the model and the target use different atmospheres");
+    throw InvalidInput("atmosphere",
+                       "the three-sample sky's model and target use different atmospheres");
   }
 }
 

@@ -1,6 +1,9 @@
 // What a model is and what it can answer, published as is by the API (docs/model-contract.md):
-// id, version, citation, spectral range, parameter table, capabilities.
-// A request outside the capabilities is refused before anything is computed.
+// id, version, citation, spectral range, parameter table, capabilities. A request outside the
+// capabilities is refused before anything is computed. Descriptors are written with designated
+// initializers; their atmosphere entries come from atmosphere_parameter_spec()
+// (models/atmosphere/atmosphere_parameter_table.h). Every member has a default initializer, so
+// that a designated initializer may leave any out.
 #pragma once
 
 #include <limits>
@@ -10,9 +13,9 @@
 namespace clearsky {
 
 struct ParameterSpec {
-  std::string name;  // as in requests, e.g. "turbidity"
-  std::string unit;  // "" for dimensionless
-  std::string description;
+  std::string name{};  // as in requests, e.g. "turbidity"
+  std::string unit{};  // "" for dimensionless
+  std::string description{};
   double default_value = 0;
   double min_value = 0;  // inclusive
   double max_value = 0;  // inclusive
@@ -36,16 +39,16 @@ struct ModelCapabilities {
 };
 
 struct ModelDescriptor {
-  std::string id;       // "bruneton"
-  std::string name;     // "Bruneton 2008"
-  std::string version;  // bumped when numbers change; part of every cache key
-  std::string citation;
-  std::string summary;                        // one paragraph: method and the 2016 study's choices
-  std::vector<double> native_wavelengths_nm;  // empty: any wavelength
-  double min_wavelength_nm = 0;               // answered spectral range
+  std::string id{};       // "bruneton"
+  std::string name{};     // "Bruneton 2008"
+  std::string version{};  // bumped when numbers change; part of every cache key
+  std::string citation{};
+  std::string summary{};  // one paragraph: method and the 2016 study's choices
+  std::vector<double> native_wavelengths_nm{};  // empty: any wavelength
+  double min_wavelength_nm = 0;                 // answered spectral range
   double max_wavelength_nm = std::numeric_limits<double>::infinity();
-  std::vector<ParameterSpec> parameters;
-  ModelCapabilities capabilities;
+  std::vector<ParameterSpec> parameters{};
+  ModelCapabilities capabilities{};
 
   const ParameterSpec* find_parameter(const std::string& parameter_name) const {
     for (const auto& p : parameters)

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "models/core/invalid_input.h"
 #include "models/core/quadrature.h"
 #include "models/core/sky_plane_quadrature.h"
 
@@ -71,7 +72,7 @@ std::shared_ptr<const SunState> SkyModel::prepare_sun(const SunPosition& sun,
                                                       const PrecomputeContext& context) const {
   const SampleStatus status = check_sun(sun);
   if (status != SampleStatus::ok) {
-    throw std::invalid_argument("sun_zenith: " + std::string(describe(status)));
+    throw InvalidInput("sun_zenith", std::string(describe(status)));
   }
   return compute_sun_state(sun, context);
 }
@@ -288,33 +289,6 @@ Spectrum SkyModel::sky_irradiance_by_quadrature(const SunState& sun, const Viewp
     for (std::size_t w = 0; w < irradiance.size(); ++w) irradiance[w] += weights[i] * l[w];
   }
   return irradiance;
-}
-
-void validate_config(const ModelDescriptor& descriptor, const ModelConfig& config) {
-  config.atmosphere.validate();
-  for (const auto& [name, value] : config.options) {
-    const ParameterSpec* spec = descriptor.find_parameter(name);
-    if (spec == nullptr) {
-      throw std::invalid_argument(name + ": not a parameter of model " + descriptor.id);
-    }
-    if (!(value >= spec->min_value && value <= spec->max_value)) {
-      std::ostringstream msg;
-      msg << name << ": must be in [" << spec->min_value << ", " << spec->max_value << "]";
-      throw std::invalid_argument(msg.str());
-    }
-    if (spec->integer && value != std::floor(value)) {
-      throw std::invalid_argument(name + ": must be an integer");
-    }
-  }
-}
-
-double option_or_default(const ModelDescriptor& descriptor, const ModelConfig& config,
-                         const std::string& name) {
-  if (auto it = config.options.find(name); it != config.options.end()) return it->second;
-  const ParameterSpec* spec = descriptor.find_parameter(name);
-  if (spec == nullptr)
-    throw std::logic_error("model " + descriptor.id + " has no parameter " + name);
-  return spec->default_value;
 }
 
 }  // namespace clearsky

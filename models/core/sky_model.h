@@ -170,17 +170,20 @@ class SkyModel {
   AtmosphereSpectra atmosphere_;
 };
 
-// How a model is made: its descriptor and its precomputation.
+// How a model is made: its descriptor and its precomputation. Made by make_model_factory()
+// (model_factory.h), which validates the configuration once per build.
 struct ModelFactory {
   const ModelDescriptor* descriptor = nullptr;
-  // Validates config against the descriptor (std::invalid_argument naming the parameter),
-  // then precomputes. May throw PrecomputeCancelled.
+  // Validates config against the descriptor (InvalidInput naming the parameter), then
+  // precomputes. May throw PrecomputeCancelled.
   std::shared_ptr<const SkyModel> (*create)(const ModelConfig& config,
                                             const PrecomputeContext& context) = nullptr;
 };
 
-// Checks config.options names and ranges and the atmosphere against the descriptor; throws
-// std::invalid_argument naming the first offending parameter.
+// Checks the atmosphere (AtmosphereParameters::validate, then the ranges of the atmosphere
+// parameters the descriptor lists) and config.options names and ranges against the
+// descriptor; throws InvalidInput (a std::invalid_argument) naming the first offending
+// parameter. Defined in model_factory.cpp; models call it through validated_config().
 void validate_config(const ModelDescriptor& descriptor, const ModelConfig& config);
 // The option value, or the descriptor's default.
 double option_or_default(const ModelDescriptor& descriptor, const ModelConfig& config,

@@ -4,105 +4,137 @@
 #include <cmath>
 #include <sstream>
 
+#include "models/atmosphere/atmosphere_parameter_table.h"
+#include "models/atmosphere/solar_spectrum.h"
+#include "models/core/invalid_input.h"
 #include "models/core/numeric.h"
 
 namespace clearsky::haber {
 
-const ModelDescriptor kDescriptor = [] {
-  ModelDescriptor d;
-  d.id = "haber";
-  d.name = "Haber 2005";
-  d.version = "1";
-  d.citation =
-      "J. Haber, M. Magnor, H.-P. Seidel. Physically-based simulation of twilight phenomena. "
-      "ACM Transactions on Graphics 24(4), 2005. As implemented in E. Bruneton, A Qualitative and "
-      "Quantitative Evaluation of 8 Clear Sky Models, IEEE TVCG 2016.";
-  d.summary =
-      "Multiple scattering on a spherical grid centred on the viewer (72 azimuths, 5-degree rings, "
-      "shells "
-      "growing by 1.09125 from 10 m), 50 layers of equal Rayleigh mass up to 35 km, 4 orders, "
-      "gathered on "
-      "every 4th shell and interpolated. Rayleigh isotropic at every order, Cornette-Shanks for "
-      "single-"
-      "scattered Mie only, no ground albedo, ozone or refraction. Precomputed per sun zenith into "
-      "a dome of "
-      "5 x 5 degree spectra read bilinearly.";
-  d.min_wavelength_nm = 0.0;
-  d.parameters = {
-      {"alpha", "", "Angstrom exponent of the aerosol optical depth", 0.8, 0.0, 4.0, false, true},
-      {"beta", "", "aerosol optical depth at 1 um", 0.04, 0.0, 2.0, false, true},
-      {"g", "", "Cornette-Shanks asymmetry of aerosol scattering", 0.7, -0.999, 0.999, false, true},
-      {"azimuth_sectors", "", "azimuth sectors n_phi (even); also sets ring width and shell growth",
-       72, 12, 144, true, false},
-      {"layers", "", "layers of equal Rayleigh mass up to 35 km", 50, 5, 200, true, false},
-      {"shell_stride", "", "multiple scattering gathered on every n-th shell, interpolated between",
-       4, 1, 16, true, false},
-      {"scattering_orders", "", "scattering orders (1: single scattering only)", 4, 1, 8, true,
-       false},
-      {"sun_zenith_bucket_deg", "deg",
-       "per-sun states are shared by suns within this zenith width (0: exact, the study: RMSE "
-       "14.796 instead of "
-       "14.770; each new state costs seconds)",
-       1.0, 0.0, 5.0, false, false},
-      {"sun_state_cache_size", "",
-       "per-sun states kept in memory (96: every 1-degree bucket of the day sky)", 96, 1, 1024,
-       true, false},
-  };
-  d.capabilities.min_altitude_m = 0.0;
-  d.capabilities.max_altitude_m = 0.0;
-  d.capabilities.view_from_space = false;
-  d.capabilities.view_below_horizon = false;
-  d.capabilities.aerial_perspective = false;
-  d.capabilities.max_sun_zenith_deg = 180.0;
-  d.capabilities.scattering_orders = 4;
-  d.capabilities.per_sun_precomputation = true;
-  d.capabilities.sun_irradiance = true;
-  d.capabilities.sky_irradiance = true;
-  return d;
-}();
-
 namespace {
 
-HaberSettings settings_from(const ModelConfig& config) {
-  HaberSettings s;
-  s.azimuth_sectors = static_cast<int>(option_or_default(kDescriptor, config, "azimuth_sectors"));
-  s.layer_count = static_cast<int>(option_or_default(kDescriptor, config, "layers"));
-  s.shell_stride = static_cast<int>(option_or_default(kDescriptor, config, "shell_stride"));
-  s.scattering_orders =
-      static_cast<int>(option_or_default(kDescriptor, config, "scattering_orders"));
-  return s;
+ModelDescriptor make_descriptor() {
+  return ModelDescriptor{
+      .id = "haber",
+      .name = "Haber 2005",
+      .version = "1",
+      .citation =
+          "J. Haber, M. Magnor, H.-P. Seidel. Physically-based simulation of twilight "
+          "phenomena. ACM Transactions on Graphics 24(4), 2005. As implemented in E. "
+          "Bruneton, A Qualitative and Quantitative Evaluation of 8 Clear Sky Models, "
+          "IEEE TVCG 2016.",
+      .summary =
+          "Multiple scattering on a spherical grid centred on the viewer (72 azimuths, 5-degree "
+          "rings, shells growing by 1.09125 from 10 m), 50 layers of equal Rayleigh mass up to "
+          "35 km, 4 orders, gathered on every 4th shell and interpolated. Rayleigh isotropic at "
+          "every order, Cornette-Shanks for single-scattered Mie only, no ground albedo, ozone "
+          "or refraction. Precomputed per sun zenith into a dome of 5 x 5 degree spectra read "
+          "bilinearly.",
+      .min_wavelength_nm = kSolarSpectrumMinNm,
+      .max_wavelength_nm = kSolarSpectrumMaxNm,
+      .parameters =
+          {
+              atmosphere_parameter_spec("alpha"),
+              atmosphere_parameter_spec("beta"),
+              atmosphere_parameter_spec("g"),
+              {.name = "azimuth_sectors",
+               .description = "azimuth sectors n_phi (even); also sets ring width and shell "
+                              "growth",
+               .default_value = 72,
+               .min_value = 12,
+               .max_value = 144,
+               .integer = true},
+              {.name = "layers",
+               .description = "layers of equal Rayleigh mass up to 35 km",
+               .default_value = 50,
+               .min_value = 5,
+               .max_value = 200,
+               .integer = true},
+              {.name = "shell_stride",
+               .description = "multiple scattering gathered on every n-th shell, interpolated "
+                              "between",
+               .default_value = 4,
+               .min_value = 1,
+               .max_value = 16,
+               .integer = true},
+              {.name = "scattering_orders",
+               .description = "scattering orders (1: single scattering only)",
+               .default_value = 4,
+               .min_value = 1,
+               .max_value = 8,
+               .integer = true},
+              {.name = "sun_zenith_bucket_deg",
+               .unit = "deg",
+               .description = "per-sun states are shared by suns within this zenith width (0: "
+                              "exact, the study: RMSE 14.796 instead of 14.770; each new state "
+                              "costs seconds)",
+               .default_value = 1.0,
+               .min_value = 0.0,
+               .max_value = 5.0},
+              {.name = "sun_state_cache_size",
+               .description = "per-sun states kept in memory (96: every 1-degree bucket of the "
+                              "day sky)",
+               .default_value = 96,
+               .min_value = 1,
+               .max_value = 1024,
+               .integer = true},
+          },
+      .capabilities =
+          {
+              .min_altitude_m = 0.0,
+              .max_altitude_m = 0.0,
+              .view_from_space = false,
+              .view_below_horizon = false,
+              .aerial_perspective = false,
+              .max_sun_zenith_deg = 180.0,
+              .scattering_orders = 4,
+              .per_sun_precomputation = true,
+              .sun_irradiance = true,
+              .sky_irradiance = true,
+          },
+  };
 }
 
-std::shared_ptr<const SkyModel> create_model(const ModelConfig& config,
-                                             const PrecomputeContext& context) {
-  return HaberModel::create(config, context);
+HaberSettings settings_from(const ValidatedConfig& config) {
+  HaberSettings s;
+  s.azimuth_sectors = config.integer_option("azimuth_sectors");
+  s.layer_count = config.integer_option("layers");
+  s.shell_stride = config.integer_option("shell_stride");
+  s.scattering_orders = config.integer_option("scattering_orders");
+  return s;
 }
 
 }  // namespace
 
-const ModelFactory kFactory{&kDescriptor, &create_model};
+const ModelDescriptor& model_descriptor() {
+  static const ModelDescriptor descriptor = make_descriptor();
+  return descriptor;
+}
+
+ModelFactory model_factory() { return make_model_factory<&model_descriptor, &HaberModel::build>(); }
 
 std::shared_ptr<const HaberModel> HaberModel::create(const ModelConfig& config,
                                                      const PrecomputeContext& context) {
-  validate_config(kDescriptor, config);
+  return build(validated_config(model_descriptor(), config), context);
+}
+
+std::shared_ptr<const HaberModel> HaberModel::build(const ValidatedConfig& config,
+                                                    const PrecomputeContext& context) {
   const HaberSettings settings = settings_from(config);
-  if (settings.azimuth_sectors % 2 != 0)
-    throw std::invalid_argument("azimuth_sectors: must be even");
+  if (settings.azimuth_sectors % 2 != 0) throw InvalidInput("azimuth_sectors", "must be even");
   context.check_cancelled();
   return std::shared_ptr<const HaberModel>(new HaberModel(config, settings));
 }
 
-HaberModel::HaberModel(ModelConfig config, const HaberSettings& settings)
-    : SkyModel(std::move(config)),
-      grid_(settings, this->config().atmosphere.earth_radius_m,
-            this->config().atmosphere.rayleigh_scale_height_m,
-            this->config().atmosphere.mie_scale_height_m),
-      bucket_width_rad_(degrees_to_radians(
-          option_or_default(kDescriptor, this->config(), "sun_zenith_bucket_deg"))),
-      cache_prefix_(kDescriptor.id + "/" + kDescriptor.version + "/" +
-                    this->config().canonical_string()),
-      cache_(std::make_unique<SunStateCache<HaberDome>>(static_cast<std::size_t>(
-          option_or_default(kDescriptor, this->config(), "sun_state_cache_size")))) {}
+HaberModel::HaberModel(const ValidatedConfig& validated, const HaberSettings& settings)
+    : SkyModel(validated.config()),
+      grid_(settings, config().atmosphere.earth_radius_m,
+            config().atmosphere.rayleigh_scale_height_m, config().atmosphere.mie_scale_height_m),
+      bucket_width_rad_(degrees_to_radians(validated.option("sun_zenith_bucket_deg"))),
+      cache_prefix_(model_descriptor().id + "/" + model_descriptor().version + "/" +
+                    config().canonical_string()),
+      cache_(std::make_unique<SunStateCache<HaberDome>>(
+          static_cast<std::size_t>(validated.integer_option("sun_state_cache_size")))) {}
 
 std::size_t HaberModel::table_bytes() const {
   return grid_.ring_cells().size() * sizeof(RingCell) + grid_.active().size() * sizeof(int);

@@ -2,26 +2,30 @@
 // phenomena") as the 2016 study implemented it: descriptor, parameters and the model object.
 // Ground views only; the sun may be below the horizon (the model was made for twilight).
 //
-// | option                 | unit | default | range     | meaning                                         |
-// |------------------------|------|---------|-----------|-------------------------------------------------|
-// | azimuth_sectors        | -    | 72      | [12, 144] | n_phi (even); also sets ring width and shells   |
-// | layers                 | -    | 50      | [5, 200]  | layers of equal Rayleigh mass up to 35 km       |
-// | shell_stride           | -    | 4       | [1, 16]   | multiple scattering gathered on every n-th shell|
-// | scattering_orders      | -    | 4       | [1, 8]    | 1: single scattering only                       |
-// | sun_zenith_bucket_deg  | deg  | 1       | [0, 5]    | per-sun states shared within this width (0: exact) |
-// | sun_state_cache_size   | -    | 96      | [1, 1024] | per-sun states kept                             |
+// | parameter             | unit | default | range           | meaning                                            |
+// |-----------------------|------|---------|-----------------|----------------------------------------------------|
+// | alpha                 | -    | 0.8     | [0, 4]          | Angstrom exponent of the aerosols (atmosphere)     |
+// | beta                  | -    | 0.04    | [0, 2]          | aerosol optical depth at 1 um (atmosphere)         |
+// | g                     | -    | 0.7     | [-0.999, 0.999] | Cornette-Shanks asymmetry (atmosphere)             |
+// | azimuth_sectors       | -    | 72      | [12, 144]       | n_phi (even); also sets ring width and shells      |
+// | layers                | -    | 50      | [5, 200]        | layers of equal Rayleigh mass up to 35 km          |
+// | shell_stride          | -    | 4       | [1, 16]         | multiple scattering gathered on every n-th shell   |
+// | scattering_orders     | -    | 4       | [1, 8]          | 1: single scattering only                          |
+// | sun_zenith_bucket_deg | deg  | 1       | [0, 5]          | per-sun states shared within this width (0: exact) |
+// | sun_state_cache_size  | -    | 96      | [1, 1024]       | per-sun states kept                                |
 #pragma once
 
 #include <memory>
 
+#include "models/core/model_factory.h"
 #include "models/core/sky_model.h"
 #include "models/core/sun_state_cache.h"
 #include "models/haber/haber_tables.h"
 
 namespace clearsky::haber {
 
-extern const ModelDescriptor kDescriptor;
-extern const ModelFactory kFactory;
+const ModelDescriptor& model_descriptor();
+ModelFactory model_factory();
 
 // The per-sun state: the sky dome of the sun's zenith bucket (shared with other suns of the
 // bucket) and the exact sun.
@@ -41,10 +45,13 @@ class HaberSunState final : public SunState {
 
 class HaberModel final : public SkyModel {
  public:
+  // Validates config (InvalidInput naming the parameter), then builds.
   static std::shared_ptr<const HaberModel> create(const ModelConfig& config,
                                                   const PrecomputeContext& context = {});
+  static std::shared_ptr<const HaberModel> build(const ValidatedConfig& config,
+                                                 const PrecomputeContext& context);
 
-  const ModelDescriptor& descriptor() const override { return kDescriptor; }
+  const ModelDescriptor& descriptor() const override { return model_descriptor(); }
   std::size_t table_bytes() const override;
   const HaberGrid& grid() const { return grid_; }
   SunStateCacheStats cache_stats() const { return cache_->stats(); }
@@ -58,7 +65,7 @@ class HaberModel final : public SkyModel {
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
 
  private:
-  HaberModel(ModelConfig config, const HaberSettings& settings);
+  HaberModel(const ValidatedConfig& validated, const HaberSettings& settings);
 
   HaberGrid grid_;
   double bucket_width_rad_;

@@ -9,6 +9,7 @@
 
 #include "models/atmosphere/phase_functions.h"
 #include "models/core/fast_exp_float.h"
+#include "models/core/invalid_input.h"
 #include "models/core/numeric.h"
 #include "models/core/parallel.h"
 
@@ -20,10 +21,11 @@ HaberGrid::HaberGrid(const HaberSettings& settings, double earth_radius_m,
       layers_(earth_radius_m, settings.top_height_m, settings.layer_count, rayleigh_scale_height_m,
               mie_scale_height_m),
       angular_step_rad_(2.0 * kPi / settings.azimuth_sectors) {
-  if (settings.azimuth_sectors < 8 || settings.azimuth_sectors % 2 != 0 ||
-      settings.shell_stride < 1 || settings.layer_count < 1 || settings.scattering_orders < 1) {
-    throw std::invalid_argument("haber: invalid grid settings");
-  }
+  if (settings.azimuth_sectors < 8 || settings.azimuth_sectors % 2 != 0)
+    throw InvalidInput("azimuth_sectors", "must be even and >= 8");
+  if (settings.shell_stride < 1) throw InvalidInput("shell_stride", "must be >= 1");
+  if (settings.layer_count < 1) throw InvalidInput("layers", "must be >= 1");
+  if (settings.scattering_orders < 1) throw InvalidInput("scattering_orders", "must be >= 1");
   const double n_phi = settings.azimuth_sectors;
   // Shells as thick as the cells are wide (Haber et al. 2005): r_{k+1} / r_k = (1 + pi/n) / (1 - pi/n).
   const double ratio = (1.0 + kPi / n_phi) / (1.0 - kPi / n_phi);
@@ -228,7 +230,7 @@ std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid,
                                             const PrecomputeContext& context) {
   const std::size_t n = atmosphere.grid.size();
   const int n_phi = grid.settings().azimuth_sectors;
-  if (n_phi > 256) throw std::invalid_argument("haber: at most 256 azimuth sectors");
+  if (n_phi > 256) throw InvalidInput("azimuth_sectors", "must be at most 256");
   const int sectors = grid.stored_sectors();
   const auto& cells = grid.ring_cells();
   const auto& layers = grid.layers();

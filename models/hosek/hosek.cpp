@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "models/atmosphere/atmosphere_parameter_table.h"
 #include "models/core/fit_domain.h"
 #include "models/core/quadrature.h"
 #include "models/spectral/reference_spectra.h"
@@ -14,66 +15,68 @@
 namespace clearsky {
 namespace {
 
+std::vector<double> band_wavelengths_nm() {
+  std::vector<double> nm;
+  for (int b = 0; b < hosek::kBandCount; ++b) nm.push_back(hosek::band_wavelength_nm(b));
+  return nm;
+}
+
 ModelDescriptor make_descriptor() {
-  ModelDescriptor d;
-  d.id = std::string("hosek");
-  d.name = std::string("Hosek-Wilkie 2012");
-  d.version = std::string("1");
-  d.citation = std::string(
-      "L. Hosek, A. Wilkie. An Analytic Model for Full Spectral Sky-Dome Radiance. ACM "
-      "Transactions on "
-      "Graphics 31(4) (SIGGRAPH 2012), article 95. Solar disc: L. Hosek, A. Wilkie. Adding a "
-      "Solar-Radiance "
-      "Function to the Hosek-Wilkie Skylight Model. IEEE Computer Graphics and Applications 33(3), "
-      "2013.");
-  d.summary = std::string(
-      "Analytic sky radiance fitted to path-traced skies: a 9-coefficient distribution per band "
-      "(11 bands, "
-      "320..720 nm every 40 nm), interpolated in turbidity, ground albedo and solar elevation. As "
-      "in the "
-      "2016 study: turbidity 2.53, ground albedo of grass per wavelength, bands interpolated "
-      "linearly at each "
-      "grid wavelength and the result rescaled to the study's extraterrestrial spectrum (ratio to "
-      "the fit's "
-      "solar radiance times 6.87e-5 sr). Sun irradiance from the fit's solar disc radiance with "
-      "limb "
-      "darkening. Ground views only, sun above the horizon.");
-  for (int b = 0; b < hosek::kBandCount; ++b)
-    d.native_wavelengths_nm.push_back(hosek::band_wavelength_nm(b));
-  d.min_wavelength_nm = hosek::kFirstBandNm;
-  d.max_wavelength_nm = hosek::kLastBandNm;
-  d.parameters = {
-      ParameterSpec{"turbidity", "", "atmospheric turbidity (the study: 2.53)", 2.53, 1.0, 10.0,
-                    false, true},
-      ParameterSpec{
-          "albedo", "",
-          "ground albedo, constant in [0, 1]; default 'grass': the spectral albedo of grass "
-          "(Feister and Grewe 1995) at each wavelength, as in the study",
-          0.0, 0.0, 1.0, false, true},
-      ParameterSpec{
-          "native_bands", "",
-          "1: cook the 11 fitted bands once each (albedo at the band's wavelength) and interpolate "
-          "their radiances; 0: the study's one state per grid wavelength",
-          0.0, 0.0, 1.0, true, false},
-      ParameterSpec{
-          kClampNegativeFitOption, "",
-          "1: where the fit turns negative (the sun within a few degrees of the horizon, views "
-          "near "
-          "the horizon) answer 0 there; 0: refuse those samples (status outside_fit_domain)",
-          0.0, 0.0, 1.0, true, false},
+  return ModelDescriptor{
+      .id = "hosek",
+      .name = "Hosek-Wilkie 2012",
+      .version = "1",
+      .citation =
+          "L. Hosek, A. Wilkie. An Analytic Model for Full Spectral Sky-Dome Radiance. "
+          "ACM Transactions on Graphics 31(4) (SIGGRAPH 2012), article 95. Solar disc: L. "
+          "Hosek, A. Wilkie. Adding a Solar-Radiance Function to the Hosek-Wilkie "
+          "Skylight Model. IEEE Computer Graphics and Applications 33(3), 2013.",
+      .summary =
+          "Analytic sky radiance fitted to path-traced skies: a 9-coefficient distribution per "
+          "band (11 bands, 320..720 nm every 40 nm), interpolated in turbidity, ground albedo and "
+          "solar elevation. As in the 2016 study: turbidity 2.53, ground albedo of grass per "
+          "wavelength, bands interpolated linearly at each grid wavelength and the result "
+          "rescaled to the study's extraterrestrial spectrum (ratio to the fit's solar radiance "
+          "times 6.87e-5 sr). Sun irradiance from the fit's solar disc radiance with limb "
+          "darkening. Ground views only, sun above the horizon.",
+      .native_wavelengths_nm = band_wavelengths_nm(),
+      .min_wavelength_nm = hosek::kFirstBandNm,
+      .max_wavelength_nm = hosek::kLastBandNm,
+      .parameters =
+          {
+              atmosphere_parameter_spec("turbidity"),
+              atmosphere_parameter_spec("albedo"),
+              {.name = "native_bands",
+               .description = "1: cook the 11 fitted bands once each (albedo at the band's "
+                              "wavelength) and interpolate their radiances; 0: the study's one "
+                              "state per grid wavelength",
+               .default_value = 0.0,
+               .min_value = 0.0,
+               .max_value = 1.0,
+               .integer = true},
+              {.name = kClampNegativeFitOption,
+               .description = "1: where the fit turns negative (the sun within a few degrees of "
+                              "the horizon, views near the horizon) answer 0 there; 0: refuse "
+                              "those samples (status outside_fit_domain)",
+               .default_value = 0.0,
+               .min_value = 0.0,
+               .max_value = 1.0,
+               .integer = true},
+          },
+      .capabilities =
+          {
+              .min_altitude_m = 0.0,
+              .max_altitude_m = 0.0,
+              .view_from_space = false,
+              .view_below_horizon = false,
+              .aerial_perspective = false,
+              .max_sun_zenith_deg = 90.0,
+              .scattering_orders = -1,
+              .per_sun_precomputation = false,
+              .sun_irradiance = true,
+              .sky_irradiance = true,
+          },
   };
-  ModelCapabilities& c = d.capabilities;
-  c.min_altitude_m = 0.0;
-  c.max_altitude_m = 0.0;
-  c.view_from_space = false;
-  c.view_below_horizon = false;
-  c.aerial_perspective = false;
-  c.max_sun_zenith_deg = 90.0;
-  c.scattering_orders = -1;
-  c.per_sun_precomputation = false;
-  c.sun_irradiance = true;
-  c.sky_irradiance = true;
-  return d;
 }
 
 // The cooked distributions of one sun position, stored coefficient by coefficient (one
@@ -119,23 +122,22 @@ const ModelDescriptor& hosek_descriptor() {
   return descriptor;
 }
 
-ModelFactory hosek_factory() { return ModelFactory{&hosek_descriptor(), &HosekModel::create}; }
+ModelFactory hosek_factory() { return make_model_factory<&hosek_descriptor, &HosekModel::build>(); }
 
-std::shared_ptr<const SkyModel> HosekModel::create(const ModelConfig& config,
-                                                   const PrecomputeContext&) {
-  validate_config(hosek_descriptor(), config);
-  const double t = config.atmosphere.turbidity;
-  const ParameterSpec& spec = *hosek_descriptor().find_parameter("turbidity");
-  if (!(t >= spec.min_value && t <= spec.max_value)) {
-    throw std::invalid_argument("turbidity: must be in [1, 10] for the hosek model");
-  }
-  return std::shared_ptr<const SkyModel>(new HosekModel(config));
+std::shared_ptr<const HosekModel> HosekModel::create(const ModelConfig& config,
+                                                     const PrecomputeContext& context) {
+  return build(validated_config(hosek_descriptor(), config), context);
 }
 
-HosekModel::HosekModel(const ModelConfig& config) : SkyModel(config) {
-  native_bands_ = option_or_default(hosek_descriptor(), config, "native_bands") != 0.0;
-  clamp_negative_fit_ =
-      option_or_default(hosek_descriptor(), config, kClampNegativeFitOption) != 0.0;
+std::shared_ptr<const HosekModel> HosekModel::build(const ValidatedConfig& config,
+                                                    const PrecomputeContext&) {
+  return std::shared_ptr<const HosekModel>(new HosekModel(config));
+}
+
+HosekModel::HosekModel(const ValidatedConfig& validated) : SkyModel(validated.config()) {
+  const ModelConfig& config = validated.config();
+  native_bands_ = validated.option("native_bands") != 0.0;
+  clamp_negative_fit_ = validated.option(kClampNegativeFitOption) != 0.0;
   const auto& tables = hosek::Tables::get();
   const auto& grass = ReferenceSpectra::get().grass_albedo;
   std::array<double, hosek::kBandCount> disc_solid_angle{};

@@ -1,13 +1,12 @@
 // The Hosek-Wilkie model (Hosek and Wilkie 2012; paper section "Hosek Model"): the fitted
 // spectral sky distribution with the study's choices (models/hosek/README.md).
 //
-// | parameter    | unit | default | range   | meaning                                            |
-// |--------------|------|---------|---------|----------------------------------------------------|
-// | turbidity    | -    | 2.53    | [1, 10] | atmospheric turbidity (shared atmosphere parameter) |
-// | albedo       | -    | grass   | [0, 1]  | ground albedo; grass: Feister and Grewe, per lambda |
-// | native_bands | -    | 0       | {0, 1}  | 1: evaluate the 11 fitted bands and interpolate     |
-// | clamp_negative_fit | - | 0   | {0, 1}  | 1: 0 where the fit turns negative; 0: refuse those |
-//                                            samples (outside_fit_domain, fit_domain.h)
+// | parameter          | unit | default | range   | meaning                                                                                       |
+// |--------------------|------|---------|---------|-----------------------------------------------------------------------------------------------|
+// | turbidity          | -    | 2.53    | [1, 10] | atmospheric turbidity (atmosphere)                                                            |
+// | albedo             | -    | grass   | [0, 1]  | ground albedo; grass: Feister and Grewe, per lambda (atmosphere)                              |
+// | native_bands       | -    | 0       | {0, 1}  | 1: evaluate the 11 fitted bands and interpolate                                               |
+// | clamp_negative_fit | -    | 0       | {0, 1}  | 1: 0 where the fit turns negative; 0: refuse those samples (outside_fit_domain, fit_domain.h) |
 //
 // Sky radiance at grid wavelength lambda (320..720 nm; other wavelengths are reported as out
 // of range): the authors' linear interpolation between the two fitted bands around lambda,
@@ -28,6 +27,7 @@
 #include <memory>
 #include <vector>
 
+#include "models/core/model_factory.h"
 #include "models/core/sky_model.h"
 #include "models/hosek/hosek_functions.h"
 
@@ -38,8 +38,11 @@ ModelFactory hosek_factory();
 
 class HosekModel final : public SkyModel {
  public:
-  static std::shared_ptr<const SkyModel> create(const ModelConfig& config,
-                                                const PrecomputeContext& context);
+  // Validates config (InvalidInput naming the parameter), then builds.
+  static std::shared_ptr<const HosekModel> create(const ModelConfig& config,
+                                                  const PrecomputeContext& context = {});
+  static std::shared_ptr<const HosekModel> build(const ValidatedConfig& config,
+                                                 const PrecomputeContext& context);
 
   const ModelDescriptor& descriptor() const override { return hosek_descriptor(); }
 
@@ -63,7 +66,7 @@ class HosekModel final : public SkyModel {
                              SpectralBatch& out) const override;
 
  private:
-  explicit HosekModel(const ModelConfig& config);
+  explicit HosekModel(const ValidatedConfig& validated);
   // The spectra of views above the horizon; a spectrum that turns negative is refused
   // (outside_fit_domain) or, with clamp_negative, clamped to 0.
   void fit_radiance(const SunState& sun, bool clamp_negative, std::span<const ViewDirection> views,

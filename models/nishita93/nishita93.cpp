@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "models/atmosphere/atmosphere_parameter_table.h"
+#include "models/atmosphere/solar_spectrum.h"
 #include "models/nishita93/nishita93_functions.h"
 
 namespace clearsky {
@@ -12,58 +14,63 @@ namespace clearsky {
 namespace {
 
 ModelDescriptor make_descriptor() {
-  ModelDescriptor d;
-  d.id = "nishita93";
-  d.name = "Nishita93";
-  d.version = "1";
-  d.citation =
-      "T. Nishita, T. Sirai, K. Tadamura, E. Nakamae. Display of the Earth Taking into Account "
-      "Atmospheric "
-      "Scattering. Proceedings of SIGGRAPH 1993, pages 175-182.";
-  d.summary =
-      "Single scattering integrated numerically along each view ray over its crossings with 64 "
-      "spheres of "
-      "equal Rayleigh optical depth (trapezoid rule), the observer-side transmittance accumulated "
-      "on the way "
-      "and the transmittance to the sun read bilinearly from 2D optical-length tables built at the "
-      "intersections of these spheres with 64 sun-aligned cylinders. Rayleigh and Cornette-Shanks "
-      "phase "
-      "functions; no multiple scattering, no ground reflection. As in the 2016 study: 64 spheres "
-      "and "
-      "cylinders, Rayleigh scattering plus Mie extinction as transmittance.";
-  d.parameters = {
-      ParameterSpec{"spheres", "", "number of spheres n_s (tables and view-ray samples)", 64, 4,
-                    1024, true, false},
-      ParameterSpec{"cylinders", "", "number of sun-aligned cylinders n_c of the tables", 64, 4,
-                    1024, true, false},
-      ParameterSpec{"study_viewer_sample", "",
-                    "1: start each view ray's trapezoid with 0 at the observer, as the study's "
-                    "code did (RMSE 26.49 "
-                    "instead of 25.38 on the 15 public captures)",
-                    0, 0, 1, true, false},
-      ParameterSpec{"alpha", "", "Angstrom exponent of the aerosol optical depth", 0.8, 0.0, 4.0,
-                    false, true},
-      ParameterSpec{"beta", "", "Angstrom turbidity (aerosol optical depth at 1 um)", 0.04, 0.0,
-                    2.0, false, true},
-      ParameterSpec{"g", "", "Cornette-Shanks asymmetry of the aerosol phase function", 0.7, -0.999,
-                    0.999, false, true},
+  return ModelDescriptor{
+      .id = "nishita93",
+      .name = "Nishita93",
+      .version = "1",
+      .citation =
+          "T. Nishita, T. Sirai, K. Tadamura, E. Nakamae. Display of the Earth Taking into "
+          "Account Atmospheric Scattering. Proceedings of SIGGRAPH 1993, pages 175-182.",
+      .summary =
+          "Single scattering integrated numerically along each view ray over its crossings with "
+          "64 spheres of equal Rayleigh optical depth (trapezoid rule), the observer-side "
+          "transmittance accumulated on the way and the transmittance to the sun read bilinearly "
+          "from 2D optical-length tables built at the intersections of these spheres with 64 "
+          "sun-aligned cylinders. Rayleigh and Cornette-Shanks phase functions; no multiple "
+          "scattering, no ground reflection. As in the 2016 study: 64 spheres and cylinders, "
+          "Rayleigh scattering plus Mie extinction as transmittance.",
+      .min_wavelength_nm = kSolarSpectrumMinNm,
+      .max_wavelength_nm = kSolarSpectrumMaxNm,
+      .parameters =
+          {
+              {.name = "spheres",
+               .description = "number of spheres n_s (tables and view-ray samples)",
+               .default_value = 64,
+               .min_value = 4,
+               .max_value = 1024,
+               .integer = true},
+              {.name = "cylinders",
+               .description = "number of sun-aligned cylinders n_c of the tables",
+               .default_value = 64,
+               .min_value = 4,
+               .max_value = 1024,
+               .integer = true},
+              {.name = "study_viewer_sample",
+               .description = "1: start each view ray's trapezoid with 0 at the observer, as the "
+                              "study's code did (RMSE 26.49 instead of 25.38 on the 15 public "
+                              "captures)",
+               .default_value = 0,
+               .min_value = 0,
+               .max_value = 1,
+               .integer = true},
+              atmosphere_parameter_spec("alpha"),
+              atmosphere_parameter_spec("beta"),
+              atmosphere_parameter_spec("g"),
+          },
+      .capabilities =
+          {
+              .min_altitude_m = 0.0,
+              .max_altitude_m = 1.0e8,  // far beyond the 60 km atmosphere: the whole Earth
+              .view_from_space = true,
+              .view_below_horizon = true,
+              .aerial_perspective = true,
+              .max_sun_zenith_deg = 180.0,
+              .scattering_orders = 1,
+              .per_sun_precomputation = false,
+              .sun_irradiance = true,
+              .sky_irradiance = true,
+          },
   };
-  ModelCapabilities& c = d.capabilities;
-  c.min_altitude_m = 0.0;
-  c.max_altitude_m = 1.0e8;  // far beyond the 60 km atmosphere: views of the whole Earth
-  c.view_from_space = true;
-  c.view_below_horizon = true;
-  c.aerial_perspective = true;
-  c.max_sun_zenith_deg = 180.0;
-  c.scattering_orders = 1;
-  c.per_sun_precomputation = false;
-  c.sun_irradiance = true;
-  c.sky_irradiance = true;
-  return d;
-}
-
-int integer_option(const ModelConfig& config, const char* name) {
-  return static_cast<int>(option_or_default(nishita93_descriptor(), config, name));
 }
 
 }  // namespace
@@ -73,19 +80,25 @@ const ModelDescriptor& nishita93_descriptor() {
   return descriptor;
 }
 
-ModelFactory nishita93_factory() { return {&nishita93_descriptor(), &Nishita93Model::create}; }
-
-std::shared_ptr<const SkyModel> Nishita93Model::create(const ModelConfig& config,
-                                                       const PrecomputeContext& context) {
-  validate_config(nishita93_descriptor(), config);
-  return std::shared_ptr<const SkyModel>(new Nishita93Model(config, context));
+ModelFactory nishita93_factory() {
+  return make_model_factory<&nishita93_descriptor, &Nishita93Model::build>();
 }
 
-Nishita93Model::Nishita93Model(const ModelConfig& config, const PrecomputeContext& context)
-    : SkyModel(config),
-      tables_(Nishita93Tables::build(config.atmosphere, integer_option(config, "spheres"),
-                                     integer_option(config, "cylinders"), context)),
-      study_viewer_sample_(integer_option(config, "study_viewer_sample") != 0) {}
+std::shared_ptr<const Nishita93Model> Nishita93Model::create(const ModelConfig& config,
+                                                             const PrecomputeContext& context) {
+  return build(validated_config(nishita93_descriptor(), config), context);
+}
+
+std::shared_ptr<const Nishita93Model> Nishita93Model::build(const ValidatedConfig& config,
+                                                            const PrecomputeContext& context) {
+  return std::shared_ptr<const Nishita93Model>(new Nishita93Model(config, context));
+}
+
+Nishita93Model::Nishita93Model(const ValidatedConfig& config, const PrecomputeContext& context)
+    : SkyModel(config.config()),
+      tables_(Nishita93Tables::build(config.config().atmosphere, config.integer_option("spheres"),
+                                     config.integer_option("cylinders"), context)),
+      study_viewer_sample_(config.integer_option("study_viewer_sample") != 0) {}
 
 void Nishita93Model::compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
                                           std::span<const ViewDirection> views,

@@ -4,12 +4,14 @@
 // Rayleigh optical depth, with the transmittance to the sun read from 2D tables built on those
 // spheres and 64 sun-aligned cylinders (nishita93_tables.h, nishita93_functions.h).
 //
-// | parameter | unit | default | range     | meaning                                         |
-// |-----------|------|---------|-----------|-------------------------------------------------|
-// | spheres   | -    | 64      | [4, 1024] | n_s, spheres of the tables and view-ray samples |
-// | cylinders | -    | 64      | [4, 1024] | n_c, cylinders of the tables                    |
-// | study_viewer_sample | - | 0 | {0, 1}  | 1: the study's zero integrand at the observer     |
-// | alpha, beta, g (atmosphere) | - | 0.8, 0.04, 0.7 | see AtmosphereParameters | aerosols  |
+// | parameter           | unit | default | range           | meaning                                         |
+// |---------------------|------|---------|-----------------|-------------------------------------------------|
+// | spheres             | -    | 64      | [4, 1024]       | n_s, spheres of the tables and view-ray samples |
+// | cylinders           | -    | 64      | [4, 1024]       | n_c, cylinders of the tables                    |
+// | study_viewer_sample | -    | 0       | {0, 1}          | 1: the study's zero integrand at the observer   |
+// | alpha               | -    | 0.8     | [0, 4]          | Angstrom exponent of the aerosols (atmosphere)  |
+// | beta                | -    | 0.04    | [0, 2]          | aerosol optical depth at 1 um (atmosphere)      |
+// | g                   | -    | 0.7     | [-0.999, 0.999] | Cornette-Shanks asymmetry (atmosphere)          |
 //
 // Capabilities: any observer altitude from the ground to far above the atmosphere, views in
 // every direction (the ground absorbs: rays that meet it carry only the light scattered
@@ -20,6 +22,7 @@
 
 #include <memory>
 
+#include "models/core/model_factory.h"
 #include "models/core/ray_scattering.h"
 #include "models/core/sky_model.h"
 #include "models/nishita93/nishita93_tables.h"
@@ -31,8 +34,11 @@ ModelFactory nishita93_factory();
 
 class Nishita93Model final : public SkyModel {
  public:
-  static std::shared_ptr<const SkyModel> create(const ModelConfig& config,
-                                                const PrecomputeContext& context);
+  // Validates config (InvalidInput naming the parameter), then builds.
+  static std::shared_ptr<const Nishita93Model> create(const ModelConfig& config,
+                                                      const PrecomputeContext& context = {});
+  static std::shared_ptr<const Nishita93Model> build(const ValidatedConfig& config,
+                                                     const PrecomputeContext& context);
 
   const ModelDescriptor& descriptor() const override { return nishita93_descriptor(); }
   std::size_t table_bytes() const override { return tables_.memory_bytes(); }
@@ -50,7 +56,7 @@ class Nishita93Model final : public SkyModel {
                                                 double distance_m) const override;
 
  private:
-  Nishita93Model(const ModelConfig& config, const PrecomputeContext& context);
+  Nishita93Model(const ValidatedConfig& config, const PrecomputeContext& context);
 
   Nishita93Tables tables_;
   bool study_viewer_sample_ = false;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "models/core/invalid_input.h"
 #include "models/core/numeric.h"
 #include "models/core/parallel.h"
 
@@ -35,7 +36,8 @@ double half_chord(double r, double c) { return safe_sqrt((r - c) * (r + c)); }
 Nishita93Tables Nishita93Tables::build(const AtmosphereParameters& atmosphere, int spheres,
                                        int cylinders, const PrecomputeContext& context) {
   atmosphere.validate();
-  if (spheres < 2 || cylinders < 2) throw std::invalid_argument("spheres, cylinders: must be >= 2");
+  if (spheres < 2) throw InvalidInput("spheres", "must be >= 2");
+  if (cylinders < 2) throw InvalidInput("cylinders", "must be >= 2");
   Nishita93Tables t;
   t.sphere_count_ = spheres;
   t.cylinder_count_ = cylinders;

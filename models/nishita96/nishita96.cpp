@@ -7,7 +7,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include "models/atmosphere/atmosphere_parameter_table.h"
+#include "models/atmosphere/solar_spectrum.h"
 #include "models/core/fast_exp.h"
+#include "models/core/invalid_input.h"
 #include "models/nishita93/nishita93_functions.h"
 
 namespace clearsky {
@@ -15,73 +18,92 @@ namespace clearsky {
 namespace {
 
 ModelDescriptor make_descriptor() {
-  ModelDescriptor d;
-  d.id = "nishita96";
-  d.name = "Nishita96";
-  d.version = "1";
-  d.citation =
-      "T. Nishita, Y. Dobashi, K. Kaneda, H. Yamashita. Display Method of the Sky Color Taking "
-      "into Account "
-      "Multiple Scattering. Pacific Graphics 1996, pages 117-132. As implemented in E. Bruneton, A "
-      "Qualitative "
-      "and Quantitative Evaluation of 8 Clear Sky Models, IEEE TVCG 2016 (nearest-direction "
-      "binning fixed).";
-  d.summary =
-      "Nishita93 single scattering plus double scattering: 8 sampling directions in the sun's "
-      "vertical plane "
-      "(zenith, nadir, horizontals, sun, anti-sun, sun +-90 degrees), each with a per-sun 33^3 "
-      "table of "
-      "single-scattered radiance (ground reflection included) on a box of +-875.7 km x +-875.7 km "
-      "x 60 km "
-      "sheared along the direction, computed incrementally along it; phase functions integrated "
-      "over 32 x 64 "
-      "directions binned to the nearest sampling direction; the paper's corrected "
-      "double-scattering equation; "
-      "orders >= 3 ignored. Views from inside the atmosphere, upwards.";
-  d.parameters = {
-      ParameterSpec{"spheres", "", "Nishita93 spheres n_s (tables and view-ray samples)", 64, 4,
-                    1024, true, false},
-      ParameterSpec{"cylinders", "", "Nishita93 sun-aligned cylinders n_c", 64, 4, 1024, true,
-                    false},
-      ParameterSpec{"study_viewer_sample", "",
-                    "1: start each view ray's single-scattering trapezoid with 0 at the observer, "
-                    "as the study's code",
-                    1, 0, 1, true, false},
-      ParameterSpec{"table_nodes", "",
-                    "nodes per axis of each sampling table (odd; 33 = the paper's 32^3 voxels)", 33,
-                    5, 65, true, false},
-      ParameterSpec{"phase_theta_cells", "",
-                    "theta cells of the phase-function integration (2x as many in phi)", 32, 4, 256,
-                    true, false},
-      ParameterSpec{"sun_zenith_bucket_deg", "deg",
-                    "per-sun tables are shared by suns within this zenith width (0: exact)", 0.0,
-                    0.0, 5.0, false, false},
-      ParameterSpec{"sun_state_cache_size", "",
-                    "per-sun table sets kept in memory (24 MB each at 33 nodes)", 8, 1, 256, true,
-                    false},
-      ParameterSpec{"alpha", "", "Angstrom exponent of the aerosol optical depth", 0.8, 0.0, 4.0,
-                    false, true},
-      ParameterSpec{"beta", "", "Angstrom turbidity (aerosol optical depth at 1 um)", 0.04, 0.0,
-                    2.0, false, true},
-      ParameterSpec{"g", "", "Cornette-Shanks asymmetry of the aerosol phase function", 0.7, -0.999,
-                    0.999, false, true},
+  return ModelDescriptor{
+      .id = "nishita96",
+      .name = "Nishita96",
+      .version = "1",
+      .citation =
+          "T. Nishita, Y. Dobashi, K. Kaneda, H. Yamashita. Display Method of the Sky "
+          "Color Taking into Account Multiple Scattering. Pacific Graphics 1996, pages "
+          "117-132. As implemented in E. Bruneton, A Qualitative and Quantitative "
+          "Evaluation of 8 Clear Sky Models, IEEE TVCG 2016 (nearest-direction binning "
+          "fixed).",
+      .summary =
+          "Nishita93 single scattering plus double scattering: 8 sampling directions in the "
+          "sun's vertical plane (zenith, nadir, horizontals, sun, anti-sun, sun +-90 degrees), "
+          "each with a per-sun 33^3 table of single-scattered radiance (ground reflection "
+          "included) on a box of +-875.7 km x +-875.7 km x 60 km sheared along the direction, "
+          "computed incrementally along it; phase functions integrated over 32 x 64 directions "
+          "binned to the nearest sampling direction; the paper's corrected double-scattering "
+          "equation; orders >= 3 ignored. Views from inside the atmosphere, upwards.",
+      .min_wavelength_nm = kSolarSpectrumMinNm,
+      .max_wavelength_nm = kSolarSpectrumMaxNm,
+      .parameters =
+          {
+              {.name = "spheres",
+               .description = "Nishita93 spheres n_s (tables and view-ray samples)",
+               .default_value = 64,
+               .min_value = 4,
+               .max_value = 1024,
+               .integer = true},
+              {.name = "cylinders",
+               .description = "Nishita93 sun-aligned cylinders n_c",
+               .default_value = 64,
+               .min_value = 4,
+               .max_value = 1024,
+               .integer = true},
+              {.name = "study_viewer_sample",
+               .description = "1: start each view ray's single-scattering trapezoid with 0 at "
+                              "the observer, as the study's code",
+               .default_value = 1,
+               .min_value = 0,
+               .max_value = 1,
+               .integer = true},
+              {.name = "table_nodes",
+               .description = "nodes per axis of each sampling table (odd; 33 = the paper's "
+                              "32^3 voxels)",
+               .default_value = 33,
+               .min_value = 5,
+               .max_value = 65,
+               .integer = true},
+              {.name = "phase_theta_cells",
+               .description = "theta cells of the phase-function integration (2x as many in "
+                              "phi)",
+               .default_value = 32,
+               .min_value = 4,
+               .max_value = 256,
+               .integer = true},
+              {.name = "sun_zenith_bucket_deg",
+               .unit = "deg",
+               .description =
+                   "per-sun tables are shared by suns within this zenith width (0: exact)",
+               .default_value = 0.0,
+               .min_value = 0.0,
+               .max_value = 5.0},
+              {.name = "sun_state_cache_size",
+               .description = "per-sun table sets kept in memory (24 MB each at 33 nodes)",
+               .default_value = 8,
+               .min_value = 1,
+               .max_value = 256,
+               .integer = true},
+              atmosphere_parameter_spec("alpha"),
+              atmosphere_parameter_spec("beta"),
+              atmosphere_parameter_spec("g"),
+          },
+      .capabilities =
+          {
+              .min_altitude_m = 0.0,
+              .max_altitude_m = 60e3,  // inside the default 60 km atmosphere
+              .view_from_space = false,
+              .view_below_horizon = false,
+              .aerial_perspective = false,
+              .max_sun_zenith_deg = 180.0,
+              .scattering_orders = 2,
+              .per_sun_precomputation = true,
+              .sun_irradiance = true,
+              .sky_irradiance = true,
+          },
   };
-  ModelCapabilities& c = d.capabilities;
-  c.min_altitude_m = 0.0;
-  c.max_altitude_m = 60e3;  // inside the default 60 km atmosphere
-  c.view_from_space = false;
-  c.view_below_horizon = false;
-  c.aerial_perspective = false;
-  c.max_sun_zenith_deg = 180.0;
-  c.scattering_orders = 2;
-  c.per_sun_precomputation = true;
-  c.sun_irradiance = true;
-  c.sky_irradiance = true;
-  return d;
-}
-
-int integer_option(const ModelConfig& config, const char* name) {
-  return static_cast<int>(option_or_default(nishita96_descriptor(), config, name));
 }
 
 // Everything that selects a per-sun table set besides the sun: model, version, configuration.
@@ -98,28 +120,34 @@ const ModelDescriptor& nishita96_descriptor() {
   return descriptor;
 }
 
-ModelFactory nishita96_factory() { return {&nishita96_descriptor(), &Nishita96Model::create}; }
-
-std::shared_ptr<const SkyModel> Nishita96Model::create(const ModelConfig& config,
-                                                       const PrecomputeContext& context) {
-  validate_config(nishita96_descriptor(), config);
-  if (integer_option(config, "table_nodes") % 2 == 0)
-    throw std::invalid_argument("table_nodes: must be odd");
-  return std::shared_ptr<const SkyModel>(new Nishita96Model(config, context));
+ModelFactory nishita96_factory() {
+  return make_model_factory<&nishita96_descriptor, &Nishita96Model::build>();
 }
 
-Nishita96Model::Nishita96Model(const ModelConfig& config, const PrecomputeContext& context)
-    : SkyModel(config),
-      optical_lengths_(Nishita93Tables::build(config.atmosphere, integer_option(config, "spheres"),
-                                              integer_option(config, "cylinders"), context)),
-      study_viewer_sample_(integer_option(config, "study_viewer_sample") != 0),
-      table_nodes_(integer_option(config, "table_nodes")),
-      phase_theta_cells_(integer_option(config, "phase_theta_cells")),
-      bucket_width_rad_(degrees_to_radians(
-          option_or_default(nishita96_descriptor(), config, "sun_zenith_bucket_deg"))),
+std::shared_ptr<const Nishita96Model> Nishita96Model::create(const ModelConfig& config,
+                                                             const PrecomputeContext& context) {
+  return build(validated_config(nishita96_descriptor(), config), context);
+}
+
+std::shared_ptr<const Nishita96Model> Nishita96Model::build(const ValidatedConfig& config,
+                                                            const PrecomputeContext& context) {
+  if (config.integer_option("table_nodes") % 2 == 0)
+    throw InvalidInput("table_nodes", "must be odd");
+  return std::shared_ptr<const Nishita96Model>(new Nishita96Model(config, context));
+}
+
+Nishita96Model::Nishita96Model(const ValidatedConfig& config, const PrecomputeContext& context)
+    : SkyModel(config.config()),
+      optical_lengths_(Nishita93Tables::build(this->config().atmosphere,
+                                              config.integer_option("spheres"),
+                                              config.integer_option("cylinders"), context)),
+      study_viewer_sample_(config.integer_option("study_viewer_sample") != 0),
+      table_nodes_(config.integer_option("table_nodes")),
+      phase_theta_cells_(config.integer_option("phase_theta_cells")),
+      bucket_width_rad_(degrees_to_radians(config.option("sun_zenith_bucket_deg"))),
       cache_prefix_(cache_prefix(this->config())),
       cache_(std::make_unique<SunStateCache<nishita96::SunTables>>(
-          static_cast<std::size_t>(integer_option(config, "sun_state_cache_size")))) {}
+          static_cast<std::size_t>(config.integer_option("sun_state_cache_size")))) {}
 
 std::shared_ptr<const SunState> Nishita96Model::compute_sun_state(
     const SunPosition& sun, const PrecomputeContext& context) const {

@@ -12,18 +12,23 @@
 // atmosphere, upwards (the double-scattering samples are the view ray's crossings of the
 // Nishita93 spheres above the observer).
 //
-// | option                | unit | default | range     | meaning                                          |
-// |-----------------------|------|---------|-----------|--------------------------------------------------|
-// | spheres, cylinders    | -    | 64, 64  | [4, 1024] | Nishita93 tables and view-ray samples            |
-// | study_viewer_sample   | -    | 1       | {0, 1}    | the study's zero integrand at the observer       |
-// | table_nodes           | -    | 33      | odd [5, 65] | nodes per axis of each sampling table (32^3 voxels) |
-// | phase_theta_cells     | -    | 32      | [4, 256]  | theta cells of the phase integration (x 2 in phi)|
-// | sun_zenith_bucket_deg | deg  | 0       | [0, 5]    | per-sun tables shared within this width (0: exact) |
-// | sun_state_cache_size  | -    | 8       | [1, 256]  | per-sun table sets kept (24 MB each at 33 nodes) |
+// | parameter             | unit | default | range           | meaning                                                  |
+// |-----------------------|------|---------|-----------------|----------------------------------------------------------|
+// | spheres               | -    | 64      | [4, 1024]       | Nishita93 spheres (tables and view-ray samples)          |
+// | cylinders             | -    | 64      | [4, 1024]       | Nishita93 sun-aligned cylinders                          |
+// | study_viewer_sample   | -    | 1       | {0, 1}          | the study's zero integrand at the observer               |
+// | table_nodes           | -    | 33      | [5, 65]         | odd; nodes per axis of each sampling table (32^3 voxels) |
+// | phase_theta_cells     | -    | 32      | [4, 256]        | theta cells of the phase integration (x 2 in phi)        |
+// | sun_zenith_bucket_deg | deg  | 0       | [0, 5]          | per-sun tables shared within this width (0: exact)       |
+// | sun_state_cache_size  | -    | 8       | [1, 256]        | per-sun table sets kept (24 MB each at 33 nodes)         |
+// | alpha                 | -    | 0.8     | [0, 4]          | Angstrom exponent of the aerosols (atmosphere)           |
+// | beta                  | -    | 0.04    | [0, 2]          | aerosol optical depth at 1 um (atmosphere)               |
+// | g                     | -    | 0.7     | [-0.999, 0.999] | Cornette-Shanks asymmetry (atmosphere)                   |
 #pragma once
 
 #include <memory>
 
+#include "models/core/model_factory.h"
 #include "models/core/sky_model.h"
 #include "models/core/sun_state_cache.h"
 #include "models/nishita93/nishita93_tables.h"
@@ -52,8 +57,11 @@ enum class Nishita96Orders { single_and_double, single_only, double_only };
 
 class Nishita96Model final : public SkyModel {
  public:
-  static std::shared_ptr<const SkyModel> create(const ModelConfig& config,
-                                                const PrecomputeContext& context);
+  // Validates config (InvalidInput naming the parameter), then builds.
+  static std::shared_ptr<const Nishita96Model> create(const ModelConfig& config,
+                                                      const PrecomputeContext& context = {});
+  static std::shared_ptr<const Nishita96Model> build(const ValidatedConfig& config,
+                                                     const PrecomputeContext& context);
 
   const ModelDescriptor& descriptor() const override { return nishita96_descriptor(); }
   std::size_t table_bytes() const override { return optical_lengths_.memory_bytes(); }
@@ -75,7 +83,7 @@ class Nishita96Model final : public SkyModel {
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
 
  private:
-  Nishita96Model(const ModelConfig& config, const PrecomputeContext& context);
+  Nishita96Model(const ValidatedConfig& config, const PrecomputeContext& context);
 
   Nishita93Tables optical_lengths_;
   bool study_viewer_sample_;

@@ -7,6 +7,7 @@
 
 #include "models/atmosphere/phase_functions.h"
 #include "models/core/fast_exp.h"
+#include "models/core/invalid_input.h"
 #include "models/core/numeric.h"
 #include "models/core/parallel.h"
 #include "models/nishita93/nishita93_functions.h"
@@ -27,8 +28,7 @@ SamplingTable::SamplingTable(double angle_rad, double earth_radius_m, double top
       stored_rows_(nodes / 2 + 1),
       wavelengths_(wavelengths),
       values_(static_cast<std::size_t>(nodes) * (nodes / 2 + 1) * nodes * wavelengths, 0.0f) {
-  if (nodes < 3 || nodes % 2 == 0)
-    throw std::invalid_argument("nishita96: table nodes must be odd and >= 3");
+  if (nodes < 3 || nodes % 2 == 0) throw InvalidInput("table_nodes", "must be odd and >= 3");
 }
 
 Vec3 SamplingTable::node_position(int i, int j, int k) const {

@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include "models/atmosphere/atmosphere_parameter_table.h"
+#include "models/atmosphere/solar_spectrum.h"
 #include "models/oneal/oneal_functions.h"
 
 namespace clearsky {
@@ -12,47 +14,49 @@ namespace clearsky {
 namespace {
 
 ModelDescriptor make_descriptor() {
-  ModelDescriptor d;
-  d.id = "oneal";
-  d.name = "O'Neal";
-  d.version = "1";
-  d.citation =
-      "S. O'Neil. Accurate Atmospheric Scattering. In GPU Gems 2, chapter 16, pages 253-268. "
-      "Addison-Wesley, "
-      "2005.";
-  d.summary =
-      "Single scattering by numerical integration along each view ray with a few midpoint samples, "
-      "every "
-      "transmittance from an analytic approximation of the Chapman function instead of a table. As "
-      "in the "
-      "2016 study: 4 samples (2 in O'Neil's code), separate Rayleigh and Mie scale heights, the "
-      "Rayleigh phase "
-      "function, Cornette-Shanks for aerosols, and Schuler's (2012) approximation H c / (c mu + "
-      "1), "
-      "c = sqrt(R / H), instead of O'Neil's fit to his own atmosphere. No multiple scattering, no "
-      "ground "
-      "reflection.";
-  d.parameters = {
-      ParameterSpec{"samples", "", "midpoint samples per view ray", 4, 1, 1024, true, false},
-      ParameterSpec{"alpha", "", "Angstrom exponent of the aerosol optical depth", 0.8, 0.0, 4.0,
-                    false, true},
-      ParameterSpec{"beta", "", "Angstrom turbidity (aerosol optical depth at 1 um)", 0.04, 0.0,
-                    2.0, false, true},
-      ParameterSpec{"g", "", "Cornette-Shanks asymmetry of the aerosol phase function", 0.7, -0.999,
-                    0.999, false, true},
+  return ModelDescriptor{
+      .id = "oneal",
+      .name = "O'Neal",
+      .version = "1",
+      .citation =
+          "S. O'Neil. Accurate Atmospheric Scattering. In GPU Gems 2, chapter 16, pages "
+          "253-268. Addison-Wesley, 2005.",
+      .summary =
+          "Single scattering by numerical integration along each view ray with a few midpoint "
+          "samples, every transmittance from an analytic approximation of the Chapman function "
+          "instead of a table. As in the 2016 study: 4 samples (2 in O'Neil's code), separate "
+          "Rayleigh and Mie scale heights, the Rayleigh phase function, Cornette-Shanks for "
+          "aerosols, and Schuler's (2012) approximation H c / (c mu + 1), c = sqrt(R / H), "
+          "instead of O'Neil's fit to his own atmosphere. No multiple scattering, no ground "
+          "reflection.",
+      .min_wavelength_nm = kSolarSpectrumMinNm,
+      .max_wavelength_nm = kSolarSpectrumMaxNm,
+      .parameters =
+          {
+              {.name = "samples",
+               .description = "midpoint samples per view ray",
+               .default_value = 4,
+               .min_value = 1,
+               .max_value = 1024,
+               .integer = true},
+              atmosphere_parameter_spec("alpha"),
+              atmosphere_parameter_spec("beta"),
+              atmosphere_parameter_spec("g"),
+          },
+      .capabilities =
+          {
+              .min_altitude_m = 0.0,
+              .max_altitude_m = 1.0e8,
+              .view_from_space = true,
+              .view_below_horizon = true,
+              .aerial_perspective = true,
+              .max_sun_zenith_deg = 180.0,
+              .scattering_orders = 1,
+              .per_sun_precomputation = false,
+              .sun_irradiance = true,
+              .sky_irradiance = true,
+          },
   };
-  ModelCapabilities& c = d.capabilities;
-  c.min_altitude_m = 0.0;
-  c.max_altitude_m = 1.0e8;
-  c.view_from_space = true;
-  c.view_below_horizon = true;
-  c.aerial_perspective = true;
-  c.max_sun_zenith_deg = 180.0;
-  c.scattering_orders = 1;
-  c.per_sun_precomputation = false;
-  c.sun_irradiance = true;
-  c.sky_irradiance = true;
-  return d;
 }
 
 }  // namespace
@@ -62,17 +66,20 @@ const ModelDescriptor& oneal_descriptor() {
   return descriptor;
 }
 
-ModelFactory oneal_factory() { return {&oneal_descriptor(), &ONealModel::create}; }
+ModelFactory oneal_factory() { return make_model_factory<&oneal_descriptor, &ONealModel::build>(); }
 
-std::shared_ptr<const SkyModel> ONealModel::create(const ModelConfig& config,
-                                                   const PrecomputeContext&) {
-  validate_config(oneal_descriptor(), config);
-  return std::shared_ptr<const SkyModel>(new ONealModel(config));
+std::shared_ptr<const ONealModel> ONealModel::create(const ModelConfig& config,
+                                                     const PrecomputeContext& context) {
+  return build(validated_config(oneal_descriptor(), config), context);
 }
 
-ONealModel::ONealModel(const ModelConfig& config)
-    : SkyModel(config),
-      samples_(static_cast<int>(option_or_default(oneal_descriptor(), config, "samples"))) {}
+std::shared_ptr<const ONealModel> ONealModel::build(const ValidatedConfig& config,
+                                                    const PrecomputeContext&) {
+  return std::shared_ptr<const ONealModel>(new ONealModel(config));
+}
+
+ONealModel::ONealModel(const ValidatedConfig& config)
+    : SkyModel(config.config()), samples_(config.integer_option("samples")) {}
 
 void ONealModel::compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
                                       std::span<const ViewDirection> views,

@@ -3,10 +3,12 @@
 // midpoint samples along each view ray, with Schuler's Chapman-function approximation for
 // every transmittance instead of a table (oneal_functions.h). No precomputation.
 //
-// | parameter | unit | default | range     | meaning                                          |
-// |-----------|------|---------|-----------|--------------------------------------------------|
-// | samples   | -    | 4       | [1, 1024] | midpoint samples per view ray (O'Neil's code: 2) |
-// | alpha, beta, g (atmosphere) | - | 0.8, 0.04, 0.7 | see AtmosphereParameters | aerosols   |
+// | parameter | unit | default | range           | meaning                                          |
+// |-----------|------|---------|-----------------|--------------------------------------------------|
+// | samples   | -    | 4       | [1, 1024]       | midpoint samples per view ray (O'Neil's code: 2) |
+// | alpha     | -    | 0.8     | [0, 4]          | Angstrom exponent of the aerosols (atmosphere)   |
+// | beta      | -    | 0.04    | [0, 2]          | aerosol optical depth at 1 um (atmosphere)       |
+// | g         | -    | 0.7     | [-0.999, 0.999] | Cornette-Shanks asymmetry (atmosphere)           |
 //
 // Capabilities: observers from the ground to far above the atmosphere, views in every
 // direction, aerial perspective (SkyModel::aerial_perspective()), the sun anywhere (Earth's
@@ -16,6 +18,7 @@
 
 #include <memory>
 
+#include "models/core/model_factory.h"
 #include "models/core/ray_scattering.h"
 #include "models/core/sky_model.h"
 
@@ -26,8 +29,11 @@ ModelFactory oneal_factory();
 
 class ONealModel final : public SkyModel {
  public:
-  static std::shared_ptr<const SkyModel> create(const ModelConfig& config,
-                                                const PrecomputeContext& context);
+  // Validates config (InvalidInput naming the parameter), then builds.
+  static std::shared_ptr<const ONealModel> create(const ModelConfig& config,
+                                                  const PrecomputeContext& context = {});
+  static std::shared_ptr<const ONealModel> build(const ValidatedConfig& config,
+                                                 const PrecomputeContext& context);
 
   const ModelDescriptor& descriptor() const override { return oneal_descriptor(); }
   int samples() const { return samples_; }
@@ -42,7 +48,7 @@ class ONealModel final : public SkyModel {
                                                 double distance_m) const override;
 
  private:
-  explicit ONealModel(const ModelConfig& config);
+  explicit ONealModel(const ValidatedConfig& config);
 
   int samples_ = 4;
 };

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "models/atmosphere/atmosphere_parameter_table.h"
 #include "models/colour/colour_spaces.h"
 #include "models/colour/daylight_spectrum.h"
 #include "models/core/fit_domain.h"
@@ -14,47 +15,49 @@ namespace clearsky {
 namespace {
 
 ModelDescriptor make_descriptor() {
-  ModelDescriptor d;
-  d.id = std::string("preetham");
-  d.name = std::string("Preetham 1999");
-  d.version = std::string("1");
-  d.citation = std::string(
-      "A. J. Preetham, P. Shirley, B. Smits. A Practical Analytic Model for Daylight. Proceedings "
-      "of "
-      "SIGGRAPH 1999, pages 91-100.");
-  d.summary =
-      "Analytic sky luminance and chromaticity: Perez distributions fitted to Nishita96 skies, "
-      "with zenith "
-      "luminance and chromaticity as functions of turbidity and sun zenith; the spectrum is the "
-      "CIE daylight "
-      "basis S0 + M1 S1 + M2 S2 for the chromaticity, scaled to the luminance. As in the 2016 "
-      "study: turbidity "
-      "2.53; the extraterrestrial spectrum, albedo and aerosol parameters are built into the fit "
-      "and ignored. "
-      "Ground views only, sun above the horizon.";
-  d.min_wavelength_nm = 360.0;  // the CIE daylight basis table
-  d.max_wavelength_nm = 830.0;
-  d.parameters = {
-      ParameterSpec{"turbidity", "", "atmospheric turbidity (the study: 2.53)", 2.53, 2.0, 10.0,
-                    false, true},
-      ParameterSpec{
-          kClampNegativeFitOption, "",
-          "1: where the fitted spectrum turns negative (a low sun, views near the horizon towards "
-          "it) answer 0 there; 0: refuse those samples (status outside_fit_domain)",
-          0.0, 0.0, 1.0, true, false},
+  return ModelDescriptor{
+      .id = "preetham",
+      .name = "Preetham 1999",
+      .version = "1",
+      .citation =
+          "A. J. Preetham, P. Shirley, B. Smits. A Practical Analytic Model for Daylight. "
+          "Proceedings of SIGGRAPH 1999, pages 91-100.",
+      .summary =
+          "Analytic sky luminance and chromaticity: Perez distributions fitted to Nishita96 "
+          "skies, with zenith luminance and chromaticity as functions of turbidity and sun "
+          "zenith; the spectrum is the CIE daylight basis S0 + M1 S1 + M2 S2 for the "
+          "chromaticity, scaled to the luminance. As in the 2016 study: turbidity 2.53; the "
+          "extraterrestrial spectrum, albedo and aerosol parameters are built into the fit and "
+          "ignored. Ground views only, sun above the horizon.",
+      .min_wavelength_nm = 360.0,  // the CIE daylight basis table
+      .max_wavelength_nm = 830.0,
+      .parameters =
+          {
+              // Below turbidity 2 the zenith luminance of a high sun turns negative.
+              atmosphere_parameter_spec("turbidity", 2.0, 10.0),
+              {.name = kClampNegativeFitOption,
+               .description = "1: where the fitted spectrum turns negative (a low sun, views "
+                              "near the horizon towards it) answer 0 there; 0: refuse those "
+                              "samples (status outside_fit_domain)",
+               .default_value = 0.0,
+               .min_value = 0.0,
+               .max_value = 1.0,
+               .integer = true},
+          },
+      .capabilities =
+          {
+              .min_altitude_m = 0.0,
+              .max_altitude_m = 0.0,
+              .view_from_space = false,
+              .view_below_horizon = false,
+              .aerial_perspective = false,
+              .max_sun_zenith_deg = 90.0,
+              .scattering_orders = -1,
+              .per_sun_precomputation = false,
+              .sun_irradiance = true,
+              .sky_irradiance = true,
+          },
   };
-  ModelCapabilities& c = d.capabilities;
-  c.min_altitude_m = 0.0;
-  c.max_altitude_m = 0.0;
-  c.view_from_space = false;
-  c.view_below_horizon = false;
-  c.aerial_perspective = false;
-  c.max_sun_zenith_deg = 90.0;
-  c.scattering_orders = -1;
-  c.per_sun_precomputation = false;
-  c.sun_irradiance = true;
-  c.sky_irradiance = true;
-  return d;
 }
 
 // One Perez distribution normalised by its value at the zenith: value(view) = scale x F(view).
@@ -114,24 +117,23 @@ const ModelDescriptor& preetham_descriptor() {
 }
 
 ModelFactory preetham_factory() {
-  return ModelFactory{&preetham_descriptor(), &PreethamModel::create};
+  return make_model_factory<&preetham_descriptor, &PreethamModel::build>();
 }
 
-std::shared_ptr<const SkyModel> PreethamModel::create(const ModelConfig& config,
-                                                      const PrecomputeContext&) {
-  validate_config(preetham_descriptor(), config);
-  const double t = config.atmosphere.turbidity;
-  const ParameterSpec& spec = *preetham_descriptor().find_parameter("turbidity");
-  if (!(t >= spec.min_value && t <= spec.max_value)) {
-    throw std::invalid_argument("turbidity: must be in [2, 10] for the preetham model");
-  }
-  return std::shared_ptr<const SkyModel>(new PreethamModel(config));
+std::shared_ptr<const PreethamModel> PreethamModel::create(const ModelConfig& config,
+                                                           const PrecomputeContext& context) {
+  return build(validated_config(preetham_descriptor(), config), context);
 }
 
-PreethamModel::PreethamModel(const ModelConfig& config)
-    : SkyModel(config),
-      clamp_negative_fit_(
-          option_or_default(preetham_descriptor(), config, kClampNegativeFitOption) != 0.0) {
+std::shared_ptr<const PreethamModel> PreethamModel::build(const ValidatedConfig& config,
+                                                          const PrecomputeContext&) {
+  // The descriptor's turbidity range [2, 10] is checked by validated_config.
+  return std::shared_ptr<const PreethamModel>(new PreethamModel(config));
+}
+
+PreethamModel::PreethamModel(const ValidatedConfig& config)
+    : SkyModel(config.config()),
+      clamp_negative_fit_(config.option(kClampNegativeFitOption) != 0.0) {
   // The basis on the query grid, and its Y where the study integrates it: its 40 bins.
   const auto basis = [](const WavelengthGrid& grid) {
     const Spectrum s0 = daylight_relative_spectrum({0.0, 0.0}, grid);

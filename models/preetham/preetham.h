@@ -6,12 +6,10 @@
 // Y. The zenith luminance formula gives kcd/m2: Y in cd/m2 is 1000 times it, and the
 // radiometric Y the spectrum must carry is that divided by 683 lm/W.
 //
-// | parameter | unit | default | range   | meaning                                              |
-// |-----------|------|---------|---------|------------------------------------------------------|
-// | turbidity | -    | 2.53    | [2, 10] | atmospheric turbidity (below 2 the zenith luminance  |
-// |           |      |         |         | of a high sun turns negative)                        |
-// | clamp_negative_fit | - | 0 | {0, 1} | 1: 0 where the fitted spectrum turns negative; 0:   |
-// |           |      |         |         | refuse those samples (outside_fit_domain)            |
+// | parameter          | unit | default | range   | meaning                                                                                                 |
+// |--------------------|------|---------|---------|---------------------------------------------------------------------------------------------------------|
+// | turbidity          | -    | 2.53    | [2, 10] | atmospheric turbidity, narrowed (atmosphere): below 2 the zenith luminance of a high sun turns negative |
+// | clamp_negative_fit | -    | 0       | {0, 1}  | 1: 0 where the fitted spectrum turns negative; 0: refuse those samples (outside_fit_domain)             |
 //
 // The model ignores the extraterrestrial spectrum, the ground albedo and the aerosol
 // parameters (all built into the fit), as the study did. Sun irradiance: the study's
@@ -21,6 +19,7 @@
 
 #include <memory>
 
+#include "models/core/model_factory.h"
 #include "models/core/sky_model.h"
 #include "models/preetham/preetham_functions.h"
 
@@ -31,8 +30,11 @@ ModelFactory preetham_factory();
 
 class PreethamModel final : public SkyModel {
  public:
-  static std::shared_ptr<const SkyModel> create(const ModelConfig& config,
-                                                const PrecomputeContext& context);
+  // Validates config (InvalidInput naming the parameter), then builds.
+  static std::shared_ptr<const PreethamModel> create(const ModelConfig& config,
+                                                     const PrecomputeContext& context = {});
+  static std::shared_ptr<const PreethamModel> build(const ValidatedConfig& config,
+                                                    const PrecomputeContext& context);
 
   const ModelDescriptor& descriptor() const override { return preetham_descriptor(); }
   double turbidity() const { return config().atmosphere.turbidity; }
@@ -58,7 +60,7 @@ class PreethamModel final : public SkyModel {
                              SpectralBatch& out) const override;
 
  private:
-  explicit PreethamModel(const ModelConfig& config);
+  explicit PreethamModel(const ValidatedConfig& config);
   // The spectra of views above the horizon; a spectrum that turns negative is refused
   // (outside_fit_domain) or, with clamp_negative, clamped to 0.
   void fit_radiance(const SunState& sun, bool clamp_negative, std::span<const ViewDirection> views,

@@ -5,19 +5,21 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "models/core/invalid_input.h"
+
 namespace clearsky {
 
 WavelengthGrid WavelengthGrid::paper_bins() { return bins(360.0, 11.75, 40); }
 
 WavelengthGrid WavelengthGrid::bins(double start_nm, double width_nm, std::size_t count) {
   if (!(std::isfinite(start_nm) && start_nm > 0.0)) {
-    throw std::invalid_argument("wavelength bins: start must be a finite positive wavelength");
+    throw InvalidInput("wavelengths", "bins: start must be a finite positive wavelength");
   }
   if (!(std::isfinite(width_nm) && width_nm > 0.0)) {
-    throw std::invalid_argument("wavelength bins: width must be finite and positive");
+    throw InvalidInput("wavelengths", "bins: width must be finite and positive");
   }
   if (count == 0 || count > 100000) {
-    throw std::invalid_argument("wavelength bins: count must be between 1 and 100000");
+    throw InvalidInput("wavelengths", "bins: count must be between 1 and 100000");
   }
   std::vector<double> nm(count);
   for (std::size_t i = 0; i < count; ++i) nm[i] = start_nm + width_nm * static_cast<double>(i);
@@ -26,15 +28,15 @@ WavelengthGrid WavelengthGrid::bins(double start_nm, double width_nm, std::size_
 
 WavelengthGrid WavelengthGrid::points(std::vector<double> wavelengths_nm) {
   if (wavelengths_nm.empty() || wavelengths_nm.size() > 100000) {
-    throw std::invalid_argument("wavelengths: between 1 and 100000 values are required");
+    throw InvalidInput("wavelengths", "between 1 and 100000 values are required");
   }
   for (std::size_t i = 0; i < wavelengths_nm.size(); ++i) {
     const double w = wavelengths_nm[i];
     if (!(std::isfinite(w) && w > 0.0)) {
-      throw std::invalid_argument("wavelengths: each must be a finite positive number of nm");
+      throw InvalidInput("wavelengths", "each must be a finite positive number of nm");
     }
     if (i > 0 && !(w > wavelengths_nm[i - 1])) {
-      throw std::invalid_argument("wavelengths: must be strictly increasing");
+      throw InvalidInput("wavelengths", "must be strictly increasing");
     }
   }
   return WavelengthGrid(Kind::points, std::move(wavelengths_nm), 0.0);

@@ -7,7 +7,6 @@
 #include <sstream>
 
 #include "api/error/api_error.h"
-#include "api/request/sky_request.h"
 
 namespace clearsky::server {
 
@@ -138,11 +137,8 @@ std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory&
 
 std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory,
                                                   const ModelConfig& config) const {
-  try {
-    api::validate_model_config(*factory.descriptor, config);
-  } catch (const std::invalid_argument& e) {
-    throw api::from_invalid_argument(e);
-  }
+  // The configuration was validated by the request's parsing (api::parse_config); the build
+  // validates it once more, once per configuration (models/core/model_factory.h).
   // The default configuration (most requests) skips building its canonical text.
   static const AtmosphereParameters default_atmosphere;
   static const WavelengthGrid default_grid = ModelConfig{}.wavelengths;

@@ -43,8 +43,8 @@ TEST(ModelConfigErrors, AtmosphereRefusalsNameTheParameter) {
   EXPECT_EQ(refused_parameter(ModelConfig{}), "");
 }
 
-// A model option out of its descriptor's range is named, whether validate_config reports it
-// as InvalidInput or (before that) as a plain std::invalid_argument.
+// A model option out of its descriptor's range, not an integer, or unknown to the model is
+// named.
 TEST(ModelConfigErrors, OptionRefusalsNameTheOption) {
   ModelConfig config;
   config.options["gain"] = 100.0;
