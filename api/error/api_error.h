@@ -1,27 +1,42 @@
-// The one error type of the HTTP API: an HTTP status, a stable machine-readable code, the
+// The one error type of the API and the CLI: an HTTP status, a stable machine-readable code, the
 // request parameter at fault (empty when none) and a human-readable message. The server turns
-// it into {"error": {"code", "message", "parameter"}} (docs/http-api.md).
-// Handlers throw it at the edge (parsing, capability checks); models never see it.
+// it into {"error": {"code", "message", "parameter"}} (docs/http-api.md); the CLI prints the
+// message under the option's name (docs/request-parsing.md). Handlers throw it at the edge
+// (parsing, capability checks); models never see it: they throw clearsky::InvalidInput, which
+// from_invalid_input turns into an ApiError naming the request parameter.
 #pragma once
 
 #include <stdexcept>
 #include <string>
 
+#include "models/core/invalid_input.h"
+
 namespace clearsky::api {
 
 class ApiError : public std::runtime_error {
  public:
+  // message is the whole text (what()); reason() is then the same text.
   ApiError(int status, std::string code, std::string parameter, const std::string& message,
            int retry_after_s = 0)
       : std::runtime_error(message),
         status_(status),
         code_(std::move(code)),
         parameter_(std::move(parameter)),
+        reason_(message),
         retry_after_s_(retry_after_s) {}
+
+  // An error about a parameter: what() is "<parameter>: <reason>".
+  static ApiError about(int status, std::string code, std::string parameter, std::string reason) {
+    ApiError error(status, std::move(code), parameter, parameter + ": " + reason);
+    error.reason_ = std::move(reason);
+    return error;
+  }
 
   int status() const { return status_; }
   const std::string& code() const { return code_; }
   const std::string& parameter() const { return parameter_; }
+  // Why, without the parameter's name (for the CLI, which names the option instead).
+  const std::string& reason() const { return reason_; }
   // Seconds for the Retry-After header of a 503; 0 when none applies.
   int retry_after_s() const { return retry_after_s_; }
 
@@ -29,6 +44,7 @@ class ApiError : public std::runtime_error {
   int status_;
   std::string code_;
   std::string parameter_;
+  std::string reason_;
   int retry_after_s_;
 };
 
@@ -50,8 +66,15 @@ ApiError cannot_answer(const std::string& parameter, const std::string& model_id
 // 503: the tables the request needs are still being built.
 ApiError not_ready(const std::string& model_id, const std::string& message, int retry_after_s);
 
-// Converts a std::invalid_argument whose message starts with "name: " (the convention of
-// models/ and AtmosphereParameters::validate) into a 400 naming that parameter.
+// The request parameter a models-layer input field comes from: the fields of SolarPositionInput
+// by their table (latitude_deg -> lat, unix_time_utc_s -> time, ...); atmosphere parameters and
+// model options already carry their request names.
+std::string request_parameter_of(const std::string& model_field);
+// 400 naming request_parameter_of(error.field()), with the model's reason.
+ApiError from_invalid_input(const InvalidInput& error);
+// A models-layer refusal: an InvalidInput as from_invalid_input; any other std::invalid_argument
+// (a model check that does not name its field yet) is a 400 naming "model", with its message
+// as it is. The message text is never parsed.
 ApiError from_invalid_argument(const std::invalid_argument& error);
 
 }  // namespace clearsky::api

@@ -2,12 +2,24 @@
 #include "api/handlers/sun_handler.h"
 
 #include "api/encode/iso8601_time.h"
+#include "api/error/api_error.h"
+#include "models/core/invalid_input.h"
 
 namespace clearsky::api {
 
-SunAnswer compute_sun(const SunRequest& request) {
-  return SunAnswer{solar_position(request.position),
-                   sun_times(request.position, request.utc_offset_min / 60.0)};
+PlaceTime parse_sun_query(Parameters& parameters, double now_unix_s) {
+  const PlaceTime request = parse_place_and_time(parameters, now_unix_s);
+  parameters.reject_unused();
+  return request;
+}
+
+SunAnswer compute_sun(const PlaceTime& request) {
+  try {
+    return SunAnswer{solar_position(request.position),
+                     sun_times(request.position, request.utc_offset_min / 60.0)};
+  } catch (const InvalidInput& e) {
+    throw from_invalid_input(e);
+  }
 }
 
 const char* day_kind_name(DayKind kind) {
@@ -22,7 +34,7 @@ const char* day_kind_name(DayKind kind) {
   return "normal";
 }
 
-nlohmann::ordered_json sun_answer_to_json(const SunRequest& request, const SunAnswer& answer) {
+nlohmann::ordered_json sun_answer_to_json(const PlaceTime& request, const SunAnswer& answer) {
   const auto time_or_null = [&](const std::optional<double>& unix_s) -> nlohmann::ordered_json {
     if (!unix_s) return nullptr;
     return format_iso8601_time(*unix_s, request.utc_offset_min, request.utc_designator);
@@ -37,8 +49,8 @@ nlohmann::ordered_json sun_answer_to_json(const SunRequest& request, const SunAn
   };
 }
 
-nlohmann::ordered_json handle_sun(const QueryParameters& parameters, double now_unix_s) {
-  const SunRequest request = parse_sun_request(parameters, now_unix_s);
+nlohmann::ordered_json handle_sun(Parameters& parameters, double now_unix_s) {
+  const PlaceTime request = parse_sun_query(parameters, now_unix_s);
   return sun_answer_to_json(request, compute_sun(request));
 }
 

@@ -1,6 +1,6 @@
-// The sun query, transport-free (keys in the order below): parse the parameters, compute the
-// position and the day's sunrise/transit/sunset with SPA, encode the answer (GET /v1/sun and
-// `clearsky sun --json`):
+// The sun query, transport-free (keys in the order below): parse the place and time
+// (api/request/place_time.h), compute the position and the day's sunrise/transit/sunset with
+// SPA, encode the answer (GET /v1/sun and `clearsky sun --json`):
 //   {"zenith": DEG, "azimuth": DEG, "sunrise": ISO|null, "transit": ISO, "sunset": ISO|null,
 //    "day": "normal"|"polar_day"|"polar_night"}
 // zenith topocentric (refraction applied unless refraction=false), azimuth clockwise from North,
@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "api/parse/query_parameters.h"
-#include "api/parse/sun_request.h"
+#include "api/request/parameters.h"
+#include "api/request/place_time.h"
 #include "models/solar/solar_position.h"
 
 namespace clearsky::api {
@@ -20,10 +20,14 @@ struct SunAnswer {
   SunTimes times;
 };
 
-SunAnswer compute_sun(const SunRequest& request);
-nlohmann::ordered_json sun_answer_to_json(const SunRequest& request, const SunAnswer& answer);
-// parse_sun_request, compute_sun and sun_answer_to_json; throws InvalidParameter.
-nlohmann::ordered_json handle_sun(const QueryParameters& parameters, double now_unix_s);
+// The place and time of a sun query: every parameter of the place/time table and no other
+// (400 naming the first unknown one). now_unix_s is the instant taken when time is absent.
+PlaceTime parse_sun_query(Parameters& parameters, double now_unix_s);
+// SPA's refusals are ApiError naming the request parameter.
+SunAnswer compute_sun(const PlaceTime& request);
+nlohmann::ordered_json sun_answer_to_json(const PlaceTime& request, const SunAnswer& answer);
+// parse_sun_query, compute_sun and sun_answer_to_json; errors are ApiError.
+nlohmann::ordered_json handle_sun(Parameters& parameters, double now_unix_s);
 
 // "normal", "polar_day" or "polar_night".
 const char* day_kind_name(DayKind kind);

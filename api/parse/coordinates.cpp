@@ -5,12 +5,14 @@
 #include <GeographicLib/DMS.hpp>
 #include <cmath>
 
-#include "api/parse/invalid_parameter.h"
+#include "api/error/api_error.h"
 
 namespace clearsky::api {
 namespace {
 
 using GeographicLib::DMS;
+
+std::string quoted(std::string_view text) { return '"' + std::string(text) + '"'; }
 
 double decode_angle(std::string_view text, const std::string& parameter, DMS::flag wanted,
                     double limit_deg) {
@@ -20,19 +22,19 @@ double decode_angle(std::string_view text, const std::string& parameter, DMS::fl
   try {
     degrees = DMS::Decode(std::string(text), hemisphere);
   } catch (const GeographicLib::GeographicErr& e) {
-    throw InvalidParameter(parameter, "expected decimal degrees or degrees-minutes-seconds, got " +
-                                          shown + " (" + e.what() + ")");
+    throw invalid_parameter(parameter, "expected decimal degrees or degrees-minutes-seconds, got " +
+                                           shown + " (" + e.what() + ")");
   }
   if (hemisphere != DMS::NONE && hemisphere != wanted) {
-    throw InvalidParameter(parameter,
-                           std::string("the hemisphere of ") + shown + " belongs to a " +
-                               (wanted == DMS::LATITUDE ? "longitude (E/W)" : "latitude (N/S)"));
+    throw invalid_parameter(parameter,
+                            std::string("the hemisphere of ") + shown + " belongs to a " +
+                                (wanted == DMS::LATITUDE ? "longitude (E/W)" : "latitude (N/S)"));
   }
   if (!std::isfinite(degrees))
-    throw InvalidParameter(parameter, "must be a finite angle, got " + shown);
+    throw invalid_parameter(parameter, "must be a finite angle, got " + shown);
   if (!(std::abs(degrees) <= limit_deg)) {
     const std::string range = limit_deg == 90.0 ? "[-90, 90]" : "[-180, 180]";
-    throw InvalidParameter(parameter, "must be in " + range + " degrees, got " + shown);
+    throw invalid_parameter(parameter, "must be in " + range + " degrees, got " + shown);
   }
   return degrees;
 }

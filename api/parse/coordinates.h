@@ -1,7 +1,7 @@
 // Latitude and longitude of a request, in decimal degrees ("42.443449", "-76.481962") or as
 // degrees-minutes-seconds with an optional hemisphere (42d26'36.4"N, 76:28:55.1W, 76°28′55.1″W),
 // decoded by GeographicLib::DMS. A hemisphere letter must fit the coordinate (N/S for a
-// latitude, E/W for a longitude). Errors are api::InvalidParameter naming the parameter.
+// latitude, E/W for a longitude). Errors are api::ApiError (400) naming the parameter.
 #pragma once
 
 #include <string>

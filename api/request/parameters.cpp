@@ -1,6 +1,8 @@
 // Typed access to request parameters, with strict parsing and unused-parameter detection.
 #include "api/request/parameters.h"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -19,19 +21,31 @@ std::string format_limit(double x) {
 }
 
 std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  const auto is_space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
   return s;
+}
+
+std::string lower_case(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return out;
 }
 
 }  // namespace
 
 double number_value(const std::string& parameter, std::string_view text) {
   text = trim(text);
-  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  // from_chars rejects a leading '+', which people write; skip one before a digit or '.' only
+  // (so that "+-1" and "++1" stay errors).
+  std::string_view digits = text;
+  if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-' && digits[1] != '+')
+    digits.remove_prefix(1);
   double value = 0.0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (text.empty() || error != std::errc() || end != digits.data() + digits.size()) {
     throw invalid_parameter(parameter, "'" + std::string(text) + "' is not a number");
   }
   if (!std::isfinite(value)) throw invalid_parameter(parameter, "must be a finite number");
@@ -40,7 +54,7 @@ double number_value(const std::string& parameter, std::string_view text) {
 
 void Parameters::add(const std::string& name, std::string value) {
   if (!values_.emplace(name, std::move(value)).second) {
-    throw ApiError(400, "duplicate_parameter", name, name + ": given more than once");
+    throw ApiError::about(400, "duplicate_parameter", name, "given more than once");
   }
 }
 
@@ -142,8 +156,9 @@ std::string Parameters::choice(const std::string& name,
 bool Parameters::boolean_or(const std::string& name, bool fallback) {
   const auto value = text(name);
   if (!value) return fallback;
-  if (*value == "true" || *value == "1") return true;
-  if (*value == "false" || *value == "0") return false;
+  const std::string word = lower_case(trim(*value));
+  if (word == "true" || word == "1" || word == "yes") return true;
+  if (word == "false" || word == "0" || word == "no") return false;
   throw invalid_parameter(name, "must be true or false");
 }
 

@@ -1,8 +1,10 @@
 // The named parameters of one request (URL query or the scalar fields of a JSON body), read
 // by handlers with typed, range-checked accessors that remember what was read, so that
 // reject_unused() can name any parameter the request carried but the endpoint did not use
-// (docs/conventions.md "Unknown parameters are refused"). Numbers are parsed strictly (the
-// whole text, finite; NaN and infinity fail). Not thread-safe: one instance per request.
+// (docs/conventions.md "Unknown parameters are refused"). The one parameter type of every
+// endpoint and of the CLI, which builds one from its options (docs/request-parsing.md).
+// Numbers are parsed strictly (the whole text, finite; NaN and infinity fail). Errors are
+// ApiError naming the parameter. Not thread-safe: one instance per request.
 #pragma once
 
 #include <initializer_list>
@@ -43,7 +45,7 @@ class Parameters {
   // One of choices; fallback when absent.
   std::string choice(const std::string& name, std::initializer_list<std::string_view> choices,
                      std::string_view fallback);
-  // true/false (also 1/0).
+  // true/false (also 1/0 and yes/no, in any case).
   bool boolean_or(const std::string& name, bool fallback);
 
   // Throws a 400 naming the first parameter that was given but never read.

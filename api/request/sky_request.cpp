@@ -36,7 +36,8 @@ SunSpec parse_sun(Parameters& p) {
       throw missing_parameter("sun_zenith",
                               "give sun_zenith and sun_azimuth, or lat, lon and time");
     }
-    const SolarPosition position = solar_position_checked(parse_place_and_time(p));
+    const SolarPosition position =
+        solar_position_checked(parse_place_and_time(p, std::nullopt).position);
     spec.zenith_deg = position.zenith_deg;
     spec.azimuth_deg = position.azimuth_deg;
     spec.from_place_and_time = true;
@@ -46,7 +47,7 @@ SunSpec parse_sun(Parameters& p) {
   return spec;
 }
 
-Viewpoint parse_viewpoint(Parameters& p) { return {p.number_or("altitude", 0.0, -500.0, 1e7)}; }
+Viewpoint parse_viewpoint(Parameters& p) { return {parse_altitude_m(p)}; }
 
 bool set_atmosphere_parameter(AtmosphereParameters& a, const std::string& name, double value) {
   return clearsky::set_atmosphere_parameter(a, name, value);
@@ -86,6 +87,14 @@ ModelConfig parse_config(Parameters& p, const ModelDescriptor& descriptor) {
   // configuration as a whole is validated once, by the model provider (the server's TableStore
   // before it queues a build) and once per build (models/core/model_factory.h).
   return config;
+}
+
+void validate_model_config(const ModelDescriptor& descriptor, const ModelConfig& config) {
+  try {
+    validate_config(descriptor, config);
+  } catch (const std::invalid_argument& e) {
+    throw from_invalid_argument(e);
+  }
 }
 
 std::optional<std::vector<double>> parse_wavelengths(Parameters& p, const Limits& limits) {

@@ -1,17 +1,18 @@
 // The parts every sky query shares, parsed from Parameters into model-layer values:
 //
-// | parameter                | unit   | range            | meaning |
-// |--------------------------|--------|------------------|------------------------------------------------|
-// | model                    | -      | a registered id  | which model answers (404 when unknown) |
-// | sun_zenith, sun_azimuth  | degree | [0,180], [-360,360] | the sun given directly (azimuth
-// clockwise from North) | | lat, lon, time           | degree / ISO 8601 | DMS allowed | place and
-// time; the sun from NREL SPA  | | altitude                 | m      | [-500, 1e7]      | observer
-// altitude above sea level (default 0)  | | alpha, beta, g, turbidity, albedo, ... | per descriptor
-// | per descriptor | atmosphere and model parameters the model's descriptor lists | | wavelengths
-// | nm     | list or start:stop:step | output wavelengths (default: the paper's 40 bins) |
+// clang-format off
+// | parameter                              | unit   | range                 | meaning                                              |
+// |----------------------------------------|--------|-----------------------|------------------------------------------------------|
+// | model                                  | -      | a registered id       | which model answers (404 when unknown)               |
+// | sun_zenith, sun_azimuth                | degree | [0, 180], [-360, 360] | the sun given directly (azimuth clockwise from North) |
+// | lat, lon, time, altitude, pressure, ... | see api/request/place_time.h | | place and time; the sun from NREL SPA     |
+// | alpha, beta, g, turbidity, albedo, ... | per descriptor | per descriptor | atmosphere and model parameters the model's descriptor lists |
+// | wavelengths                            | nm     | list or start:stop:step | output wavelengths (default: the paper's 40 bins)  |
+// clang-format on
 //
-// The sun is either given or computed, never both (conflicting parameters are a 400).
-// Parameters a model's descriptor does not list are left unread, so reject_unused() names them.
+// altitude is also the viewpoint when the sun is given. The sun is either given or computed,
+// never both (conflicting parameters are a 400). Parameters a model's descriptor does not list
+// are left unread, so reject_unused() names them.
 #pragma once
 
 #include <memory>
@@ -47,6 +48,9 @@ Viewpoint parse_viewpoint(Parameters& p);
 // The model's configuration with the request's overrides of the parameters its descriptor
 // lists (400 naming the parameter for a value out of range).
 ModelConfig parse_config(Parameters& p, const ModelDescriptor& descriptor);
+// validate_config (models/core/sky_model.h) with its refusals (clearsky::InvalidInput) as a 400
+// naming the request parameter (from_invalid_argument).
+void validate_model_config(const ModelDescriptor& descriptor, const ModelConfig& config);
 // wavelengths: "400,500,600" or "start:stop:step" (stop included within rounding); absent:
 // nullopt.
 std::optional<std::vector<double>> parse_wavelengths(Parameters& p, const Limits& limits);

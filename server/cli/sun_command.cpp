@@ -1,6 +1,5 @@
 // `clearsky sun`: the sun's position (NREL SPA) and the day's sunrise, transit and sunset for a
 // place and time, as text or JSON (the same answer as GET /v1/sun, through api/handlers).
-#include <chrono>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -10,15 +9,16 @@
 #include <utility>
 
 #include "api/encode/iso8601_time.h"
+#include "api/error/api_error.h"
 #include "api/handlers/sun_handler.h"
-#include "api/parse/invalid_parameter.h"
-#include "api/parse/sun_request.h"
+#include "api/request/parameters.h"
 #include "server/cli/commands.h"
 
 namespace clearsky::cli {
 namespace {
 
-// Each request parameter with the option that carries it on the command line.
+// Each request parameter with the option that carries it on the command line; the values and
+// their ranges are those of api/request/place_time.h, read through the same parser.
 struct SunOption {
   const char* parameter;
   const char* option;
@@ -48,7 +48,7 @@ std::string option_of(const std::string& parameter) {
   return parameter;
 }
 
-std::string describe_time(const std::optional<double>& unix_s, const api::SunRequest& request,
+std::string describe_time(const std::optional<double>& unix_s, const api::PlaceTime& request,
                           DayKind kind) {
   if (unix_s)
     return api::format_iso8601_time(*unix_s, request.utc_offset_min, request.utc_designator);
@@ -56,7 +56,7 @@ std::string describe_time(const std::optional<double>& unix_s, const api::SunReq
                                     : "none (polar night: the sun stays below the horizon)";
 }
 
-void print_text(const api::SunRequest& request, const api::SunAnswer& answer) {
+void print_text(const api::PlaceTime& request, const api::SunAnswer& answer) {
   std::ostringstream out;
   out << std::fixed << std::setprecision(6);
   out << "time     "
@@ -95,23 +95,21 @@ void add_sun_command(CLI::App& app) {
   command->add_flag("--no-refraction", values->no_refraction, "Leave out atmospheric refraction");
   command->add_flag("--json", values->json, "Print one JSON object");
   command->callback([values, options] {
-    api::QueryParameters parameters;
-    for (std::size_t i = 0; i < std::size(kSunOptions); ++i) {
-      if (options[i]->count() > 0) parameters.emplace(kSunOptions[i].parameter, values->text[i]);
-    }
-    if (values->no_refraction) parameters.emplace("refraction", "false");
-    const double now_s =
-        std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
     try {
-      const api::SunRequest request = api::parse_sun_request(parameters, now_s);
+      api::Parameters parameters("clearsky sun");
+      for (std::size_t i = 0; i < std::size(kSunOptions); ++i) {
+        if (options[i]->count() > 0) parameters.add(kSunOptions[i].parameter, values->text[i]);
+      }
+      if (values->no_refraction) parameters.add("refraction", "false");
+      const api::PlaceTime request = api::parse_sun_query(parameters, api::current_unix_time_s());
       const api::SunAnswer answer = api::compute_sun(request);
       if (values->json) {
         std::cout << api::sun_answer_to_json(request, answer).dump(2) << '\n';
       } else {
         print_text(request, answer);
       }
-    } catch (const api::InvalidParameter& e) {
-      throw std::runtime_error(option_of(e.parameter()) + ": " + e.message());
+    } catch (const api::ApiError& e) {
+      throw std::runtime_error(option_of(e.parameter()) + ": " + e.reason());
     }
   });
 }

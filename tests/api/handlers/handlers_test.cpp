@@ -9,6 +9,7 @@
 
 #include "models/colour/three_wavelength_rgb.h"
 #include "models/core/numeric.h"
+#include "tests/support/place_time_cases.h"
 #include "tests/support/synchronous_provider.h"
 #include "tests/support/test_sky_model.h"
 
@@ -138,6 +139,10 @@ TEST_F(Handlers, ErrorsNameTheParameter) {
   expect_error(call(radiance, "GET", "/v1/radiance", with({{"view_zenith", "45"}})), 400,
                "view_azimuth");
   expect_error(call(radiance, "GET", "/v1/radiance", with(q({{"lat", "40"}}))), 400, "lat");
+  // A cacheable sky answer never depends on the clock: time has no default here.
+  expect_error(call(radiance, "GET", "/v1/radiance",
+                    q({{"model", "testsky"}, {"lat", "40"}, {"lon", "-76"}})),
+               400, "time");
   expect_error(call(radiance, "GET", "/v1/radiance",
                     q({{"model", "nope"}, {"sun_zenith", "3"}, {"sun_azimuth", "3"}})),
                404, "model");
@@ -276,6 +281,59 @@ TEST_F(Handlers, SunEndpoint) {
   expect_error(call(get_sun, "GET", "/v1/sun", {{"lat", "42.44"}}), 400, "lon");
   expect_error(call(get_sun, "GET", "/v1/sun", {{"lat", "42.44"}, {"lon", "1"}, {"bogus", "1"}}),
                400, "bogus");
+}
+
+// GET /v1/sun and the sky endpoints read place and time through one table: the same values are
+// accepted and the same refused, naming the parameter.
+TEST_F(Handlers, SameRangesOnSunAndRadiance) {
+  for (const auto& c : clearsky::testing::place_time_cases()) {
+    const std::string label = c.parameter + "=" + c.value;
+    Q place{{"lat", "42.44"}, {"lon", "-76.48"}, {"time", "2013-05-27T11:45:00-04:00"}};
+    std::erase_if(place, [&](const auto& pair) { return pair.first == c.parameter; });
+    place.emplace_back(c.parameter, c.value);
+    Q sky{
+        {"model", "testsky"}, {"view_zenith", "0"}, {"view_azimuth", "0"}, {"wavelengths", "500"}};
+    sky.insert(sky.end(), place.begin(), place.end());
+    const ApiResponse sun_answer = call(get_sun, "GET", "/v1/sun", place);
+    const ApiResponse sky_answer = call(radiance, "GET", "/v1/radiance", sky);
+    if (c.accepted) {
+      EXPECT_EQ(sun_answer.status, 200) << label << " " << sun_answer.body;
+      // The test sky may not answer (night, altitude above 1000 m): a 422, never a 400.
+      EXPECT_NE(sky_answer.status, 400) << label << " " << sky_answer.body;
+    } else {
+      expect_error(sun_answer, 400, c.parameter);
+      expect_error(sky_answer, 400, c.parameter);
+    }
+  }
+}
+
+// A model-side refusal (clearsky::InvalidInput) names the request parameter: a descriptor whose
+// alpha range is wider than the atmosphere's lets alpha=5 reach AtmosphereParameters::validate.
+TEST_F(Handlers, ModelRefusalsNameTheRequestParameter) {
+  static const ModelDescriptor wide = [] {
+    ModelDescriptor d = clearsky::testing::test_sky_descriptor();
+    d.id = "widesky";
+    d.parameters.push_back({"alpha", "", "Angstrom exponent", 0.8, 0.0, 10.0, false, true});
+    return d;
+  }();
+  clearsky::testing::SynchronousProvider wide_provider{
+      {ModelFactory{&wide, &clearsky::testing::create_test_sky}}};
+  const ApiContext context{wide_provider, limits};
+  const auto answer = [&](Q query) {
+    try {
+      return radiance(context, ApiRequest{"GET", "/v1/radiance", std::move(query), ""});
+    } catch (const ApiError& e) {
+      return error_response(e);
+    }
+  };
+  const Q base{{"model", "widesky"}, {"sun_zenith", "30"},  {"sun_azimuth", "120"},
+               {"view_zenith", "0"}, {"view_azimuth", "0"}, {"wavelengths", "500"}};
+  Q q = base;
+  q.emplace_back("alpha", "3");
+  EXPECT_EQ(answer(q).status, 200) << answer(q).body;
+  q = base;
+  q.emplace_back("alpha", "5");
+  expect_error(answer(q), 400, "alpha");
 }
 
 }  // namespace

@@ -1,22 +1,30 @@
-// The sun query end to end without transport: the SPA report's example and polar night.
+// The sun query end to end without transport: the SPA report's example, polar night, and
+// refusals naming the parameter (unknown ones included).
 #include "api/handlers/sun_handler.h"
 
 #include <gtest/gtest.h>
 
-#include "api/parse/invalid_parameter.h"
+#include "api/error/api_error.h"
 
 namespace clearsky::api {
 namespace {
 
+using Pairs = std::vector<std::pair<std::string, std::string>>;
+
+nlohmann::ordered_json sun(const Pairs& pairs, double now_unix_s = 0.0) {
+  Parameters p("GET /v1/sun");
+  for (const auto& [name, value] : pairs) p.add(name, value);
+  return handle_sun(p, now_unix_s);
+}
+
 TEST(SunHandler, ReportExampleAsJson) {
-  const nlohmann::ordered_json answer = handle_sun({{"lat", "39.742476"},
-                                                    {"lon", "-105.1786"},
-                                                    {"altitude", "1830.14"},
-                                                    {"time", "2003-10-17T12:30:30-07:00"},
-                                                    {"pressure", "820"},
-                                                    {"temperature", "11"},
-                                                    {"delta_t", "67"}},
-                                                   0.0);
+  const nlohmann::ordered_json answer = sun({{"lat", "39.742476"},
+                                             {"lon", "-105.1786"},
+                                             {"altitude", "1830.14"},
+                                             {"time", "2003-10-17T12:30:30-07:00"},
+                                             {"pressure", "820"},
+                                             {"temperature", "11"},
+                                             {"delta_t", "67"}});
   EXPECT_NEAR(answer.at("zenith").get<double>(), 50.11162, 1e-5);
   EXPECT_NEAR(answer.at("azimuth").get<double>(), 194.34024, 1e-5);
   EXPECT_EQ(answer.at("sunrise"), "2003-10-17T06:12:43-07:00");
@@ -27,7 +35,7 @@ TEST(SunHandler, ReportExampleAsJson) {
 
 TEST(SunHandler, PolarNightHasNullSunriseAndSunset) {
   const nlohmann::ordered_json answer =
-      handle_sun({{"lat", "-78.5"}, {"lon", "166.7"}, {"time", "2023-06-21T12:00:00+12:00"}}, 0.0);
+      sun({{"lat", "-78.5"}, {"lon", "166.7"}, {"time", "2023-06-21T12:00:00+12:00"}});
   EXPECT_TRUE(answer.at("sunrise").is_null());
   EXPECT_TRUE(answer.at("sunset").is_null());
   EXPECT_TRUE(answer.at("transit").is_string());
@@ -35,8 +43,33 @@ TEST(SunHandler, PolarNightHasNullSunriseAndSunset) {
   EXPECT_GT(answer.at("zenith").get<double>(), 90.0);
 }
 
+TEST(SunHandler, WithoutTimeTheGivenNowInUtc) {
+  // 2013-05-27T15:45:00Z at the Kider site.
+  const nlohmann::ordered_json answer = sun({{"lat", "42.44"}, {"lon", "-76.48"}}, 1369669500.0);
+  EXPECT_NEAR(answer.at("zenith").get<double>(), 26.64, 0.02);
+  EXPECT_EQ(answer.at("transit").get<std::string>().substr(0, 11), "2013-05-27T");
+  EXPECT_EQ(answer.at("transit").get<std::string>().back(), 'Z');
+}
+
 TEST(SunHandler, InvalidParameterPropagates) {
-  EXPECT_THROW((void)handle_sun({{"lat", "91"}, {"lon", "0"}}, 0.0), InvalidParameter);
+  try {
+    (void)sun({{"lat", "91"}, {"lon", "0"}});
+    ADD_FAILURE();
+  } catch (const ApiError& e) {
+    EXPECT_EQ(e.status(), 400);
+    EXPECT_EQ(e.parameter(), "lat");
+  }
+}
+
+TEST(SunHandler, UnknownParametersAreNamed) {
+  try {
+    (void)sun({{"lat", "0"}, {"lon", "0"}, {"zenith", "3"}});
+    ADD_FAILURE();
+  } catch (const ApiError& e) {
+    EXPECT_EQ(e.status(), 400);
+    EXPECT_EQ(e.code(), "unknown_parameter");
+    EXPECT_EQ(e.parameter(), "zenith");
+  }
 }
 
 }  // namespace

@@ -3,17 +3,17 @@
 
 #include <gtest/gtest.h>
 
-#include "api/parse/invalid_parameter.h"
+#include "api/error/api_error.h"
 
 namespace clearsky::api {
 namespace {
 
-// The parameter named by the InvalidParameter that parsing text throws, or "" if none.
+// The parameter named by the ApiError that parsing text throws, or "" if none.
 template <typename Parse>
 std::string rejected_parameter(Parse parse, const std::string& text) {
   try {
     parse(text);
-  } catch (const InvalidParameter& e) {
+  } catch (const ApiError& e) {
     return e.parameter();
   }
   return "";
@@ -58,7 +58,9 @@ TEST(ParseCoordinates, RangeAndMalformedInputNameTheParameter) {
     EXPECT_EQ(rejected_parameter(lon, bad), "lon") << bad;
   try {
     parse_latitude("91", "lat");
-  } catch (const InvalidParameter& e) {
+    ADD_FAILURE();
+  } catch (const ApiError& e) {
+    EXPECT_EQ(e.status(), 400);
     EXPECT_EQ(std::string(e.what()).rfind("lat: must be in [-90, 90]", 0), 0u) << e.what();
   }
 }

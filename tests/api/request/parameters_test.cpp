@@ -83,5 +83,50 @@ TEST(Parameters, FromJsonObjectKeepsFullPrecisionAndRejectsNesting) {
             "a");
 }
 
+// The strict number rules the sun request used to have on its own (whole text, finite, one
+// optional '+' before a digit), now those of every parameter.
+TEST(Parameters, NumbersAcceptWholeFiniteTextOnly) {
+  EXPECT_DOUBLE_EQ(number_value("altitude", "1830.14"), 1830.14);
+  EXPECT_DOUBLE_EQ(number_value("x", " -7 "), -7.0);
+  EXPECT_DOUBLE_EQ(number_value("delta_t", "+67"), 67.0);
+  EXPECT_DOUBLE_EQ(number_value("x", "1e3"), 1000.0);
+  for (const char* bad : {"", " ", "nan", "NaN", "inf", "-inf", "1e999", "12abc", "1,5", "0x10",
+                          "+-1", "--1", "++1"}) {
+    const ApiError e = error_of([&] { number_value("pressure", bad); });
+    EXPECT_EQ(e.status(), 400) << bad;
+    EXPECT_EQ(e.parameter(), "pressure") << bad;
+  }
+  Parameters p("GET /x");
+  p.add("pressure", "820");
+  p.add("above", "5000.5");
+  p.add("below", "-1");
+  EXPECT_DOUBLE_EQ(*p.number("pressure", 0, 5000), 820.0);
+  EXPECT_EQ(error_of([&] { p.number("above", 0, 5000); }).parameter(), "above");
+  EXPECT_EQ(error_of([&] { p.number("below", 0, 5000); }).parameter(), "below");
+}
+
+TEST(Parameters, BooleanWordsInAnyCase) {
+  Parameters p("GET /x");
+  p.add("a", "true");
+  p.add("b", "YES");
+  p.add("c", "0");
+  p.add("d", "False");
+  p.add("e", "off-ish");
+  EXPECT_TRUE(p.boolean_or("a", false));
+  EXPECT_TRUE(p.boolean_or("b", false));
+  EXPECT_FALSE(p.boolean_or("c", true));
+  EXPECT_FALSE(p.boolean_or("d", true));
+  EXPECT_EQ(error_of([&] { p.boolean_or("e", true); }).parameter(), "e");
+}
+
+TEST(Parameters, ErrorsKeepTheReasonApartFromTheName) {
+  Parameters p("GET /x");
+  p.add("a", "1");
+  const ApiError duplicate = error_of([&] { p.add("a", "2"); });
+  EXPECT_STREQ(duplicate.what(), "a: given more than once");
+  EXPECT_EQ(duplicate.reason(), "given more than once");
+  EXPECT_EQ(duplicate.code(), "duplicate_parameter");
+}
+
 }  // namespace
 }  // namespace clearsky::api

@@ -2,9 +2,12 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
+
+#include "tests/support/place_time_cases.h"
 
 namespace {
 
@@ -87,11 +90,41 @@ TEST(SunCommand, InvalidInputNamesTheOptionAndFails) {
         Case{"sun --lat 0 --lon 0 --time 2013-05-27T11:45:00", "--time"},
         Case{"sun --lat 0 --lon 0 --pressure nan", "--pressure"},
         Case{"sun --lat 0 --lon 0 --elevation -7e6", "--elevation"},
-        Case{"sun --lat 0 --lon 0 --delta-t 1e4", "--delta-t"}}) {
+        Case{"sun --lat 0 --lon 0 --delta-t 1e4", "--delta-t"},
+        Case{"sun --lat 0 --lon 0 --time 7000-01-01T00:00:00Z", "--time"},
+        Case{"sun --lat 0 --lon 0 --delta-ut1 1", "--delta-ut1"},
+        Case{"sun --lat 0 --lon 0 --altitude 2e7", "--elevation"}}) {
     const CommandRun run = run_clearsky(c.arguments);
     EXPECT_NE(run.exit_status, 0) << c.arguments;
     EXPECT_NE(run.output.find(std::string("clearsky: ") + c.option + ":"), std::string::npos)
         << c.arguments << " -> " << run.output;
+  }
+}
+
+// The options take the values GET /v1/sun and the sky endpoints take (one table,
+// api/request/place_time.h), and refuse the others naming the option.
+TEST(SunCommand, SameRangesAsTheApi) {
+  for (const auto& c : clearsky::testing::place_time_cases()) {
+    if (c.parameter == "refraction") continue;  // a flag here (--no-refraction)
+    std::string option = "--" + c.parameter;
+    std::replace(option.begin(), option.end(), '_', '-');
+    std::string arguments = "sun";
+    for (const char* name : {"lat", "lon", "time"}) {
+      if (c.parameter != name)
+        arguments += std::string(" --") + name + " " +
+                     (std::string(name) == "time" ? "2013-05-27T11:45:00-04:00" : "10");
+    }
+    arguments += " " + option + " " + c.value + " --json";
+    const CommandRun run = run_clearsky(arguments);
+    if (c.accepted) {
+      EXPECT_EQ(run.exit_status, 0) << arguments << " -> " << run.output;
+    } else {
+      EXPECT_NE(run.exit_status, 0) << arguments;
+      // altitude's first option name is --elevation.
+      const std::string shown = c.parameter == "altitude" ? "--elevation" : option;
+      EXPECT_NE(run.output.find("clearsky: " + shown + ":"), std::string::npos)
+          << arguments << " -> " << run.output;
+    }
   }
 }
 
