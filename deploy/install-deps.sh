@@ -4,14 +4,21 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config git
+  build-essential cmake pkg-config git clang-format
   libcpp-httplib-dev libssl-dev zlib1g-dev nlohmann-json3-dev
   libopenexr-dev openexr libgeographiclib-dev
   libsqlite3-dev sqlite3 libarchive-dev p7zip-full libxxhash-dev
   prometheus-cpp-dev libspdlog-dev libcli11-dev libnlopt-cxx-dev
+  libhowardhinnant-date-dev tzdata libxxhash-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   wrk curl python3
+  python3-jsonschema
 )
+# The OpenAPI linter (docs/openapi.md) runs on node and npm: Debian's, unless the machine
+# already has a node with its npm (another distribution's nodejs package ships both).
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  packages+=(nodejs npm)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -40,15 +40,22 @@ nlohmann::ordered_json sample_json(const MeasuredSample& s, bool spectrum) {
 
 }  // namespace
 
-nlohmann::ordered_json list_datasets(storage::Database& db) {
-  nlohmann::ordered_json out = nlohmann::ordered_json::array();
-  for (const auto& d : storage::DatasetRepository(db).list())
-    out.push_back({{"name", d.name},
-                   {"format", d.format},
-                   {"created", d.created_utc},
-                   {"captures", d.captures},
-                   {"samples", d.samples}});
-  return out;
+ListPage list_datasets(storage::Database& db, Parameters query) {
+  const PageRequest request = parse_page_request(query);
+  query.reject_unused();
+  const auto datasets = storage::DatasetRepository(db).list_page(
+      request.limit,
+      request.cursor ? std::optional(name_from_cursor(*request.cursor)) : std::nullopt);
+  ListPage page;
+  page.limit = request.limit;
+  for (const auto& d : datasets.rows)
+    page.items.push_back({{"name", d.name},
+                          {"format", d.format},
+                          {"created", d.created_utc},
+                          {"captures", d.captures},
+                          {"samples", d.samples}});
+  if (datasets.more) page.next_cursor = name_cursor(datasets.rows.back().name);
+  return page;
 }
 
 nlohmann::ordered_json show_dataset(storage::Database& db, const std::string& name,

@@ -1,7 +1,8 @@
 // /v1/datasets, transport-free: list, show, delete and import stored measurement datasets
-// (docs/http-api.md). The HTTP layer passes the path's dataset name and the query; the
-// answers are JSON:
-//   list:   [{"name", "format", "created", "captures", "samples"}]
+// (docs/data-api.md "Datasets"). The HTTP layer passes the path's dataset name and the query;
+// the answers are JSON:
+//   list:   [{"name", "format", "created", "captures", "samples"}], by name, paged (limit,
+//           cursor: api/paging/list_page.h)
 //   show:   {"name", "format", "created", "captures": [{"label", "time" (ISO, site offset),
 //            "time_utc", "place": {"latitude", "longitude", "elevation_m"}, "sun_zenith",
 //            "sun_azimuth" (computed, SPA without refraction), "sun_azimuth_estimated" (or null),
@@ -21,12 +22,14 @@
 #include <optional>
 #include <string>
 
+#include "api/paging/list_page.h"
 #include "storage/importers/kider_importer.h"
 #include "storage/sqlite/database.h"
 
 namespace clearsky::api {
 
-nlohmann::ordered_json list_datasets(storage::Database& db);
+// limit and cursor from the query (400 for other parameters).
+ListPage list_datasets(storage::Database& db, Parameters query = Parameters("GET /v1/datasets"));
 
 struct ShowDatasetOptions {
   bool samples = false;

@@ -1,42 +1,80 @@
-// Background evaluation workers (evaluation_pool.h).
+// Background evaluations with their tickets (evaluation_pool.h).
 #include "api/evaluation/evaluation_pool.h"
 
-#include "api/error/api_error.h"
-
 namespace clearsky::api {
+namespace {
+
+void tell(const EvaluationPool::Finished& finished, const TicketState& done) {
+  if (!finished) return;
+  try {
+    finished(done);
+  } catch (...) {
+    // A callback's failure must not turn the run into a failure; the ticket holds the outcome.
+  }
+}
+
+}  // namespace
 
 EvaluationPool::EvaluationPool(OpenDatabase open_database, std::span<const ModelFactory> models,
                                const EvaluationPoolOptions& options)
-    : open_database_(std::move(open_database)), models_(models), options_(options) {
-  const unsigned workers = std::max(1u, options_.workers);
-  for (unsigned i = 0; i < workers; ++i) threads_.emplace_back([this] { work(); });
+    : models_(models),
+      options_(options),
+      workers_(std::move(open_database), {options.workers, options.max_queued, "evaluations", 30}) {
 }
 
-EvaluationPool::~EvaluationPool() {
-  {
-    std::lock_guard lock(mutex_);
-    stopping_ = true;
-    queue_.clear();
-  }
-  wake_.notify_all();
-  for (std::thread& t : threads_) t.join();
-}
+EvaluationPool::~EvaluationPool() { workers_.stop(); }
 
 std::int64_t EvaluationPool::submit(EvaluationRequest request, Finished on_finished) {
+  WorkerPool::Reservation place = workers_.reserve();
   std::int64_t id = 0;
   {
     std::lock_guard lock(mutex_);
-    if (queue_.size() >= options_.max_queued)
-      throw ApiError(503, "busy", "",
-                     std::to_string(queue_.size()) + " evaluations are queued; try again later",
-                     30);
     id = next_ticket_++;
-    tickets_[id] = TicketState{id, "queued", {}, {}};
-    request.options.capture_threads = options_.capture_threads;
-    queue_.push_back(Task{id, std::move(request), std::move(on_finished)});
+    tickets_[id] = TicketState{id, "queued", {}, {}, {}};
   }
-  wake_.notify_one();
+  request.options.capture_threads = options_.capture_threads;
+  request.on_run_status = [this, id](std::int64_t run_id, const std::string& model,
+                                     const std::string& status) {
+    record_run(id, run_id, model, status);
+  };
+  auto shared_request = std::make_shared<EvaluationRequest>(std::move(request));
+  auto finished = std::make_shared<Finished>(std::move(on_finished));
+  WorkerTask task;
+  task.started = [this, id] {
+    std::lock_guard lock(mutex_);
+    tickets_[id].status = "running";
+  };
+  task.run = [this, id, shared_request, finished](storage::Database& db) {
+    run_evaluation(db, *shared_request, models_);
+    tell(*finished, finish(id, "succeeded", ""));
+  };
+  task.failed = [this, id, finished](const std::string& error) {
+    tell(*finished, finish(id, "failed", error));
+  };
+  workers_.submit(std::move(place), std::move(task));
   return id;
+}
+
+void EvaluationPool::record_run(std::int64_t ticket, std::int64_t run_id, const std::string& model,
+                                const std::string& status) {
+  std::lock_guard lock(mutex_);
+  TicketState& state = tickets_[ticket];
+  for (TicketRun& run : state.runs) {
+    if (run.id != run_id) continue;
+    run.status = status;
+    return;
+  }
+  state.runs.push_back({run_id, model, status});
+  state.run_ids.push_back(run_id);
+}
+
+TicketState EvaluationPool::finish(std::int64_t ticket, const std::string& status,
+                                   const std::string& error) {
+  std::lock_guard lock(mutex_);
+  TicketState& state = tickets_[ticket];
+  state.status = status;
+  state.error = error;
+  return state;
 }
 
 std::optional<TicketState> EvaluationPool::ticket(std::int64_t id) const {
@@ -46,55 +84,23 @@ std::optional<TicketState> EvaluationPool::ticket(std::int64_t id) const {
   return found->second;
 }
 
-void EvaluationPool::wait_idle() {
-  std::unique_lock lock(mutex_);
-  idle_.wait(lock, [this] { return queue_.empty() && running_ == 0; });
-}
-
-void EvaluationPool::work() {
-  std::optional<storage::Database> db;
-  for (;;) {
-    Task task;
-    {
-      std::unique_lock lock(mutex_);
-      wake_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
-      if (stopping_) return;
-      task = std::move(queue_.front());
-      queue_.pop_front();
-      ++running_;
-      tickets_[task.ticket].status = "running";
-    }
-    TicketState done{task.ticket, "succeeded", {}, {}};
-    try {
-      if (!db) db.emplace(open_database_());
-      const EvaluationReport report = run_evaluation(*db, task.request, models_);
-      for (const ModelRun& run : report.models) done.run_ids.push_back(run.run_id);
-    } catch (const std::exception& e) {
-      done.status = "failed";
-      done.error = e.what();
-    }
-    if (task.on_finished) {
-      try {
-        task.on_finished(done);
-      } catch (...) {
-        // A callback's failure must not kill the worker; the ticket still records the run.
-      }
-    }
-    {
-      std::lock_guard lock(mutex_);
-      tickets_[task.ticket] = done;
-      --running_;
-    }
-    idle_.notify_all();
-  }
-}
+void EvaluationPool::wait_idle() { workers_.wait_idle(); }
 
 nlohmann::ordered_json ticket_to_json(const TicketState& ticket) {
+  nlohmann::ordered_json ids = nlohmann::ordered_json::array();
   nlohmann::ordered_json runs = nlohmann::ordered_json::array();
-  for (std::int64_t id : ticket.run_ids) runs.push_back(id);
-  nlohmann::ordered_json j{{"ticket", ticket.id}, {"status", ticket.status}, {"runs", runs}};
+  for (const TicketRun& run : ticket.runs) {
+    ids.push_back(run.id);
+    runs.push_back({{"model", run.model}, {"run", run.id}, {"status", run.status}});
+  }
+  nlohmann::ordered_json j{
+      {"ticket", ticket.id}, {"status", ticket.status}, {"runs", ids}, {"models", runs}};
   if (!ticket.error.empty()) j["error"] = ticket.error;
   return j;
+}
+
+std::string ticket_location(std::int64_t id) {
+  return "/v1/evaluations/tickets/" + std::to_string(id);
 }
 
 }  // namespace clearsky::api

@@ -1,15 +1,14 @@
-// The bounded worker pool that runs evaluations in the background (POST /v1/evaluations and
-// scheduled jobs), separate from the HTTP query threads so that evaluations never starve
-// queries: a fixed number of worker threads, a bounded queue (a full queue refuses with 503),
-// each worker with its own database connection (storage/sqlite/database.h: one connection
-// per thread). Each submission gets a ticket whose state (queued, running, succeeded, failed)
-// and run ids are kept in memory; the runs themselves are in the database.
+// The evaluations run in the background (POST /v1/evaluations and scheduled jobs) on a
+// bounded WorkerPool (api/work/worker_pool.h: a full queue refuses with 503, each worker with
+// its own database connection, reset after a failure). Each submission gets a ticket whose
+// state (queued, running, succeeded, failed) is kept in memory, with each model's run listed
+// as soon as the run starts (its id and status: running, succeeded, failed); the runs
+// themselves are in the database. Tickets are not kept across a restart (docs/data-api.md
+// "Durability"); their runs are.
 // Thread-safety: every member may be called from any thread.
 #pragma once
 
-#include <condition_variable>
 #include <cstdint>
-#include <deque>
 #include <functional>
 #include <map>
 #include <mutex>
@@ -17,10 +16,10 @@
 #include <optional>
 #include <span>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "api/evaluation/evaluation_runner.h"
+#include "api/work/worker_pool.h"
 #include "storage/sqlite/database.h"
 
 namespace clearsky::api {
@@ -32,17 +31,25 @@ struct EvaluationPoolOptions {
   unsigned capture_threads = 1;
 };
 
+struct TicketRun {
+  std::int64_t id = 0;
+  std::string model;
+  std::string status;  // running, succeeded, failed
+};
+
 struct TicketState {
   std::int64_t id = 0;
   std::string status;  // queued, running, succeeded, failed
   std::vector<std::int64_t> run_ids;
   std::string error;
+  std::vector<TicketRun> runs;  // in the order they started
 };
 
 class EvaluationPool {
  public:
-  using OpenDatabase = std::function<storage::Database()>;
-  // Called on the worker thread when a submission ends (succeeded or not).
+  using OpenDatabase = WorkerPool::OpenDatabase;
+  // Called on the worker thread when a submission ends (succeeded or not), after its ticket
+  // holds the outcome.
   using Finished = std::function<void(const TicketState&)>;
 
   EvaluationPool(OpenDatabase open_database, std::span<const ModelFactory> models,
@@ -60,27 +67,22 @@ class EvaluationPool {
   std::span<const ModelFactory> models() const { return models_; }
 
  private:
-  struct Task {
-    std::int64_t ticket = 0;
-    EvaluationRequest request;
-    Finished on_finished;
-  };
-  void work();
+  void record_run(std::int64_t ticket, std::int64_t run_id, const std::string& model,
+                  const std::string& status);
+  TicketState finish(std::int64_t ticket, const std::string& status, const std::string& error);
 
-  OpenDatabase open_database_;
   std::span<const ModelFactory> models_;
   EvaluationPoolOptions options_;
   mutable std::mutex mutex_;
-  std::condition_variable wake_;
-  std::condition_variable idle_;
-  std::deque<Task> queue_;
   std::map<std::int64_t, TicketState> tickets_;
   std::int64_t next_ticket_ = 1;
-  unsigned running_ = 0;
-  bool stopping_ = false;
-  std::vector<std::thread> threads_;
+  WorkerPool workers_;  // last: stopped and joined before the tickets go
 };
 
+// {"ticket", "status", "runs": [ids], "models": [{"model", "run", "status"}], "error" (when
+// failed)}; "runs" and "models" grow as each model's run starts.
 nlohmann::ordered_json ticket_to_json(const TicketState& ticket);
+// The path of a ticket.
+std::string ticket_location(std::int64_t id);
 
 }  // namespace clearsky::api

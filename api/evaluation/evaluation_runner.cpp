@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "api/request/sky_request.h"
 #include "models/core/parallel.h"
 #include "models/evaluation/capture_preparation.h"
 #include "models/registry.h"
@@ -25,13 +26,34 @@ storage::SampleErrorTable stored_sample_errors(const CaptureEvaluation& capture)
   return table;
 }
 
-ModelConfig options_for_model(const ModelDescriptor& descriptor, const ModelConfig& config) {
-  ModelConfig out = config;
-  std::erase_if(out.options, [&](const auto& option) {
-    const ParameterSpec* spec = descriptor.find_parameter(option.first);
-    return spec == nullptr || spec->atmosphere;
-  });
+nlohmann::json parameters_for_model(const ModelDescriptor& descriptor,
+                                    const nlohmann::json& parameters) {
+  nlohmann::json out = nlohmann::json::object();
+  if (!parameters.is_object()) return out;
+  for (const auto& [name, value] : parameters.items())
+    if (descriptor.find_parameter(name) != nullptr) out[name] = value;
   return out;
+}
+
+ModelConfig config_for_model(const ModelDescriptor& descriptor, const nlohmann::json& parameters) {
+  ModelConfig config;
+  const nlohmann::json applied = parameters_for_model(descriptor, parameters);
+  for (const auto& [name, value] : applied.items()) {
+    const ParameterSpec& spec = *descriptor.find_parameter(name);
+    if (spec.atmosphere && name == "albedo" && value.is_string() &&
+        value.get<std::string>() == "grass") {
+      config.atmosphere.ground_albedo.reset();
+      continue;
+    }
+    if (!value.is_number()) throw std::invalid_argument(name + ": must be a number");
+    const double number = value.get<double>();
+    if (!spec.atmosphere)
+      config.options[name] = number;
+    else if (!set_atmosphere_parameter(config.atmosphere, name, number))
+      throw std::logic_error("descriptor of " + descriptor.id +
+                             " lists unknown atmosphere parameter " + name);
+  }
+  return config;
 }
 
 std::vector<const ModelFactory*> resolve_models(const std::vector<std::string>& requested,
@@ -109,12 +131,14 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
     run.job_id = request.job_id;
     run.model_id = id;
     run.model_version = factory.descriptor->version;
-    const ModelConfig config = options_for_model(*factory.descriptor, request.config);
-    run.parameters = config.canonical_string();
+    const ModelConfig config = config_for_model(*factory.descriptor, request.parameters);
+    run.parameters = parameters_for_model(*factory.descriptor, request.parameters).dump();
+    run.configuration = config.canonical_string();
     run.software_version = request.software_version;
     run.min_wavelength_nm = request.options.min_wavelength_nm;
     run.max_wavelength_nm = request.options.max_wavelength_nm;
     const std::int64_t run_id = runs.start(run);
+    if (request.on_run_status) request.on_run_status(run_id, id, "running");
     try {
       EvaluationResult result = evaluate_model(factory, config, captures, request.options);
       std::vector<storage::RunCaptureResult> per_capture;
@@ -134,8 +158,10 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
       report.models.push_back({run_id, std::move(result)});
     } catch (const std::exception& e) {
       runs.fail(run_id, e.what());
+      if (request.on_run_status) request.on_run_status(run_id, id, "failed");
       throw;
     }
+    if (request.on_run_status) request.on_run_status(run_id, id, "succeeded");
   }
   return report;
 }

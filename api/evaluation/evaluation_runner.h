@@ -3,10 +3,16 @@
 // are loaded as stored and prepared as the paper did (capture_preparation.h: repair of the
 // defective sample, SPA sun zenith, sun azimuth from the sky's symmetry); the preparation
 // steps are stored with each run and the estimated azimuths with the captures.
+// Parameters (docs/data-api.md "Evaluation parameters"): the request carries them as the user
+// gave them; each model gets those its descriptor lists (atmosphere parameters and options
+// alike) and nothing else, so that a parameter another requested model takes neither changes
+// this model's configuration (its cache key, its tables) nor is recorded on its run.
 // Thread-safety: uses the given Database from the calling thread only.
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
 #include <string>
@@ -22,10 +28,16 @@ namespace clearsky::api {
 struct EvaluationRequest {
   std::string dataset;
   std::vector<std::string> models;  // ids; {"all"} or empty: every registered model
-  ModelConfig config;               // default: the paper's atmosphere and 40-bin grid
+  // Name -> value as the user gave it (a number, or "grass" for albedo); on the paper's
+  // atmosphere and 40-bin grid. Checked by parse_evaluation_parameters (evaluations_api.h).
+  nlohmann::json parameters = nlohmann::json::object();
   std::string software_version;
   std::optional<std::int64_t> job_id;
   EvaluationOptions options;
+  // Told each model's run status as it changes: "running" when the run is recorded (before it
+  // is computed), then "succeeded" or "failed".
+  std::function<void(std::int64_t run_id, const std::string& model_id, const std::string& status)>
+      on_run_status;
 };
 
 struct ModelRun {
@@ -44,12 +56,16 @@ struct EvaluationReport {
 // both the CLI's JSON and the API's answer are made of, so that the two agree to the bit.
 storage::SampleErrorTable stored_sample_errors(const CaptureEvaluation& capture);
 
+// The parameters among `parameters` that the model's descriptor lists (the others dropped).
+nlohmann::json parameters_for_model(const ModelDescriptor& descriptor,
+                                    const nlohmann::json& parameters);
+// The model's configuration: the defaults with the parameters its descriptor lists applied
+// (unchecked: validate_config checks it). Throws std::invalid_argument naming a parameter
+// whose value is neither a number nor, for albedo, "grass".
+ModelConfig config_for_model(const ModelDescriptor& descriptor, const nlohmann::json& parameters);
+
 // The factories named by a --models value: "all" (every one of `available`) or ids; throws
 // std::invalid_argument naming unknown ids (before anything is computed).
-// The request's configuration for one model: the options its descriptor lists, the others
-// (options of the other requested models) dropped.
-ModelConfig options_for_model(const ModelDescriptor& descriptor, const ModelConfig& config);
-
 std::vector<const ModelFactory*> resolve_models(const std::vector<std::string>& requested,
                                                 std::span<const ModelFactory> available);
 

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <map>
+#include <sstream>
 
 #include "api/encode/iso8601_time.h"
 #include "api/error/api_error.h"
@@ -41,9 +43,10 @@ std::map<std::int64_t, std::string> dataset_names(storage::Database& db) {
   return names;
 }
 
-bool same_setup(const storage::RunRecord& a, const storage::RunRecord& b) {
-  return a.model_id == b.model_id && a.parameters == b.parameters &&
-         a.min_wavelength_nm == b.min_wavelength_nm && a.max_wavelength_nm == b.max_wavelength_nm;
+// A run's stored parameters (a JSON object text from schema version 4).
+nlohmann::ordered_json stored_parameters_json(const std::string& text) {
+  const auto parsed = nlohmann::ordered_json::parse(text, nullptr, false);
+  return parsed.is_object() ? parsed : nlohmann::ordered_json::object();
 }
 
 }  // namespace
@@ -56,41 +59,52 @@ std::int64_t parse_id(const std::string& text, const std::string& parameter) {
   return id;
 }
 
-ModelConfig parse_evaluation_parameters(const nlohmann::json& parameters,
-                                        std::span<const ModelFactory* const> models) {
-  ModelConfig config;
-  if (parameters.is_null()) return config;
+nlohmann::json parse_evaluation_parameters(const nlohmann::json& parameters,
+                                           std::span<const ModelFactory* const> models) {
+  if (parameters.is_null()) return nlohmann::json::object();
   if (!parameters.is_object())
     throw invalid_parameter("parameters", "must be an object of parameter names and numbers");
   for (const auto& [name, value] : parameters.items()) {
-    if (name == "albedo" && value.is_string() && value.get<std::string>() == "grass") {
-      config.atmosphere.ground_albedo.reset();
-      continue;
+    const bool grass = name == "albedo" && value.is_string() && value.get<std::string>() == "grass";
+    if (!grass && !value.is_number()) throw invalid_parameter(name, "must be a number");
+  }
+  if (models.empty()) return parameters;
+  for (const auto& [name, value] : parameters.items()) {
+    std::vector<const ModelFactory*> takers;
+    for (const ModelFactory* model : models)
+      if (model->descriptor->find_parameter(name) != nullptr) takers.push_back(model);
+    if (takers.empty()) {
+      std::string ids;
+      for (const ModelFactory* model : models)
+        ids += (ids.empty() ? "" : ", ") + model->descriptor->id;
+      throw ApiError(400, "unknown_parameter", name,
+                     name + ": applies to none of the requested models (" + ids +
+                         "); a parameter is refused unless one of them lists it "
+                         "(GET /v1/models/{id})");
     }
-    if (!value.is_number()) throw invalid_parameter(name, "must be a number");
+    if (!value.is_number()) continue;  // albedo "grass"
+    // Within the range of every requested model that takes it (e.g. Preetham's turbidity
+    // starts at 2, the shared atmosphere's at 1), as the sky endpoints check it.
     const double number = value.get<double>();
-    if (set_atmosphere_parameter(config.atmosphere, name, number)) continue;
-    const bool listed =
-        models.empty() || std::ranges::any_of(models, [&](const ModelFactory* model) {
-          const ParameterSpec* spec = model->descriptor->find_parameter(name);
-          return spec != nullptr && !spec->atmosphere;
-        });
-    if (!listed)
-      throw unknown_parameter(name,
-                              "the evaluation parameters (the atmosphere parameters of the sky "
-                              "endpoints: alpha, beta, g, turbidity, albedo, ..., or an option "
-                              "of a requested model)");
-    config.options[name] = number;
+    for (const ModelFactory* model : takers) {
+      const ParameterSpec& spec = *model->descriptor->find_parameter(name);
+      if (!(number >= spec.min_value && number <= spec.max_value)) {
+        std::ostringstream message;
+        message << "must be in [" << spec.min_value << ", " << spec.max_value << "] for "
+                << model->descriptor->id;
+        throw invalid_parameter(name, message.str());
+      }
+      if (spec.integer && number != std::floor(number))
+        throw invalid_parameter(name, "must be an integer");
+    }
   }
   try {
-    config.atmosphere.validate();
-    // Each option within the range of every requested model that lists it.
     for (const ModelFactory* model : models)
-      validate_model_config(*model->descriptor, options_for_model(*model->descriptor, config));
+      validate_config(*model->descriptor, config_for_model(*model->descriptor, parameters));
   } catch (const std::invalid_argument& e) {
     throw from_invalid_argument(e);
   }
-  return config;
+  return parameters;
 }
 
 EvaluationRequest parse_evaluation_request(storage::Database& db, const std::string& body,
@@ -132,7 +146,8 @@ EvaluationRequest parse_evaluation_request(storage::Database& db, const std::str
   } catch (const std::invalid_argument& e) {
     throw ApiError(404, "unknown_model", "models", std::string("models: ") + e.what());
   }
-  request.config = parse_evaluation_parameters(j.value("parameters", nlohmann::json()), factories);
+  request.parameters =
+      parse_evaluation_parameters(j.value("parameters", nlohmann::json()), factories);
   return request;
 }
 
@@ -146,6 +161,11 @@ EvaluationFilter parse_evaluation_filter(Parameters query) {
   if (f.status && *f.status != "running" && *f.status != "succeeded" && *f.status != "failed")
     throw invalid_parameter("status", "one of running, succeeded, failed");
   if (const auto job = query.text("job")) f.job_id = parse_id(*job, "job");
+  if (const auto job = query.text("job_id")) {
+    if (f.job_id) throw conflicting_parameters("job_id", "job");
+    f.job_id = parse_id(*job, "job_id");
+  }
+  f.page = parse_page_request(query);
   query.reject_unused();
   return f;
 }
@@ -167,46 +187,40 @@ ShowEvaluationOptions parse_show_evaluation_options(Parameters query) {
   return options;
 }
 
-nlohmann::ordered_json list_evaluations(storage::Database& db, const EvaluationFilter& filter) {
+ListPage list_evaluations(storage::Database& db, const EvaluationFilter& filter) {
+  const PageRequest& page = filter.page;
   const auto names = dataset_names(db);
+  storage::RunFilter where;
   if (filter.dataset) {
-    bool known = false;
-    for (const auto& [id, name] : names) known = known || name == *filter.dataset;
-    if (!known)
+    for (const auto& [id, name] : names)
+      if (name == *filter.dataset) where.dataset_id = id;
+    if (!where.dataset_id)
       throw ApiError(404, "unknown_dataset", "dataset",
                      "dataset: no dataset named '" + *filter.dataset + "'");
   }
-  std::vector<std::pair<storage::RunRecord, std::string>> runs;
-  storage::EvaluationRunRepository repository(db);
-  for (const auto& [dataset_id, name] : names) {
-    if (filter.dataset && name != *filter.dataset) continue;
-    for (storage::RunRecord& run : repository.list(dataset_id)) {
-      if (filter.model && run.model_id != *filter.model) continue;
-      if (filter.status && run.status != *filter.status) continue;
-      if (filter.job_id && run.job_id != filter.job_id) continue;
-      if (filter.since_unix_s || filter.until_unix_s) {
-        const double started = time_of(run.started_utc, "started");
-        if (filter.since_unix_s && started < *filter.since_unix_s) continue;
-        if (filter.until_unix_s && started >= *filter.until_unix_s) continue;
-      }
-      runs.emplace_back(std::move(run), name);
-    }
+  where.model_id = filter.model;
+  where.status = filter.status;
+  where.job_id = filter.job_id;
+  where.since_unix_s = filter.since_unix_s;
+  where.until_unix_s = filter.until_unix_s;
+  const auto runs = storage::EvaluationRunRepository(db).list(
+      where, page.limit, page.cursor ? std::optional(id_from_cursor(*page.cursor)) : std::nullopt);
+  ListPage out;
+  out.limit = page.limit;
+  for (const storage::RunRecord& run : runs.rows) {
+    const auto dataset = names.find(run.dataset_id);
+    out.items.push_back(
+        {{"id", run.id},
+         {"dataset", dataset == names.end() ? nlohmann::ordered_json(nullptr)
+                                            : nlohmann::ordered_json(dataset->second)},
+         {"model", run.model_id},
+         {"status", run.status},
+         {"started", run.started_utc},
+         {"finished", optional_value(run.finished_utc)},
+         {"rmse", optional_number(run.rmse)},
+         {"job", optional_value(run.job_id)}});
   }
-  std::sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) {
-    if (a.first.started_utc != b.first.started_utc)
-      return a.first.started_utc > b.first.started_utc;
-    return a.first.id > b.first.id;
-  });
-  nlohmann::ordered_json out = nlohmann::ordered_json::array();
-  for (const auto& [run, name] : runs)
-    out.push_back({{"id", run.id},
-                   {"dataset", name},
-                   {"model", run.model_id},
-                   {"status", run.status},
-                   {"started", run.started_utc},
-                   {"finished", optional_value(run.finished_utc)},
-                   {"rmse", optional_number(run.rmse)},
-                   {"job", optional_value(run.job_id)}});
+  if (runs.more) out.next_cursor = id_cursor(runs.rows.back().id);
   return out;
 }
 
@@ -222,16 +236,11 @@ nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_i
   nlohmann::ordered_json history{
       {"previous_run", nullptr}, {"previous_rmse", nullptr}, {"rmse_changed", nullptr}};
   if (run->status == "succeeded" && run->rmse) {
-    // list() is newest first: the first earlier succeeded run with the same setup.
-    for (const storage::RunRecord& other : repository.list(run->dataset_id)) {
-      if (other.id >= run->id || other.status != "succeeded" || !other.rmse ||
-          !same_setup(other, *run))
-        continue;
-      const double difference = std::abs(*run->rmse - *other.rmse);
-      history = {{"previous_run", other.id},
-                 {"previous_rmse", *other.rmse},
-                 {"rmse_changed", difference > 1e-9 * std::max(1.0, std::abs(*other.rmse))}};
-      break;
+    if (const auto other = repository.previous_like(*run)) {
+      const double difference = std::abs(*run->rmse - *other->rmse);
+      history = {{"previous_run", other->id},
+                 {"previous_rmse", *other->rmse},
+                 {"rmse_changed", difference > 1e-9 * std::max(1.0, std::abs(*other->rmse))}};
     }
   }
 
@@ -265,7 +274,7 @@ nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_i
                                          : nlohmann::ordered_json(dataset->second)},
       {"model", run->model_id},
       {"model_version", run->model_version},
-      {"parameters", run->parameters},
+      {"parameters", stored_parameters_json(run->parameters)},
       {"software_version", run->software_version},
       {"wavelength_range_nm", {run->min_wavelength_nm, run->max_wavelength_nm}}};
   if (options.samples == SampleDetail::spectra)

@@ -14,7 +14,10 @@ bool CorsPolicy::allows(std::string_view origin) const {
 }
 
 void CorsPolicy::add_headers(std::optional<std::string_view> origin, ApiResponse& response) const {
-  if (origins_.empty()) return;
+  // Once per answer: a header given twice (Access-Control-Allow-Origin) makes browsers refuse it.
+  if (origins_.empty() || response.header("Access-Control-Allow-Origin") ||
+      response.header("Vary") == "Origin")
+    return;
   if (!any_) response.headers.emplace_back("Vary", "Origin");
   if (!origin || !allows(*origin)) return;
   response.headers.emplace_back("Access-Control-Allow-Origin", any_ ? "*" : std::string(*origin));

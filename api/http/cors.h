@@ -23,6 +23,7 @@ class CorsPolicy {
   bool allows(std::string_view origin) const;
   // Adds the CORS headers of an answer to a request from origin (none when absent or not
   // allowed; Vary: Origin whenever origins are configured, since the answer depends on it).
+  // Adds nothing to an answer that has them already.
   void add_headers(std::optional<std::string_view> origin, ApiResponse& response) const;
   // The answer to OPTIONS on a known path whose methods give allow (route_match.h).
   ApiResponse options(const ApiRequest& request, const std::string& allow) const;

@@ -1,4 +1,4 @@
-// Background import workers (import_pool.h).
+// Background dataset imports (import_pool.h).
 #include "api/imports/import_pool.h"
 
 #include "api/datasets/datasets_api.h"
@@ -7,63 +7,48 @@
 namespace clearsky::api {
 
 ImportPool::ImportPool(OpenDatabase open_database, const ImportPoolOptions& options)
-    : open_database_(std::move(open_database)), options_(options) {
-  const unsigned workers = std::max(1u, options_.workers);
-  for (unsigned i = 0; i < workers; ++i) threads_.emplace_back([this] { work(); });
-}
+    : open_database_(open_database),
+      options_(options),
+      workers_(std::move(open_database), {options.workers, options.max_queued, "imports", 30}) {}
 
-ImportPool::~ImportPool() {
-  std::deque<Task> dropped;
-  {
-    std::lock_guard lock(mutex_);
-    stopping_ = true;
-    dropped.swap(queue_);
-  }
-  wake_.notify_all();
-  for (std::thread& t : threads_) t.join();
-  if (dropped.empty()) return;
-  try {
-    storage::Database db = open_database_();
-    for (Task& task : dropped) {
-      task.spool.reset();
-      storage::ImportRepository(db).fail(task.id, {}, "cancelled",
-                                         "cancelled: the server stopped before the import ran");
-    }
-  } catch (const std::exception& e) {
-    // Start-up marks them failed all the same (fail_unfinished).
-    if (options_.log)
-      options_.log(0, false, std::string("cannot record cancelled imports: ") + e.what());
-  }
-}
+ImportPool::~ImportPool() { workers_.stop(); }
 
 std::int64_t ImportPool::submit(storage::Database& db, const storage::NewImport& what,
                                 const std::filesystem::path& source,
                                 std::unique_ptr<UploadSpool> spool) {
-  {
+  WorkerPool::Reservation place = workers_.reserve();
+  // The row is written holding a place but not the pool's lock: the database may wait for an
+  // import's commit.
+  const std::int64_t id = storage::ImportRepository(db).create(what);
+  auto task = std::make_shared<Task>(Task{id, what, source, std::move(spool)});
+  WorkerTask work;
+  work.started = [this, task] {
     std::lock_guard lock(mutex_);
-    if (queue_.size() + reserved_ >= options_.max_queued)
-      throw ApiError(503, "busy", "",
-                     std::to_string(queue_.size()) + " imports are queued; try again later", 30);
-    ++reserved_;
-  }
-  // The row is written without the lock held: the database may wait for an import's commit.
-  std::int64_t id = 0;
-  try {
-    id = storage::ImportRepository(db).create(what);
-  } catch (...) {
-    {
-      std::lock_guard lock(mutex_);
-      --reserved_;
+    running_[task->id] = storage::ImportProgress{};
+  };
+  work.run = [this, task](storage::Database& worker_db) {
+    run(worker_db, *task);
+    end(*task);
+  };
+  // Recording the outcome failed (the database is unavailable): start-up marks the row failed
+  // if it is left unfinished.
+  work.failed = [this, task](const std::string& error) {
+    end(*task);
+    if (options_.log) options_.log(task->id, false, "cannot record the outcome: " + error);
+  };
+  work.dropped = [this, task] {
+    task->spool.reset();
+    try {
+      storage::Database cancel_db = open_database_();
+      storage::ImportRepository(cancel_db).fail(
+          task->id, {}, "cancelled", "cancelled: the server stopped before the import ran");
+    } catch (const std::exception& e) {
+      // Start-up marks it failed all the same (fail_unfinished).
+      if (options_.log)
+        options_.log(task->id, false, std::string("cannot record the cancellation: ") + e.what());
     }
-    idle_.notify_all();
-    throw;
-  }
-  {
-    std::lock_guard lock(mutex_);
-    --reserved_;
-    queue_.push_back(Task{id, what, source, std::move(spool)});
-  }
-  wake_.notify_one();
+  };
+  workers_.submit(std::move(place), std::move(work));
   return id;
 }
 
@@ -74,40 +59,12 @@ std::optional<storage::ImportProgress> ImportPool::live_progress(std::int64_t id
   return found->second;
 }
 
-void ImportPool::wait_idle() {
-  std::unique_lock lock(mutex_);
-  idle_.wait(lock, [this] { return queue_.empty() && reserved_ == 0 && running_.empty(); });
-}
+void ImportPool::wait_idle() { workers_.wait_idle(); }
 
-void ImportPool::work() {
-  std::optional<storage::Database> db;
-  for (;;) {
-    Task task;
-    {
-      std::unique_lock lock(mutex_);
-      wake_.wait(lock, [this] { return stopping_ || !queue_.empty(); });
-      if (stopping_) return;
-      task = std::move(queue_.front());
-      queue_.pop_front();
-      running_[task.id] = storage::ImportProgress{};
-    }
-    try {
-      if (!db) db.emplace(open_database_());
-      run(*db, task);
-    } catch (const std::exception& e) {
-      // Recording the outcome failed (the database is unavailable): start-up marks the row
-      // failed if it is left unfinished.
-      if (options_.log)
-        options_.log(task.id, false, std::string("cannot record the outcome: ") + e.what());
-      db.reset();
-    }
-    task.spool.reset();
-    {
-      std::lock_guard lock(mutex_);
-      running_.erase(task.id);
-    }
-    idle_.notify_all();
-  }
+void ImportPool::end(Task& task) {
+  task.spool.reset();
+  std::lock_guard lock(mutex_);
+  running_.erase(task.id);
 }
 
 void ImportPool::run(storage::Database& db, Task& task) {

@@ -1,18 +1,16 @@
-// The bounded background workers that run dataset imports (POST /v1/datasets), on
-// their own threads, never the HTTP query threads (the same design as the EvaluationPool:
-// a fixed number of workers, a bounded queue refusing with 503, one database connection per
-// worker). Each import is a row of the imports table (storage/repositories/import_repository.h)
-// written before it is queued, so its state survives a restart; the live progress of running
-// imports is kept here in memory (the import's transaction holds SQLite's write lock, so
-// progress is not written while it runs) and merged into the stored row by imports_api.h.
+// The dataset imports (POST /v1/datasets) run in the background on a bounded WorkerPool
+// (api/work/worker_pool.h: never the HTTP query threads, a full queue refuses with 503, each
+// worker with its own database connection, reset after a failure). Each import is a row of
+// the imports table (storage/repositories/import_repository.h) written before it is queued,
+// so its state survives a restart; the live progress of running imports is kept here in
+// memory (the import's transaction holds SQLite's write lock, so progress is not written
+// while it runs) and merged into the stored row by imports_api.h.
 // An uploaded archive's spool file belongs to its task and is removed when the import ends,
 // whatever happened, before its final state is recorded.
 // Thread-safety: every member may be called from any thread.
 #pragma once
 
-#include <condition_variable>
 #include <cstdint>
-#include <deque>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -20,10 +18,9 @@
 #include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
-#include <vector>
 
 #include "api/datasets/upload_spool.h"
+#include "api/work/worker_pool.h"
 #include "storage/repositories/import_repository.h"
 #include "storage/sqlite/database.h"
 
@@ -39,7 +36,7 @@ struct ImportPoolOptions {
 
 class ImportPool {
  public:
-  using OpenDatabase = std::function<storage::Database()>;
+  using OpenDatabase = WorkerPool::OpenDatabase;
 
   ImportPool(OpenDatabase open_database, const ImportPoolOptions& options = {});
   // Lets running imports end; queued ones are recorded as failed (cancelled) and their spool
@@ -66,19 +63,15 @@ class ImportPool {
     std::filesystem::path source;
     std::unique_ptr<UploadSpool> spool;
   };
-  void work();
   void run(storage::Database& db, Task& task);
+  // The task is over, recorded or not: its upload removed, its live progress dropped.
+  void end(Task& task);
 
   OpenDatabase open_database_;
   ImportPoolOptions options_;
   mutable std::mutex mutex_;
-  std::condition_variable wake_;
-  std::condition_variable idle_;
-  std::deque<Task> queue_;
-  std::size_t reserved_ = 0;  // submissions between their slot check and their queueing
   std::map<std::int64_t, storage::ImportProgress> running_;
-  bool stopping_ = false;
-  std::vector<std::thread> threads_;
+  WorkerPool workers_;  // last: stopped and joined before the progress map goes
 };
 
 }  // namespace clearsky::api

@@ -57,18 +57,23 @@ nlohmann::ordered_json import_to_json(const storage::ImportRecord& record,
       {"location", import_location(record.id)}};
 }
 
-nlohmann::ordered_json list_imports(storage::Database& db, const ImportPool* pool,
-                                    Parameters query) {
+ListPage list_imports(storage::Database& db, const ImportPool* pool, Parameters query) {
   const std::optional<std::string> status = query.text("status");
   if (status && *status != "queued" && *status != "running" && *status != "succeeded" &&
       *status != "failed")
     throw invalid_parameter("status", "one of queued, running, succeeded, failed");
   const std::optional<std::string> dataset = query.text("dataset");
+  const PageRequest request = parse_page_request(query);
   query.reject_unused();
-  nlohmann::ordered_json out = nlohmann::ordered_json::array();
-  for (const storage::ImportRecord& r : storage::ImportRepository(db).list(100, status, dataset))
-    out.push_back(import_to_json(r, pool ? pool->live_progress(r.id) : std::nullopt));
-  return out;
+  const auto imports = storage::ImportRepository(db).list_page(
+      request.limit, status, dataset,
+      request.cursor ? std::optional(id_from_cursor(*request.cursor)) : std::nullopt);
+  ListPage page;
+  page.limit = request.limit;
+  for (const storage::ImportRecord& r : imports.rows)
+    page.items.push_back(import_to_json(r, pool ? pool->live_progress(r.id) : std::nullopt));
+  if (imports.more) page.next_cursor = id_cursor(imports.rows.back().id);
+  return page;
 }
 
 nlohmann::ordered_json show_import(storage::Database& db, const ImportPool* pool, std::int64_t id) {

@@ -1,4 +1,4 @@
-// /v1/imports, transport-free: the state of dataset imports, stored rows
+// /v1/imports, transport-free: the state of dataset imports (docs/data-api.md "Imports"), stored rows
 // (storage/repositories/import_repository.h) with the live progress of those running in the
 // server's ImportPool. JSON of one import:
 //   {"id", "dataset", "format", "source": "upload"|"path", "path" (or null),
@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "api/imports/import_pool.h"
+#include "api/paging/list_page.h"
 #include "api/request/parameters.h"
 #include "storage/sqlite/database.h"
 
@@ -32,10 +33,10 @@ std::string import_location(std::int64_t id);
 nlohmann::ordered_json import_to_json(const storage::ImportRecord& record,
                                       const std::optional<storage::ImportProgress>& live = {});
 
-// The 100 newest, newest first; filters status and dataset from the query (400 for other
-// parameters). pool may be null (no live progress).
-nlohmann::ordered_json list_imports(storage::Database& db, const ImportPool* pool,
-                                    Parameters query);
+// Newest (highest id) first, paged (limit, cursor: api/paging/list_page.h); filters status and
+// dataset from the query, applied before the limit (400 for other parameters). pool may be
+// null (no live progress).
+ListPage list_imports(storage::Database& db, const ImportPool* pool, Parameters query);
 // 404 unknown_import when absent.
 nlohmann::ordered_json show_import(storage::Database& db, const ImportPool* pool, std::int64_t id);
 

@@ -87,8 +87,10 @@ std::string job_time_text(std::int64_t unix_s) {
   return format_iso8601_time(static_cast<double>(unix_s), 0, true);
 }
 
-nlohmann::ordered_json create_job(storage::Database& db, const std::string& body,
-                                  std::span<const ModelFactory> available, double now_unix_s) {
+std::string job_location(std::int64_t id) { return "/v1/jobs/" + std::to_string(id); }
+
+CreatedResource create_job(storage::Database& db, const std::string& body,
+                           std::span<const ModelFactory> available, double now_unix_s) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(body);
@@ -132,13 +134,20 @@ nlohmann::ordered_json create_job(storage::Database& db, const std::string& body
     if (existing.name == job.name)
       throw ApiError(409, "conflict", "name", "name: a job named '" + job.name + "' exists");
   const std::int64_t id = jobs.create(job);
-  return job_json(db, find_job(db, id));
+  return {job_json(db, find_job(db, id)), job_location(id)};
 }
 
-nlohmann::ordered_json list_jobs(storage::Database& db) {
-  nlohmann::ordered_json out = nlohmann::ordered_json::array();
-  for (const auto& job : storage::JobRepository(db).list()) out.push_back(job_json(db, job));
-  return out;
+ListPage list_jobs(storage::Database& db, Parameters query) {
+  const PageRequest request = parse_page_request(query);
+  query.reject_unused();
+  const auto jobs = storage::JobRepository(db).list_page(
+      request.limit,
+      request.cursor ? std::optional(name_from_cursor(*request.cursor)) : std::nullopt);
+  ListPage page;
+  page.limit = request.limit;
+  for (const auto& job : jobs.rows) page.items.push_back(job_json(db, job));
+  if (jobs.more) page.next_cursor = name_cursor(jobs.rows.back().name);
+  return page;
 }
 
 nlohmann::ordered_json show_job(storage::Database& db, std::int64_t id) {
@@ -175,7 +184,7 @@ EvaluationRequest job_evaluation_request(storage::Database& db, const storage::J
   if (request.dataset.empty())
     throw std::invalid_argument("job " + job.name + ": its dataset no longer exists");
   request.models = split_models(job.models);
-  request.config = parse_evaluation_parameters(
+  request.parameters = parse_evaluation_parameters(
       job.parameters.empty() ? nlohmann::json() : nlohmann::json::parse(job.parameters));
   request.software_version = software_version;
   request.job_id = job.id;

@@ -1,14 +1,15 @@
 // /v1/jobs, transport-free: scheduled evaluations (docs/architecture.md "The scheduler"). A job
 // evaluates models against a stored dataset on a 5-field UTC cron schedule (cron_schedule.h);
-// the scheduler (server/scheduler) runs it. JSON:
+// the scheduler (server/scheduler) runs it (docs/data-api.md "Jobs"). JSON:
 //   create body: {"name", "schedule", "dataset", "models": "all" or [ids], "parameters": {...}}
 //                (parameters as POST /v1/evaluations; optional)
 //   a job:  {"id", "name", "schedule", "dataset", "models": [ids] or "all", "parameters",
 //            "paused", "created", "last_run", "next_run" (ISO 8601 UTC or null),
 //            "last_result": [{"run", "model", "status", "started", "rmse"}] (the newest run of each
 //            model the job evaluated)}
-// Creating computes the next run from now; resuming recomputes it from now (a paused job does
-// not catch up). Errors are ApiError: 400 body, schedule or parameter; 404 unknown job,
+// The list is by name, paged (api/paging/list_page.h). Creating computes the next run from
+// now and answers the job with its Location; resuming recomputes it from now (a paused job
+// does not catch up). Deleting a job keeps its runs, which keep its id (never reused). Errors are ApiError: 400 body, schedule or parameter; 404 unknown job,
 // dataset or model; 409 name taken.
 // Thread-safety: each call uses the given Database from the calling thread only.
 #pragma once
@@ -19,14 +20,19 @@
 #include <string>
 
 #include "api/evaluation/evaluation_runner.h"
+#include "api/paging/list_page.h"
+#include "api/resources/created_resource.h"
 #include "storage/repositories/job_repository.h"
 #include "storage/sqlite/database.h"
 
 namespace clearsky::api {
 
-nlohmann::ordered_json create_job(storage::Database& db, const std::string& body,
-                                  std::span<const ModelFactory> available, double now_unix_s);
-nlohmann::ordered_json list_jobs(storage::Database& db);
+CreatedResource create_job(storage::Database& db, const std::string& body,
+                           std::span<const ModelFactory> available, double now_unix_s);
+// limit and cursor from the query (400 for other parameters).
+ListPage list_jobs(storage::Database& db, Parameters query = Parameters("GET /v1/jobs"));
+// The path of a job.
+std::string job_location(std::int64_t id);
 nlohmann::ordered_json show_job(storage::Database& db, std::int64_t id);
 nlohmann::ordered_json pause_job(storage::Database& db, std::int64_t id);
 nlohmann::ordered_json resume_job(storage::Database& db, std::int64_t id, double now_unix_s);

@@ -45,6 +45,7 @@ ordered_json build() {
              {"description", "A clearsky serve instance"},
              {"variables",
               {{"host", {{"default", "127.0.0.1"}}}, {"port", {{"default", "8080"}}}}}}})},
+      {"tags", openapi_tags()},
       {"paths", std::move(paths)},
       {"components", openapi_components()}};
   return document;

@@ -1,134 +1,173 @@
-// A small strict ISO 8601 date-time parser (iso8601_time.h): fixed-width fields are read in
-// order, each checked, and the civil date is turned into days since 1970 with std::chrono.
+// Strict ISO 8601 date-time parsing (iso8601_time.h): the text's shape is checked by regular
+// expressions (fixed-width fields), the calendar and the IANA time zones are date/tz's.
 #include "api/parse/iso8601_time.h"
 
+#include <date/date.h>
+#include <date/tz.h>
+
+#include <charconv>
 #include <chrono>
-#include <cstddef>
-#include <optional>
+#include <regex>
+#include <stdexcept>
 
 #include "api/parse/invalid_parameter.h"
 
 namespace clearsky::api {
 namespace {
 
-// A cursor over the text that reads fixed-width digit fields and literal characters.
-class Reader {
- public:
-  explicit Reader(std::string_view text) : text_(text) {}
+constexpr int kMaxUtcOffsetMin = 14 * 60;
 
-  bool done() const { return pos_ == text_.size(); }
-  std::optional<char> peek() const {
-    return done() ? std::nullopt : std::optional<char>(text_[pos_]);
+// YYYY-MM-DDThh:mm[:ss[.fff]] at the start of the text (the decimal mark may be ',').
+const std::regex& date_time_pattern() {
+  static const std::regex pattern(
+      "([0-9]{4})-([0-9]{2})-([0-9]{2})[Tt]([0-9]{2}):([0-9]{2})"
+      "(?::([0-9]{2})(?:[.,]([0-9]+))?)?");
+  return pattern;
+}
+
+// Z, or +hh:mm, +hhmm, +hh (and with '-').
+const std::regex& utc_offset_pattern() {
+  static const std::regex pattern("[Zz]|([+-])([0-9]{2})(?::?([0-9]{2}))?");
+  return pattern;
+}
+
+// A civil date and time of day, each field in range.
+struct LocalTime {
+  date::year_month_day date;
+  int hour = 0;
+  int minute = 0;
+  int second = 0;
+  double fraction = 0.0;  // of a second, in [0, 1)
+
+  // Seconds since 1970-01-01T00:00:00 of the same calendar (no offset applied).
+  double seconds_since_epoch() const {
+    const double days = date::sys_days(date).time_since_epoch().count();
+    return days * 86400.0 + hour * 3600.0 + minute * 60.0 + second + fraction;
   }
-  bool accept(char c) {
-    if (peek() != c) return false;
-    ++pos_;
-    return true;
+  date::local_seconds whole_seconds() const {
+    return date::local_days(date) + std::chrono::hours(hour) + std::chrono::minutes(minute) +
+           std::chrono::seconds(second);
   }
-  // Exactly `width` decimal digits.
-  std::optional<int> digits(std::size_t width) {
-    if (text_.size() - pos_ < width) return std::nullopt;
-    int value = 0;
-    for (std::size_t i = 0; i < width; ++i) {
-      const char c = text_[pos_ + i];
-      if (c < '0' || c > '9') return std::nullopt;
-      value = value * 10 + (c - '0');
+};
+
+class Iso8601Reader {
+ public:
+  Iso8601Reader(std::string_view text, const std::string& parameter)
+      : text_(text), parameter_(parameter) {}
+
+  InvalidParameter fail(const std::string& why) const {
+    return InvalidParameter(
+        parameter_,
+        why + " in " + quoted(text_) +
+            "; expected an ISO 8601 time with offset such as 2013-05-27T11:45:00-04:00");
+  }
+
+  // The date and time at the start of the text, checked against the calendar; the rest of the
+  // text (the offset, if any) is left in rest().
+  LocalTime local_time() {
+    std::cmatch m;
+    if (!std::regex_search(text_.data(), text_.data() + text_.size(), m, date_time_pattern(),
+                           std::regex_constants::match_continuous)) {
+      throw fail("no date and time of the form YYYY-MM-DDThh:mm[:ss[.fff]]");
     }
-    pos_ += width;
-    return value;
-  }
-  // One or more digits after a decimal mark, as a fraction in [0, 1).
-  std::optional<double> fraction() {
-    double value = 0.0;
-    double scale = 0.1;
-    const std::size_t start = pos_;
-    while (!done() && text_[pos_] >= '0' && text_[pos_] <= '9') {
-      value += scale * (text_[pos_] - '0');
-      scale /= 10.0;
-      ++pos_;
+    rest_ = text_.substr(static_cast<std::size_t>(m.length(0)));
+    LocalTime t;
+    const int month = std::stoi(m.str(2));
+    t.date = date::year(std::stoi(m.str(1))) / date::month(static_cast<unsigned>(month)) /
+             date::day(static_cast<unsigned>(std::stoi(m.str(3))));
+    t.hour = std::stoi(m.str(4));
+    t.minute = std::stoi(m.str(5));
+    if (m[6].matched) t.second = std::stoi(m.str(6));
+    if (m[7].matched) {
+      const std::string fraction = "0." + m.str(7);
+      std::from_chars(fraction.data(), fraction.data() + fraction.size(), t.fraction);
     }
-    if (pos_ == start) return std::nullopt;
-    return value;
+    if (month < 1 || month > 12) throw fail("month out of 01-12");
+    if (!t.date.ok()) throw fail("day out of range for the month");
+    if (t.hour > 23) throw fail("hour out of 00-23");
+    if (t.minute > 59) throw fail("minute out of 00-59");
+    if (t.second > 59) throw fail("second out of 00-59 (leap seconds are not supported)");
+    return t;
+  }
+
+  std::string_view rest() const { return rest_; }
+
+  // The UTC offset or Z that must make up the rest of the text.
+  void utc_offset(Iso8601Time& out) const {
+    if (rest_.empty()) throw fail("no UTC offset or Z");
+    std::cmatch m;
+    if (!std::regex_match(rest_.data(), rest_.data() + rest_.size(), m, utc_offset_pattern())) {
+      throw fail("no UTC offset (Z, +hh:mm, +hhmm or +hh) after the time");
+    }
+    if (!m[1].matched) {
+      out.utc_designator = true;
+      out.utc_offset_min = 0;
+      return;
+    }
+    const int hours = std::stoi(m.str(2));
+    const int minutes = m[3].matched ? std::stoi(m.str(3)) : 0;
+    if (minutes > 59) throw fail("UTC offset minutes out of 00-59");
+    if (hours * 60 + minutes > kMaxUtcOffsetMin) throw fail("UTC offset beyond 14 hours");
+    out.utc_offset_min = (m.str(1) == "-" ? -1 : 1) * (hours * 60 + minutes);
   }
 
  private:
   std::string_view text_;
-  std::size_t pos_ = 0;
+  std::string_view rest_;
+  const std::string& parameter_;
 };
+
+// The zone of the system's tz database; a name it does not hold is the client's error, a
+// missing database the server's.
+const date::time_zone& locate_zone(std::string_view zone, const std::string& zone_parameter) {
+  try {
+    (void)date::get_tzdb();
+  } catch (const std::exception& e) {
+    throw std::runtime_error(std::string("time zone database unavailable: ") + e.what());
+  }
+  try {
+    return *date::locate_zone(zone);
+  } catch (const std::exception&) {
+    throw InvalidParameter(zone_parameter, "unknown time zone " + quoted(zone) +
+                                               "; expected an IANA time zone name such as "
+                                               "Europe/Paris or America/New_York");
+  }
+}
 
 }  // namespace
 
 Iso8601Time parse_iso8601_time(std::string_view text, const std::string& parameter) {
-  const std::string shown = quoted(text);
-  const auto fail = [&](const std::string& why) -> InvalidParameter {
-    return InvalidParameter(
-        parameter, why + " in " + shown +
-                       "; expected an ISO 8601 time with offset such as 2013-05-27T11:45:00-04:00");
-  };
-
-  Reader in(text);
-  const auto year = in.digits(4);
-  if (!year || !in.accept('-')) throw fail("no four-digit year followed by '-'");
-  const auto month = in.digits(2);
-  if (!month || !in.accept('-')) throw fail("no two-digit month followed by '-'");
-  const auto day = in.digits(2);
-  if (!day) throw fail("no two-digit day");
-  if (!in.accept('T') && !in.accept('t')) throw fail("no 'T' between date and time");
-  const auto hour = in.digits(2);
-  if (!hour || !in.accept(':')) throw fail("no two-digit hour followed by ':'");
-  const auto minute = in.digits(2);
-  if (!minute) throw fail("no two-digit minute");
-  int second = 0;
-  double fraction = 0.0;
-  if (in.accept(':')) {
-    const auto s = in.digits(2);
-    if (!s) throw fail("no two-digit second after ':'");
-    second = *s;
-    if (in.accept('.') || in.accept(',')) {
-      const auto f = in.fraction();
-      if (!f) throw fail("no digits after the decimal mark");
-      fraction = *f;
-    }
-  }
-
+  Iso8601Reader reader(text, parameter);
+  const LocalTime local = reader.local_time();
   Iso8601Time out;
-  if (in.accept('Z') || in.accept('z')) {
-    out.utc_designator = true;
-  } else if (in.peek() == '+' || in.peek() == '-') {
-    const int sign = in.accept('-') ? -1 : 1;
-    in.accept('+');
-    const auto offset_hours = in.digits(2);
-    if (!offset_hours) throw fail("no two-digit hour in the UTC offset");
-    int offset_minutes = 0;
-    if (!in.done()) {
-      in.accept(':');
-      const auto m = in.digits(2);
-      if (!m) throw fail("no two-digit minutes in the UTC offset");
-      offset_minutes = *m;
-    }
-    if (*offset_hours > 18 || offset_minutes > 59 || (*offset_hours == 18 && offset_minutes > 0)) {
-      throw fail("UTC offset beyond 18 hours");
-    }
-    out.utc_offset_min = sign * (*offset_hours * 60 + offset_minutes);
-  } else if (in.done()) {
-    throw fail("no UTC offset or Z");
-  } else {
-    throw fail("unexpected characters");
+  reader.utc_offset(out);
+  out.unix_time_utc_s = local.seconds_since_epoch() - out.utc_offset_min * 60.0;
+  return out;
+}
+
+Iso8601Time parse_iso8601_local_time(std::string_view text, std::string_view zone,
+                                     const std::string& parameter,
+                                     const std::string& zone_parameter) {
+  Iso8601Reader reader(text, parameter);
+  const LocalTime local = reader.local_time();
+  if (!reader.rest().empty()) {
+    throw InvalidParameter(parameter, "unexpected characters after the time in " + quoted(text) +
+                                          "; with " + zone_parameter +
+                                          " give the local time without offset, such as "
+                                          "2013-05-27T11:45:00");
   }
-  if (!in.done()) throw fail("unexpected characters after the UTC offset");
-
-  const std::chrono::year_month_day date{std::chrono::year(*year),
-                                         std::chrono::month(static_cast<unsigned>(*month)),
-                                         std::chrono::day(static_cast<unsigned>(*day))};
-  if (*month < 1 || *month > 12) throw fail("month out of 01-12");
-  if (!date.ok()) throw fail("day out of range for the month");
-  if (*hour > 23) throw fail("hour out of 00-23");
-  if (*minute > 59) throw fail("minute out of 00-59");
-  if (second > 59) throw fail("second out of 00-59 (leap seconds are not supported)");
-
-  const double days = std::chrono::sys_days(date).time_since_epoch().count();
-  const double local_s = days * 86400.0 + *hour * 3600.0 + *minute * 60.0 + second + fraction;
-  out.unix_time_utc_s = local_s - out.utc_offset_min * 60.0;
+  const date::time_zone& time_zone = locate_zone(zone, zone_parameter);
+  const date::local_info info = time_zone.get_info(local.whole_seconds());
+  if (info.result == date::local_info::nonexistent) {
+    throw InvalidParameter(parameter, quoted(text) + " does not exist in " + std::string(zone) +
+                                          " (the clocks skip it when they go forward)");
+  }
+  // Unique, or ambiguous (the clocks go back): the first of the two instants.
+  const std::chrono::seconds offset = info.first.offset;
+  Iso8601Time out;
+  out.unix_time_utc_s = local.seconds_since_epoch() - static_cast<double>(offset.count());
+  // Whole minutes (local mean times before standard time had offsets with seconds).
+  out.utc_offset_min = static_cast<int>(offset.count() / 60);
   return out;
 }
 

@@ -83,7 +83,9 @@ ModelConfig parse_config(Parameters& p, const ModelDescriptor& descriptor) {
       config.options[spec.name] = value;
     }
   }
-  validate_model_config(descriptor, config);
+  // Each value is within its descriptor range, which lies within the atmosphere table's; the
+  // configuration as a whole is validated once, by the model provider (the server's TableStore
+  // before it queues a build) and once per build (models/core/model_factory.h).
   return config;
 }
 

@@ -5,6 +5,7 @@
 #include "api/datasets/datasets_api.h"
 #include "api/datasets/upload_spool.h"
 #include "api/imports/imports_api.h"
+#include "api/paging/list_page.h"
 #include "api/routes/data_access.h"
 #include "api/routes/route_handlers.h"
 
@@ -35,10 +36,11 @@ std::unique_ptr<UploadSpool> spool_body(const ApiRequest& request, const DataSer
 
 }  // namespace
 
+// A page of the list (api/paging/list_page.h), the next one in the Link header.
 ApiResponse list_datasets_route(const ApiContext& context, const ApiRequest& request) {
-  query_parameters(request).reject_unused();
+  Parameters query = query_parameters(request);
   storage::Database db = open_database(context);
-  return ordered_json_response(list_datasets(db));
+  return list_page_response(request, list_datasets(db, std::move(query)));
 }
 
 ApiResponse get_dataset_route(const ApiContext& context, const ApiRequest& request) {

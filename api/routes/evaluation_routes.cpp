@@ -2,16 +2,13 @@
 // on the background pool (202 with a ticket to follow).
 #include "api/evaluation/evaluation_pool.h"
 #include "api/evaluation/evaluations_api.h"
+#include "api/paging/list_page.h"
 #include "api/routes/data_access.h"
 #include "api/routes/route_handlers.h"
 
 namespace clearsky::api {
 
 namespace {
-
-std::string ticket_location(std::int64_t ticket) {
-  return "/v1/evaluations/tickets/" + std::to_string(ticket);
-}
 
 EvaluationPool& evaluation_pool(const ApiContext& context) {
   EvaluationPool* pool = data_services(context).evaluations;
@@ -25,7 +22,7 @@ EvaluationPool& evaluation_pool(const ApiContext& context) {
 ApiResponse list_evaluations_route(const ApiContext& context, const ApiRequest& request) {
   const EvaluationFilter filter = parse_evaluation_filter(query_parameters(request));
   storage::Database db = open_database(context);
-  return ordered_json_response(list_evaluations(db, filter));
+  return list_page_response(request, list_evaluations(db, filter));
 }
 
 ApiResponse get_evaluation_route(const ApiContext& context, const ApiRequest& request) {

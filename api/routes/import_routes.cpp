@@ -1,6 +1,7 @@
 // /v1/imports in the route table (route_handlers.h): the state of dataset imports.
 #include "api/evaluation/evaluations_api.h"
 #include "api/imports/imports_api.h"
+#include "api/paging/list_page.h"
 #include "api/routes/data_access.h"
 #include "api/routes/route_handlers.h"
 
@@ -9,7 +10,8 @@ namespace clearsky::api {
 ApiResponse list_imports_route(const ApiContext& context, const ApiRequest& request) {
   Parameters query = query_parameters(request);
   storage::Database db = open_database(context);
-  return ordered_json_response(list_imports(db, data_services(context).imports, std::move(query)));
+  return list_page_response(request,
+                            list_imports(db, data_services(context).imports, std::move(query)));
 }
 
 ApiResponse get_import_route(const ApiContext& context, const ApiRequest& request) {

@@ -1,6 +1,7 @@
 // /v1/jobs in the route table (route_handlers.h): scheduled evaluations.
 #include "api/evaluation/evaluations_api.h"
 #include "api/jobs/jobs_api.h"
+#include "api/paging/list_page.h"
 #include "api/routes/data_access.h"
 #include "api/routes/route_handlers.h"
 
@@ -17,20 +18,19 @@ std::int64_t job_id(const ApiRequest& request) {
 }  // namespace
 
 ApiResponse list_jobs_route(const ApiContext& context, const ApiRequest& request) {
-  query_parameters(request).reject_unused();
+  Parameters query = query_parameters(request);
   storage::Database db = open_database(context);
-  return ordered_json_response(list_jobs(db));
+  return list_page_response(request, list_jobs(db, std::move(query)));
 }
 
 // 201 with the job; Location is the job.
 ApiResponse create_job_route(const ApiContext& context, const ApiRequest& request) {
   query_parameters(request).reject_unused();
   storage::Database db = open_database(context);
-  nlohmann::ordered_json job =
+  const CreatedResource job =
       create_job(db, request.body, data_services(context).models, now_unix_s());
-  ApiResponse response = ordered_json_response(job, 201);
-  response.headers.emplace_back("Location",
-                                "/v1/jobs/" + std::to_string(job["id"].get<std::int64_t>()));
+  ApiResponse response = ordered_json_response(job.body, 201);
+  response.headers.emplace_back("Location", job.location);
   return response;
 }
 

@@ -1,5 +1,8 @@
-// A 64-bit FNV-1a hash for cache keys and content checksums (not cryptographic: it detects
-// corruption and keys tables by content, it does not resist tampering).
+// A 64-bit FNV-1a hash of short strings whose value is stored or shown and so must never
+// change: table-cache keys (the Bruneton key "bruneton-<hash of the configuration>" and the
+// cache file names) and the content hashes kept in the database (Kider captures, evaluation
+// sample errors). Not cryptographic. Bulk payloads are checksummed with XXH3 instead
+// (server/cache/table_checksum.h): FNV-1a reads one byte per multiply.
 #pragma once
 
 #include <cstdint>

@@ -222,285 +222,409 @@ int mirror(int j, int n_phi) {
   return m < n_phi / 2 ? m : n_phi - 1 - m;
 }
 
+// The phases of build_dome (Haber et al. 2005): single scattering into every cell,
+// the optical lengths between gathering cells, then per order the radiance leaving the
+// gathering cells, its gathering by every gathering cell, its spread to the other shells, and
+// finally the dome seen by the viewer.
+
+// What every phase reads: the grid, the atmosphere's spectra and the sun.
+struct DomeProblem {
+  const HaberGrid& grid;
+  const AtmosphereSpectra& atmosphere;
+  const PrecomputeContext& context;
+  double sun_zenith_rad;
+  Vec3 sun;        // unit vector towards the sun, in the plane of azimuth 0
+  std::size_t n;   // wavelengths
+  std::size_t np;  // wavelengths padded to whole chunks (float arrays of the gathering)
+  int n_phi;       // azimuth sectors of the full circle
+  int sectors;     // stored sectors (half circle, mirror-symmetric about the sun's plane)
+  double iso;      // isotropic phase function, 1 / (4 pi)
+
+  double transmittance_of(const OpticalLength& l, std::size_t w) const {
+    return l.blocked ? 0.0
+                     : std::exp(-(atmosphere.rayleigh_scattering_per_m[w] * l.rayleigh_m +
+                                  atmosphere.mie_extinction_per_m[w] * l.mie_m));
+  }
+  std::size_t active_count() const { return grid.active().size(); }
+};
+
+// Single scattering: the power (W/nm) scattered in each cell by the attenuated sunlight,
+// Rayleigh into iso_power (isotropic, with the orders >= 2 added later) and Mie
+// (Cornette-Shanks) into mie_power.
+void single_scattering_power(const DomeProblem& p, CellSpectra& iso_power, CellSpectra& mie_power) {
+  const auto& cells = p.grid.ring_cells();
+  const auto& layers = p.grid.layers();
+  const Spectrum& sigma_r = p.atmosphere.rayleigh_scattering_per_m;
+  const Spectrum& sigma_m = p.atmosphere.mie_scattering_per_m;
+  parallel_for(
+      cells.size(),
+      [&](std::size_t c) {
+        p.context.check_cancelled();
+        const RingCell& cell = cells[c];
+        for (int j = 0; j < p.sectors; ++j) {
+          const Vec3 x = p.grid.centre(cell, p.grid.sector_azimuth_rad(j));
+          const OpticalLength l = optical_length(layers, x, exit_point(layers, x, p.sun));
+          const std::size_t index = c * p.sectors + j;
+          for (std::size_t w = 0; w < p.n; ++w) {
+            const double power = p.transmittance_of(l, w) *
+                                 p.atmosphere.solar_irradiance_w_m2_nm[w] * cell.volume_m3;
+            iso_power.at(index)[w] = power * sigma_r[w] * layers.rayleigh_density(cell.layer);
+            mie_power.at(index)[w] = power * sigma_m[w] * layers.mie_density(cell.layer);
+          }
+        }
+      },
+      p.context.threads);
+}
+
+// Centres of the active (gathering) cells in all n_phi sectors, active cell s at s * n_phi + j.
+std::vector<Vec3> active_cell_centres(const DomeProblem& p) {
+  const auto& cells = p.grid.ring_cells();
+  const auto& active = p.grid.active();
+  std::vector<Vec3> positions(active.size() * p.n_phi);
+  for (std::size_t s = 0; s < active.size(); ++s) {
+    for (int j = 0; j < p.n_phi; ++j)
+      positions[s * p.n_phi + j] = p.grid.centre(cells[active[s]], p.grid.sector_azimuth_rad(j));
+  }
+  return positions;
+}
+
+// Optical lengths between every pair of active ring cells and every azimuth offset, kept for
+// all orders (they do not change): (target, source, delta) -> (l_R, l_M); l_R < 0 marks a
+// blocked path or the target itself. The optical length between target t in sector 0 and
+// source s in sector delta is, by rotation about the vertical, that between s in sector 0 and
+// t in sector -delta: each unordered pair is integrated once. Task t writes rows (t, s >= t)
+// and (s > t, t) only.
+std::vector<float> pair_optical_lengths(const DomeProblem& p, const std::vector<Vec3>& positions) {
+  const auto& layers = p.grid.layers();
+  const std::size_t n_active = p.active_count();
+  const int n_phi = p.n_phi;
+  std::vector<float> pair_lengths(n_active * n_active * n_phi * 2);
+  parallel_for(
+      n_active,
+      [&](std::size_t t) {
+        p.context.check_cancelled();
+        for (std::size_t s = t; s < n_active; ++s) {
+          float* forward = pair_lengths.data() + (t * n_active + s) * n_phi * 2;
+          float* backward = pair_lengths.data() + (s * n_active + t) * n_phi * 2;
+          for (int delta = 0; delta < n_phi; ++delta) {
+            const int mirrored = (n_phi - delta) % n_phi;
+            float rayleigh = -1.0f;
+            float mie = 0.0f;
+            if (!(s == t && delta == 0)) {
+              const OpticalLength l =
+                  optical_length(layers, positions[s * n_phi + delta], positions[t * n_phi]);
+              rayleigh = l.blocked ? -1.0f : static_cast<float>(l.rayleigh_m);
+              mie = static_cast<float>(l.mie_m);
+            }
+            forward[2 * delta] = rayleigh;
+            forward[2 * delta + 1] = mie;
+            backward[2 * mirrored] = rayleigh;
+            backward[2 * mirrored + 1] = mie;
+          }
+        }
+      },
+      p.context.threads);
+  return pair_lengths;
+}
+
+// Radiance leaving each active cell towards the others, per active ring cell: 2 n_phi sectors
+// (mirrors duplicated, so that the gathering reads contiguously) x np floats. The source of
+// order 2 keeps single-scattered Mie light apart (mie, with a = centre . sun per sector for its
+// phase function); later orders are isotropic only.
+struct SourceRadiance {
+  std::size_t stride = 0;  // floats per active ring cell
+  std::vector<float> iso;
+  std::vector<float> mie;
+  std::vector<float> a;  // centre . sun, 2 n_phi per active ring cell (order 2 only)
+};
+
+// The radiance leaving each active cell along a path as long as its radial width: the power
+// it scatters (single-scattered for order 2, the previous order's otherwise) spread over the
+// cell's volume.
+void emitted_radiance(const DomeProblem& p, bool second, const CellSpectra& iso_power,
+                      const CellSpectra& mie_power, const CellSpectra& last,
+                      SourceRadiance& source) {
+  const auto& cells = p.grid.ring_cells();
+  const auto& active = p.grid.active();
+  const std::size_t n_active = active.size();
+  const int n_phi = p.n_phi;
+  if (second) {
+    source.mie.assign(n_active * source.stride, 0.0f);
+    source.a.assign(n_active * 2 * n_phi, 0.0f);
+  }
+  for (std::size_t s = 0; s < n_active; ++s) {
+    const RingCell& cell = cells[active[s]];
+    const double to_radiance = cell.radial_width_m / cell.volume_m3;
+    for (int js = 0; js < 2 * n_phi; ++js) {
+      const std::size_t index = static_cast<std::size_t>(active[s]) * p.sectors + mirror(js, n_phi);
+      float* si = source.iso.data() + s * source.stride + static_cast<std::size_t>(js) * p.np;
+      if (second) {
+        float* sm = source.mie.data() + s * source.stride + static_cast<std::size_t>(js) * p.np;
+        for (std::size_t w = 0; w < p.n; ++w) {
+          si[w] = static_cast<float>(iso_power.at(index)[w] * p.iso * to_radiance);
+          sm[w] = static_cast<float>(mie_power.at(index)[w] * to_radiance);
+        }
+        source.a[s * 2 * n_phi + js] = static_cast<float>(
+            dot(p.grid.centre(cell, p.grid.sector_azimuth_rad(mirror(js, n_phi))), p.sun));
+      } else {
+        for (std::size_t w = 0; w < p.n; ++w)
+          si[w] = static_cast<float>(last.at(index)[w] * p.iso * to_radiance);
+      }
+    }
+  }
+}
+
+// A spectrum as floats padded with zeros to np (the gathering's arrays).
+std::vector<float> padded_floats(const Spectrum& spectrum, std::size_t np) {
+  std::vector<float> out(np, 0.0f);
+  std::copy(spectrum.begin(), spectrum.end(), out.begin());
+  return out;
+}
+
+// One order of scattering at the active cells: each target gathers the radiance of every
+// source cell in every sector, attenuated along the path and weighted by the solid angle of
+// the source, and scatters the irradiance so received into `current` (power, W/nm). Progress
+// counts finished targets over all orders (`done` of `total_targets`).
+void gather_scattered_power(const DomeProblem& p, bool second, const SourceRadiance& source,
+                            const std::vector<Vec3>& positions,
+                            const std::vector<float>& pair_lengths, CellSpectra& current,
+                            std::atomic<std::size_t>& done, std::size_t total_targets) {
+  const auto& cells = p.grid.ring_cells();
+  const auto& active = p.grid.active();
+  const auto& layers = p.grid.layers();
+  const std::size_t n_active = active.size();
+  const int n_phi = p.n_phi;
+  const int sectors = p.sectors;
+  const std::size_t n = p.n;
+  const std::size_t np = p.np;
+  const Spectrum& sigma_r = p.atmosphere.rayleigh_scattering_per_m;
+  const Spectrum& sigma_m = p.atmosphere.mie_scattering_per_m;
+  const std::vector<float> sigma_r_f = padded_floats(sigma_r, np);
+  const std::vector<float> sigma_m_ext_f = padded_floats(p.atmosphere.mie_extinction_per_m, np);
+  parallel_for(
+      n_active,
+      [&](std::size_t t) {
+        p.context.check_cancelled();
+        const RingCell& target = cells[active[t]];
+        const Vec3 target0 = positions[t * n_phi];
+        std::vector<double> total(static_cast<std::size_t>(sectors) * n, 0.0);
+        std::vector<float> acc(static_cast<std::size_t>(sectors) * np);
+        std::vector<float> kernel(static_cast<std::size_t>(n_phi) * np);
+        std::vector<float> inverse_distance(n_phi);
+        std::vector<float> a_target(sectors);
+        for (int jt = 0; jt < sectors; ++jt) {
+          a_target[jt] =
+              static_cast<float>(dot(p.grid.centre(target, p.grid.sector_azimuth_rad(jt)), p.sun));
+        }
+        for (std::size_t s = 0; s < n_active; ++s) {
+          const RingCell& source_cell = cells[active[s]];
+          const float* lengths = pair_lengths.data() + (t * n_active + s) * n_phi * 2;
+          for (int delta = 0; delta < n_phi; ++delta) {
+            const Vec3 x = positions[s * n_phi + delta];
+            const Vec3 d = x - target0;
+            const double distance2 = dot(d, d);
+            inverse_distance[delta] =
+                distance2 > 0.0 ? static_cast<float>(1.0 / std::sqrt(distance2)) : 0.0f;
+            float* k = kernel.data() + static_cast<std::size_t>(delta) * np;
+            if (lengths[2 * delta] < 0.0f) {
+              std::fill(k, k + np, 0.0f);
+              continue;
+            }
+            // Solid angle of the source cell seen from the target over 4 pi, as the study's
+            // code computes it: (volume / radial width) / (4 pi distance^2).
+            const auto solid_angle_fraction = static_cast<float>(
+                source_cell.volume_m3 / (source_cell.radial_width_m * 4.0 * kPi * distance2));
+            transmittance(sigma_r_f.data(), sigma_m_ext_f.data(), lengths[2 * delta],
+                          lengths[2 * delta + 1], solid_angle_fraction, k, np);
+          }
+          std::fill(acc.begin(), acc.end(), 0.0f);
+          if (second) {
+            gather_double(kernel.data(), source.iso.data() + s * source.stride,
+                          source.mie.data() + s * source.stride, source.a.data() + s * 2 * n_phi,
+                          a_target.data(), inverse_distance.data(),
+                          static_cast<float>(p.atmosphere.parameters.mie_phase_g), n_phi, np,
+                          acc.data());
+          } else {
+            gather_isotropic(kernel.data(), source.iso.data() + s * source.stride, n_phi, np,
+                             acc.data());
+          }
+          for (int jt = 0; jt < sectors; ++jt) {
+            for (std::size_t w = 0; w < n; ++w) total[jt * n + w] += acc[jt * np + w];
+          }
+        }
+        // Power scattered by the target cells: irradiance x scattering coefficient x volume.
+        for (int jt = 0; jt < sectors; ++jt) {
+          double* out = current.at(static_cast<std::size_t>(active[t]) * sectors + jt);
+          for (std::size_t w = 0; w < n; ++w) {
+            const double scattering = sigma_r[w] * layers.rayleigh_density(target.layer) +
+                                      sigma_m[w] * layers.mie_density(target.layer);
+            out[w] = total[static_cast<std::size_t>(jt) * n + w] * scattering * target.volume_m3;
+          }
+        }
+        const std::size_t finished = ++done;
+        p.context.report(static_cast<double>(finished) / total_targets, "multiple scattering");
+      },
+      p.context.threads);
+}
+
+// The ratio of the source power of all cells to that of the gathering cells: the sources of
+// an order were only the gathering cells, so the order is scaled by it (0 when they are dark).
+double all_to_gathering_power_ratio(const DomeProblem& p, bool second, const CellSpectra& iso_power,
+                                    const CellSpectra& mie_power, const CellSpectra& last) {
+  const auto& cells = p.grid.ring_cells();
+  double all_power = 0.0;
+  double active_power = 0.0;
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const bool is_active = cells[c].shell % p.grid.settings().shell_stride == 0;
+    for (int j = 0; j < p.sectors; ++j) {
+      const std::size_t index = c * p.sectors + j;
+      double power = 0.0;
+      for (std::size_t w = 0; w < p.n; ++w) {
+        power += second ? iso_power.at(index)[w] + mie_power.at(index)[w] : last.at(index)[w];
+      }
+      all_power += power;
+      if (is_active) active_power += power;
+    }
+  }
+  return active_power > 0.0 ? all_power / active_power : 0.0;
+}
+
+// The cells between gathering shells: linear interpolation along the ring between the
+// gathering shells below and above (the nearer one alone at the ends of a ring).
+void interpolate_between_gathering_shells(const DomeProblem& p, CellSpectra& current) {
+  const auto& cells = p.grid.ring_cells();
+  const int sectors = p.sectors;
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const RingCell& cell = cells[c];
+    if (cell.shell % p.grid.settings().shell_stride == 0) continue;
+    for (int j = 0; j < sectors; ++j) {
+      double* out = current.at(c * sectors + j);
+      const double* lower =
+          cell.lower_active >= 0
+              ? current.at(static_cast<std::size_t>(cell.lower_active) * sectors + j)
+              : nullptr;
+      const double* upper =
+          cell.upper_active >= 0
+              ? current.at(static_cast<std::size_t>(cell.upper_active) * sectors + j)
+              : nullptr;
+      for (std::size_t w = 0; w < p.n; ++w) {
+        if (lower != nullptr && upper != nullptr) {
+          out[w] = (1.0 - cell.upper_weight) * lower[w] + cell.upper_weight * upper[w];
+        } else if (lower != nullptr) {
+          out[w] = lower[w];
+        } else if (upper != nullptr) {
+          out[w] = upper[w];
+        } else {
+          out[w] = 0.0;
+        }
+      }
+    }
+  }
+}
+
+// Adds the order just computed (scaled) to the isotropic power and makes it the source of the
+// next order; clears `current` for it.
+void add_order(double scale, CellSpectra& current, CellSpectra& iso_power, CellSpectra& last) {
+  for (std::size_t x = 0; x < current.values.size(); ++x) {
+    const double value = current.values[x] * scale;
+    iso_power.values[x] += value;
+    last.values[x] = value;
+    current.values[x] = 0.0;
+  }
+}
+
+// Orders 2 to scattering_orders, added into iso_power (Rayleigh and Mie scattered light both
+// re-scatter isotropically in the model).
+void multiple_scattering(const DomeProblem& p, CellSpectra& iso_power,
+                         const CellSpectra& mie_power) {
+  const int orders = p.grid.settings().scattering_orders;
+  if (orders < 2) return;
+  const std::size_t cell_count = p.grid.cell_count();
+  const std::size_t n_active = p.active_count();
+  CellSpectra last(cell_count, p.n), current(cell_count, p.n);
+  const std::vector<Vec3> positions = active_cell_centres(p);
+  const std::vector<float> pair_lengths = pair_optical_lengths(p, positions);
+  SourceRadiance source;
+  source.stride = static_cast<std::size_t>(2 * p.n_phi) * p.np;
+  source.iso.resize(n_active * source.stride);
+  std::atomic<std::size_t> done{0};
+  for (int order = 2; order <= orders; ++order) {
+    const bool second = order == 2;
+    emitted_radiance(p, second, iso_power, mie_power, last, source);
+    gather_scattered_power(p, second, source, positions, pair_lengths, current, done,
+                           n_active * (orders - 1));
+    const double scale = all_to_gathering_power_ratio(p, second, iso_power, mie_power, last);
+    interpolate_between_gathering_shells(p, current);
+    add_order(scale, current, iso_power, last);
+  }
+}
+
+// The dome: light scattered towards the viewer by the cells along each (ring, sector) centre
+// direction, attenuated to the viewer, as ring_count x sectors x n radiances.
+std::vector<double> dome_radiance(const DomeProblem& p, const CellSpectra& iso_power,
+                                  const CellSpectra& mie_power) {
+  const auto& cells = p.grid.ring_cells();
+  const auto& layers = p.grid.layers();
+  const int sectors = p.sectors;
+  const std::size_t n = p.n;
+  const int rings = p.grid.ring_count();
+  std::vector<double> dome(static_cast<std::size_t>(rings) * sectors * n, 0.0);
+  const Vec3 viewer{0.0, 0.0, layers.earth_radius_m()};
+  const double g = p.atmosphere.parameters.mie_phase_g;
+  parallel_for(
+      static_cast<std::size_t>(rings) * sectors,
+      [&](std::size_t x) {
+        const int i = static_cast<int>(x) / sectors;
+        const int j = static_cast<int>(x) % sectors;
+        const double view_zenith = (i + 0.5) * p.grid.angular_step_rad();
+        const double view_azimuth = p.grid.sector_azimuth_rad(j);
+        const double mu = clamp_cosine(std::cos(p.sun_zenith_rad) * std::cos(view_zenith) +
+                                       std::sin(p.sun_zenith_rad) * std::sin(view_zenith) *
+                                           std::cos(view_azimuth));
+        const double mie_phase = cornette_shanks_phase(mu, g);
+        double* out = dome.data() + x * n;
+        for (int c = p.grid.ring_begin()[i]; c < p.grid.ring_begin()[i + 1]; ++c) {
+          const RingCell& cell = cells[c];
+          const std::size_t index = static_cast<std::size_t>(c) * sectors + j;
+          const OpticalLength l = optical_length(layers, viewer, p.grid.centre(cell, view_azimuth));
+          const double to_radiance = cell.radial_width_m / cell.volume_m3;
+          for (std::size_t w = 0; w < n; ++w) {
+            out[w] += p.transmittance_of(l, w) *
+                      (iso_power.at(index)[w] * p.iso + mie_power.at(index)[w] * mie_phase) *
+                      to_radiance;
+          }
+        }
+      },
+      p.context.threads);
+  return dome;
+}
+
 }  // namespace
 
 std::shared_ptr<const HaberDome> build_dome(const HaberGrid& grid,
                                             const AtmosphereSpectra& atmosphere,
                                             double sun_zenith_rad,
                                             const PrecomputeContext& context) {
-  const std::size_t n = atmosphere.grid.size();
   const int n_phi = grid.settings().azimuth_sectors;
   if (n_phi > 256) throw InvalidInput("azimuth_sectors", "must be at most 256");
-  const int sectors = grid.stored_sectors();
-  const auto& cells = grid.ring_cells();
-  const auto& layers = grid.layers();
-  const std::size_t ring_cell_count = cells.size();
-  const std::size_t cell_count = grid.cell_count();
-  const Vec3 sun{std::sin(sun_zenith_rad), 0.0, std::cos(sun_zenith_rad)};
-  const Spectrum& sigma_r = atmosphere.rayleigh_scattering_per_m;
-  const Spectrum& sigma_m = atmosphere.mie_scattering_per_m;
-  const Spectrum& sigma_m_ext = atmosphere.mie_extinction_per_m;
-  const double iso = isotropic_phase();
-  const auto transmittance_of = [&](const OpticalLength& l, std::size_t w) {
-    return l.blocked ? 0.0 : std::exp(-(sigma_r[w] * l.rayleigh_m + sigma_m_ext[w] * l.mie_m));
-  };
-
-  // Single scattering: the power (W/nm) scattered in each cell, Rayleigh (isotropic, with
-  // the orders >= 2 added later) and Mie (Cornette-Shanks) apart.
-  CellSpectra iso_power(cell_count, n), mie_power(cell_count, n), last(cell_count, n),
-      current(cell_count, n);
-  parallel_for(
-      ring_cell_count,
-      [&](std::size_t c) {
-        context.check_cancelled();
-        const RingCell& cell = cells[c];
-        for (int j = 0; j < sectors; ++j) {
-          const Vec3 p = grid.centre(cell, grid.sector_azimuth_rad(j));
-          const OpticalLength l = optical_length(layers, p, exit_point(layers, p, sun));
-          const std::size_t index = c * sectors + j;
-          for (std::size_t w = 0; w < n; ++w) {
-            const double power =
-                transmittance_of(l, w) * atmosphere.solar_irradiance_w_m2_nm[w] * cell.volume_m3;
-            iso_power.at(index)[w] = power * sigma_r[w] * layers.rayleigh_density(cell.layer);
-            mie_power.at(index)[w] = power * sigma_m[w] * layers.mie_density(cell.layer);
-          }
-        }
-      },
-      context.threads);
-
-  const int orders = grid.settings().scattering_orders;
-  const auto& active = grid.active();
-  const std::size_t n_active = active.size();
-  // Float spectra of the gathering, padded with zeros to whole chunks.
-  const std::size_t np = (n + kChunk - 1) / kChunk * kChunk;
-  std::vector<float> sigma_r_f(np, 0.0f), sigma_m_ext_f(np, 0.0f);
-  std::copy(sigma_r.begin(), sigma_r.end(), sigma_r_f.begin());
-  std::copy(sigma_m_ext.begin(), sigma_m_ext.end(), sigma_m_ext_f.begin());
-  // Optical lengths between every pair of active ring cells and every azimuth offset, kept
-  // for all orders (they do not change): (target, source, delta) -> (l_R, l_M); l_R < 0 marks
-  // a blocked path or the target itself.
-  std::vector<float> pair_lengths;
-  if (orders >= 2) pair_lengths.resize(n_active * n_active * n_phi * 2);
-  // Source radiance per active ring cell: 2 n_phi sectors (mirrors duplicated) x n.
-  const std::size_t source_stride = static_cast<std::size_t>(2 * n_phi) * np;
-  std::vector<float> source_iso(n_active * source_stride), source_mie;
-  std::vector<float> a_source;  // position . sun, 2 n_phi per active ring cell
-  std::atomic<std::size_t> done{0};
-  // Centres of the active cells in all n_phi sectors.
-  std::vector<Vec3> positions(n_active * n_phi);
-  for (std::size_t s = 0; s < n_active; ++s) {
-    for (int j = 0; j < n_phi; ++j)
-      positions[s * n_phi + j] = grid.centre(cells[active[s]], grid.sector_azimuth_rad(j));
-  }
-  // The optical length between target t in sector 0 and source s in sector delta is, by
-  // rotation about the vertical, that between s in sector 0 and t in sector -delta: each
-  // unordered pair is integrated once. Task t writes rows (t, s >= t) and (s > t, t) only.
-  if (orders >= 2) {
-    parallel_for(
-        n_active,
-        [&](std::size_t t) {
-          context.check_cancelled();
-          for (std::size_t s = t; s < n_active; ++s) {
-            float* forward = pair_lengths.data() + (t * n_active + s) * n_phi * 2;
-            float* backward = pair_lengths.data() + (s * n_active + t) * n_phi * 2;
-            for (int delta = 0; delta < n_phi; ++delta) {
-              const int mirrored = (n_phi - delta) % n_phi;
-              float rayleigh = -1.0f;
-              float mie = 0.0f;
-              if (!(s == t && delta == 0)) {
-                const OpticalLength l =
-                    optical_length(layers, positions[s * n_phi + delta], positions[t * n_phi]);
-                rayleigh = l.blocked ? -1.0f : static_cast<float>(l.rayleigh_m);
-                mie = static_cast<float>(l.mie_m);
-              }
-              forward[2 * delta] = rayleigh;
-              forward[2 * delta + 1] = mie;
-              backward[2 * mirrored] = rayleigh;
-              backward[2 * mirrored + 1] = mie;
-            }
-          }
-        },
-        context.threads);
-  }
-  for (int order = 2; order <= orders; ++order) {
-    const bool second = order == 2;
-    // Radiance leaving each source cell along a path as long as its radial width.
-    if (second) {
-      source_mie.assign(n_active * source_stride, 0.0f);
-      a_source.assign(n_active * 2 * n_phi, 0.0f);
-    }
-    for (std::size_t s = 0; s < n_active; ++s) {
-      const RingCell& cell = cells[active[s]];
-      const double to_radiance = cell.radial_width_m / cell.volume_m3;
-      for (int js = 0; js < 2 * n_phi; ++js) {
-        const std::size_t index = static_cast<std::size_t>(active[s]) * sectors + mirror(js, n_phi);
-        float* si = source_iso.data() + s * source_stride + static_cast<std::size_t>(js) * np;
-        if (second) {
-          float* sm = source_mie.data() + s * source_stride + static_cast<std::size_t>(js) * np;
-          for (std::size_t w = 0; w < n; ++w) {
-            si[w] = static_cast<float>(iso_power.at(index)[w] * iso * to_radiance);
-            sm[w] = static_cast<float>(mie_power.at(index)[w] * to_radiance);
-          }
-          a_source[s * 2 * n_phi + js] = static_cast<float>(
-              dot(grid.centre(cell, grid.sector_azimuth_rad(mirror(js, n_phi))), sun));
-        } else {
-          for (std::size_t w = 0; w < n; ++w)
-            si[w] = static_cast<float>(last.at(index)[w] * iso * to_radiance);
-        }
-      }
-    }
-    parallel_for(
-        n_active,
-        [&](std::size_t t) {
-          context.check_cancelled();
-          const RingCell& target = cells[active[t]];
-          const Vec3 target0 = positions[t * n_phi];
-          std::vector<double> total(static_cast<std::size_t>(sectors) * n, 0.0);
-          std::vector<float> acc(static_cast<std::size_t>(sectors) * np);
-          std::vector<float> kernel(static_cast<std::size_t>(n_phi) * np);
-          std::vector<float> inverse_distance(n_phi);
-          std::vector<float> a_target(sectors);
-          for (int jt = 0; jt < sectors; ++jt) {
-            a_target[jt] =
-                static_cast<float>(dot(grid.centre(target, grid.sector_azimuth_rad(jt)), sun));
-          }
-          for (std::size_t s = 0; s < n_active; ++s) {
-            const RingCell& source = cells[active[s]];
-            const float* lengths = pair_lengths.data() + (t * n_active + s) * n_phi * 2;
-            for (int delta = 0; delta < n_phi; ++delta) {
-              const Vec3 p = positions[s * n_phi + delta];
-              const Vec3 d = p - target0;
-              const double distance2 = dot(d, d);
-              inverse_distance[delta] =
-                  distance2 > 0.0 ? static_cast<float>(1.0 / std::sqrt(distance2)) : 0.0f;
-              float* k = kernel.data() + static_cast<std::size_t>(delta) * np;
-              if (lengths[2 * delta] < 0.0f) {
-                std::fill(k, k + np, 0.0f);
-                continue;
-              }
-              // Solid angle of the source cell seen from the target over 4 pi, as the study's
-              // code computes it: (volume / radial width) / (4 pi distance^2).
-              const auto solid_angle_fraction = static_cast<float>(
-                  source.volume_m3 / (source.radial_width_m * 4.0 * kPi * distance2));
-              transmittance(sigma_r_f.data(), sigma_m_ext_f.data(), lengths[2 * delta],
-                            lengths[2 * delta + 1], solid_angle_fraction, k, np);
-            }
-            std::fill(acc.begin(), acc.end(), 0.0f);
-            if (second) {
-              gather_double(kernel.data(), source_iso.data() + s * source_stride,
-                            source_mie.data() + s * source_stride, a_source.data() + s * 2 * n_phi,
-                            a_target.data(), inverse_distance.data(),
-                            static_cast<float>(atmosphere.parameters.mie_phase_g), n_phi, np,
-                            acc.data());
-            } else {
-              gather_isotropic(kernel.data(), source_iso.data() + s * source_stride, n_phi, np,
-                               acc.data());
-            }
-            for (int jt = 0; jt < sectors; ++jt) {
-              for (std::size_t w = 0; w < n; ++w) total[jt * n + w] += acc[jt * np + w];
-            }
-          }
-          // Power scattered by the target cells: irradiance x scattering coefficient x volume.
-          for (int jt = 0; jt < sectors; ++jt) {
-            double* out = current.at(static_cast<std::size_t>(active[t]) * sectors + jt);
-            for (std::size_t w = 0; w < n; ++w) {
-              const double scattering = sigma_r[w] * layers.rayleigh_density(target.layer) +
-                                        sigma_m[w] * layers.mie_density(target.layer);
-              out[w] = total[static_cast<std::size_t>(jt) * n + w] * scattering * target.volume_m3;
-            }
-          }
-          const std::size_t finished = ++done;
-          context.report(static_cast<double>(finished) / (n_active * (orders - 1)),
-                         "multiple scattering");
-        },
-        context.threads);
-
-    // Other shells: linear interpolation along the ring between the gathering shells, then
-    // the whole order scaled by the ratio of the source power of all cells to that of the
-    // gathering cells (the sources were only the gathering cells).
-    double all_power = 0.0;
-    double active_power = 0.0;
-    for (std::size_t c = 0; c < ring_cell_count; ++c) {
-      const bool is_active = cells[c].shell % grid.settings().shell_stride == 0;
-      for (int j = 0; j < sectors; ++j) {
-        const std::size_t index = c * sectors + j;
-        double power = 0.0;
-        for (std::size_t w = 0; w < n; ++w) {
-          power += second ? iso_power.at(index)[w] + mie_power.at(index)[w] : last.at(index)[w];
-        }
-        all_power += power;
-        if (is_active) active_power += power;
-      }
-    }
-    const double scale = active_power > 0.0 ? all_power / active_power : 0.0;
-    for (std::size_t c = 0; c < ring_cell_count; ++c) {
-      const RingCell& cell = cells[c];
-      if (cell.shell % grid.settings().shell_stride == 0) continue;
-      for (int j = 0; j < sectors; ++j) {
-        double* out = current.at(c * sectors + j);
-        const double* lower =
-            cell.lower_active >= 0
-                ? current.at(static_cast<std::size_t>(cell.lower_active) * sectors + j)
-                : nullptr;
-        const double* upper =
-            cell.upper_active >= 0
-                ? current.at(static_cast<std::size_t>(cell.upper_active) * sectors + j)
-                : nullptr;
-        for (std::size_t w = 0; w < n; ++w) {
-          if (lower != nullptr && upper != nullptr) {
-            out[w] = (1.0 - cell.upper_weight) * lower[w] + cell.upper_weight * upper[w];
-          } else if (lower != nullptr) {
-            out[w] = lower[w];
-          } else if (upper != nullptr) {
-            out[w] = upper[w];
-          } else {
-            out[w] = 0.0;
-          }
-        }
-      }
-    }
-    for (std::size_t x = 0; x < current.values.size(); ++x) {
-      const double value = current.values[x] * scale;
-      iso_power.values[x] += value;
-      last.values[x] = value;
-      current.values[x] = 0.0;
-    }
-  }
-
-  // The dome: light scattered towards the viewer by the cells along each (ring, sector)
-  // centre direction, attenuated to the viewer.
-  const int rings = grid.ring_count();
-  std::vector<double> dome(static_cast<std::size_t>(rings) * sectors * n, 0.0);
-  const Vec3 viewer{0.0, 0.0, layers.earth_radius_m()};
-  const double g = atmosphere.parameters.mie_phase_g;
-  parallel_for(
-      static_cast<std::size_t>(rings) * sectors,
-      [&](std::size_t x) {
-        const int i = static_cast<int>(x) / sectors;
-        const int j = static_cast<int>(x) % sectors;
-        const double view_zenith = (i + 0.5) * grid.angular_step_rad();
-        const double view_azimuth = grid.sector_azimuth_rad(j);
-        const double mu =
-            clamp_cosine(std::cos(sun_zenith_rad) * std::cos(view_zenith) +
-                         std::sin(sun_zenith_rad) * std::sin(view_zenith) * std::cos(view_azimuth));
-        const double mie_phase = cornette_shanks_phase(mu, g);
-        double* out = dome.data() + x * n;
-        for (int c = grid.ring_begin()[i]; c < grid.ring_begin()[i + 1]; ++c) {
-          const RingCell& cell = cells[c];
-          const std::size_t index = static_cast<std::size_t>(c) * sectors + j;
-          const OpticalLength l = optical_length(layers, viewer, grid.centre(cell, view_azimuth));
-          const double to_radiance = cell.radial_width_m / cell.volume_m3;
-          for (std::size_t w = 0; w < n; ++w) {
-            out[w] += transmittance_of(l, w) *
-                      (iso_power.at(index)[w] * iso + mie_power.at(index)[w] * mie_phase) *
-                      to_radiance;
-          }
-        }
-      },
-      context.threads);
+  const std::size_t n = atmosphere.grid.size();
+  const DomeProblem problem{grid,
+                            atmosphere,
+                            context,
+                            sun_zenith_rad,
+                            Vec3{std::sin(sun_zenith_rad), 0.0, std::cos(sun_zenith_rad)},
+                            n,
+                            (n + kChunk - 1) / kChunk * kChunk,
+                            n_phi,
+                            grid.stored_sectors(),
+                            isotropic_phase()};
+  CellSpectra iso_power(grid.cell_count(), n), mie_power(grid.cell_count(), n);
+  single_scattering_power(problem, iso_power, mie_power);
+  multiple_scattering(problem, iso_power, mie_power);
+  std::vector<double> dome = dome_radiance(problem, iso_power, mie_power);
   context.report(1.0, "done");
-  return std::make_shared<const HaberDome>(rings, sectors, grid.angular_step_rad(), n,
-                                           std::move(dome));
+  return std::make_shared<const HaberDome>(grid.ring_count(), grid.stored_sectors(),
+                                           grid.angular_step_rad(), n, std::move(dome));
 }
 
 }  // namespace clearsky::haber

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "models/core/content_hash.h"
+#include "server/cache/table_checksum.h"
 
 namespace clearsky::server {
 
@@ -55,13 +56,18 @@ std::optional<std::string> FileTableCache::load(const std::string& key) const {
     in.remove_prefix(sizeof kMagic);
     std::uint32_t version = 0, key_length = 0;
     std::uint64_t payload_length = 0, checksum = 0;
-    if (!get(in, version) || version != kFormatVersion) return std::nullopt;
+    if (!get(in, version)) return std::nullopt;
+    if (version != kFormatVersion) {
+      spdlog::info("table cache: {} has format version {} (this server writes {}), rebuilding",
+                   path_of(key).string(), version, kFormatVersion);
+      return std::nullopt;
+    }
     if (!get(in, key_length) || in.size() < key_length || in.substr(0, key_length) != key)
       return std::nullopt;
     in.remove_prefix(key_length);
     if (!get(in, payload_length) || !get(in, checksum) || in.size() != payload_length)
       return std::nullopt;
-    if (fnv1a_64(in) != checksum) {
+    if (table_checksum(in) != checksum) {
       spdlog::warn("table cache: checksum mismatch in {}, rebuilding", path_of(key).string());
       return std::nullopt;
     }
@@ -80,7 +86,7 @@ void FileTableCache::store(const std::string& key, std::string_view bytes) const
   put(header, static_cast<std::uint32_t>(key.size()));
   header += key;
   put(header, static_cast<std::uint64_t>(bytes.size()));
-  put(header, fnv1a_64(bytes));
+  put(header, table_checksum(bytes));
   {
     std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
     file.write(header.data(), static_cast<std::streamsize>(header.size()));

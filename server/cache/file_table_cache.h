@@ -1,5 +1,6 @@
 // The on-disk TableCache (models/core/precompute_context.h): one file per key under a
-// directory, named by the key's FNV-1a hash. A file is trusted only when its header matches:
+// directory, named by the key's FNV-1a hash (a short string: the names stay those of every
+// earlier version). A file is trusted only when its header matches:
 //
 //   offset  size  field
 //   0       8     magic "CSKYTBL\n"
@@ -7,13 +8,15 @@
 //   12      4     key length K (uint32)
 //   16      K     the key itself (compared in full: a hash collision or a stale file is a miss)
 //   16+K    8     payload length N (uint64)
-//   24+K    8     FNV-1a 64 checksum of the payload
+//   24+K    8     XXH3 64 checksum of the payload (table_checksum.h)
 //   32+K    N     payload
 //
-// A missing, truncated, stale or corrupt file is a miss (the model rebuilds and stores again,
-// replacing it). Writes go to a unique temporary file in the same directory, then rename(2)
-// replaces the entry atomically, so readers never see a partial file. Store failures are
-// logged and otherwise ignored (the cache is an optimisation).
+// Version 1 files carried an FNV-1a checksum: a file of another version is a miss, logged, and
+// rebuilt (its checksum is never read as this version's). A missing, truncated, stale or
+// corrupt file is a miss (the model rebuilds and stores again, replacing it). Writes go to a
+// unique temporary file in the same directory, then rename(2) replaces the entry atomically,
+// so readers never see a partial file. Store failures are logged and otherwise ignored (the
+// cache is an optimisation).
 // Thread-safety: load() and store() may be called concurrently from any thread.
 #pragma once
 
@@ -27,7 +30,8 @@ namespace clearsky::server {
 
 class FileTableCache final : public TableCache {
  public:
-  static constexpr std::uint32_t kFormatVersion = 1;
+  // 2: the payload checksum is XXH3 64 (1: FNV-1a 64).
+  static constexpr std::uint32_t kFormatVersion = 2;
 
   // Creates directory when missing (std::filesystem_error when it cannot).
   explicit FileTableCache(std::filesystem::path directory);

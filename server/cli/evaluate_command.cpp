@@ -3,7 +3,9 @@
 // its per-sample errors (api/evaluation/evaluation_runner.h). --samples adds each capture's
 // per-sample RMSE and bias (=spectra: and errors per wavelength) as GET
 // /v1/evaluations/{id}?samples=... does (api/encode/evaluation_json.h). --parameters is the
-// "parameters" object of POST /v1/evaluations (atmosphere parameters and model options).
+// "parameters" object of POST /v1/evaluations (atmosphere parameters and model options), with
+// its rule: each applies to the requested models that list it, one that none lists is refused
+// (docs/data-api.md "Evaluation parameters").
 #include <iomanip>
 #include <iostream>
 
@@ -63,7 +65,7 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
       } catch (const std::invalid_argument& e) {
         throw CLI::ValidationError("--models", e.what());
       }
-      request.config = api::parse_evaluation_parameters(parameters, factories);
+      request.parameters = api::parse_evaluation_parameters(parameters, factories);
     }
     const api::EvaluationReport report = api::run_evaluation(db, request);
     const api::SampleDetail samples = options->samples == "spectra" ? api::SampleDetail::spectra

@@ -56,6 +56,7 @@ void run_server(const server::ServerConfig& config, const std::string& software_
 
   server::TableStore::Options options;
   options.capacity = config.table_capacity;
+  options.memory_budget_bytes = config.table_memory_bytes;
   options.build_wait = std::chrono::milliseconds(config.build_wait_ms);
   options.retry_after_s = config.retry_after_s;
   options.builder_threads = config.builder_threads;
@@ -215,6 +216,10 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
   command
       ->add_option("--table-capacity", config->table_capacity,
                    "Non-default table configurations kept")
+      ->capture_default_str();
+  command
+      ->add_option("--table-memory", config->table_memory_bytes,
+                   "Bytes of model tables kept or being built (defaults counted, never evicted)")
       ->capture_default_str();
   command
       ->add_option("--build-wait-ms", config->build_wait_ms,

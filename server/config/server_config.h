@@ -2,37 +2,37 @@
 // --config file), with the limits the HTTP layer enforces (docs/conventions.md "One HTTP
 // boundary").
 //
-// | option                | unit  | default     | meaning |
-// |-----------------------|-------|-------------|--------------------------------------------------------|
-// | host, port            |       | 127.0.0.1, 8080 | where to listen (port 0: any free port) | |
-// db                    | path  | var/clearsky.db | SQLite database (its parent directory is
-// created)  | | cache_dir             | path  | var/cache   | disk cache of model tables | |
-// threads               |       | 0           | HTTP worker threads; 0: 32 per core, at least 64
-// (cpp-httplib holds a worker per keep-alive connection, so workers are connection slots;
-// computations parallelise over the cores themselves) | | max_queued            |       | 256 |
-// accepted connections waiting for a worker (the acceptor waits beyond) | | listen_backlog        |
-// | 1024        | connections the kernel holds before accept (listen(2))  | | payload_max_bytes |
-// byte  | 8 MiB       | request body limit (413 beyond)                        | |
-// read/write_timeout_s  | s     | 10 / 30     | socket timeouts | | keep_alive_max_count  |       |
-// 1000        | requests per keep-alive connection                     | | keep_alive_timeout_s  |
-// s     | 5           | idle keep-alive connection lifetime                    | | max_views | |
-// 10000       | views per radiance/rgb batch (413 beyond)              | | max_wavelengths       |
-// | 2000        | wavelengths per request (413 beyond)                   | | max_skydome_size |
-// pixel | 4096        | skydome size limit (413 beyond)                        | | table_capacity
-// |       | 16          | non-default table configurations kept / pending        | | build_wait_ms
-// | ms    | 2000        | how long a request waits for a table build before 503  | | retry_after_s
-// | s     | 5           | Retry-After of a 503                                   | |
-// builder_threads       |       | 1           | concurrent builds of the tables queued at start |
-// | token                 |       | (none)      | bearer token of the write endpoints; none: CLEARSKY_TOKEN, else writes disabled |
-// | models                |       | (all)       | serve only these model ids |
-// | max_upload_bytes      | byte  | 1 GiB       | dataset upload limit (413 beyond); the other routes keep payload_max_bytes |
-// | import_workers        |       | 1           | background import threads (never HTTP workers) |
-// | import_queue          |       | 8           | imports waiting for a worker (503 beyond) |
-// | evaluation_workers    |       | 1           | background evaluation threads (never HTTP workers) |
-// | evaluation_queue      |       | 16          | evaluations waiting for a worker (503 beyond)          |
-// | cors_origins          |       | (none)      | origins browsers may call the API from (CORS; "*": any; docs/http-api.md) |
-// | prebuild_three        |       | true        | also build each model on the 3-wavelength grid of
-// /v1/rgb?method=three at start (after the defaults) |
+// clang-format off
+// | option               | unit  | default         | meaning                                                                               |
+// |----------------------|-------|-----------------|---------------------------------------------------------------------------------------|
+// | host, port           |       | 127.0.0.1, 8080 | where to listen (port 0: any free port)                                               |
+// | db                   | path  | var/clearsky.db | SQLite database (its parent directory is created)                                     |
+// | cache_dir            | path  | var/cache       | disk cache of model tables                                                            |
+// | threads              |       | 0               | HTTP worker threads; 0: 32 per core, at least 64 (a worker per keep-alive connection) |
+// | max_queued           |       | 256             | accepted connections waiting for a worker (the acceptor waits beyond)                 |
+// | listen_backlog       |       | 1024            | connections the kernel holds before accept (listen(2))                                |
+// | payload_max_bytes    | byte  | 8 MiB           | request body limit (413 beyond)                                                       |
+// | read/write_timeout_s | s     | 10 / 30         | socket timeouts                                                                       |
+// | keep_alive_max_count |       | 1000            | requests per keep-alive connection                                                    |
+// | keep_alive_timeout_s | s     | 5               | idle keep-alive connection lifetime                                                   |
+// | max_views            |       | 10000           | views per radiance/rgb batch (413 beyond)                                             |
+// | max_wavelengths      |       | 2000            | wavelengths per request (413 beyond)                                                  |
+// | max_skydome_size     | pixel | 4096            | skydome size limit (413 beyond)                                                       |
+// | table_capacity       |       | 16              | non-default table configurations kept / pending                                       |
+// | build_wait_ms        | ms    | 2000            | how long a request waits for a table or per-sun build before 503                      |
+// | retry_after_s        | s     | 5               | Retry-After of a 503                                                                  |
+// | table_memory_bytes   | byte  | 1 GiB           | tables kept or being built, defaults included (503 beyond)                            |
+// | builder_threads      |       | 1               | concurrent builds of the tables queued at start                                       |
+// | token                |       | (none)          | bearer token of the write endpoints; none: CLEARSKY_TOKEN, else writes off            |
+// | models               |       | (all)           | serve only these model ids                                                            |
+// | max_upload_bytes     | byte  | 1 GiB           | dataset upload limit (413 beyond); other routes: payload_max_bytes                    |
+// | import_workers       |       | 1               | background import threads (never HTTP workers)                                        |
+// | import_queue         |       | 8               | imports waiting for a worker (503 beyond)                                             |
+// | evaluation_workers   |       | 1               | background evaluation threads (never HTTP workers)                                    |
+// | evaluation_queue     |       | 16              | evaluations waiting for a worker (503 beyond)                                         |
+// | cors_origins         |       | (none)          | origins browsers may call the API from ("*": any; docs/http-api.md)                   |
+// | prebuild_three       |       | true            | also build each model on the 3-wavelength grid of rgb method=three                    |
+// clang-format on
 #pragma once
 
 #include <cstddef>
@@ -60,6 +60,7 @@ struct ServerConfig {
   std::size_t max_wavelengths = 2000;
   int max_skydome_size = 4096;
   std::size_t table_capacity = 16;
+  std::size_t table_memory_bytes = std::size_t{1} << 30;
   int build_wait_ms = 2000;
   int retry_after_s = 5;
   unsigned builder_threads = 1;

@@ -32,11 +32,13 @@ struct RequestInfo {
   // The metrics and access-log label: the route's pattern ("other" for unknown paths), so
   // that the label set stays bounded.
   std::string_view endpoint = "other";
+  // The request's body is (partly) unread: the answer ends the connection.
+  bool unread_body = false;
 };
 thread_local RequestInfo current_request;
 
 void begin_request(const httplib::Request& req) {
-  current_request = {Clock::now(), {}, api::match_route(req.method, req.path), "other"};
+  current_request = {Clock::now(), {}, api::match_route(req.method, req.path), "other", false};
   if (current_request.match.path_known()) current_request.endpoint = current_request.match.pattern;
 }
 
@@ -98,6 +100,23 @@ api::ApiResponse run_write(const api::Route& route, const api::ApiContext& conte
                          req.remote_addr);
     throw;
   }
+}
+
+// Sends res's body, then ends the connection: the refused request's body is still unread, and
+// cpp-httplib would read it as the next request. A content provider that stops after writing
+// everything makes it close the connection once the answer is out (cpp-httplib 0.11.4).
+void close_after_answer(httplib::Response& res) {
+  res.set_header("Connection", "close");
+  if (res.body.empty()) return;
+  auto body = std::make_shared<const std::string>(std::move(res.body));
+  res.body.clear();
+  const std::string type = res.get_header_value("Content-Type");
+  res.headers.erase("Content-Type");
+  res.set_content_provider(body->size(), type,
+                           [body](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                             sink.write(body->data() + offset, length);
+                             return false;
+                           });
 }
 
 std::shared_ptr<spdlog::logger> access_logger() {
@@ -202,6 +221,7 @@ void HttpServer::send(const httplib::Request& req, httplib::Response& res,
   } else if (response.status != 204 && response.status != 304) {
     res.set_content(std::move(response.body), response.content_type);
   }
+  if (current_request.unread_body) close_after_answer(res);
 }
 
 void HttpServer::answer(const httplib::Request& req, httplib::Response& res,
@@ -213,6 +233,8 @@ void HttpServer::answer(const httplib::Request& req, httplib::Response& res,
   if (content != nullptr && route->body == api::BodyPolicy::upload) {
     upload.emplace(req, *content, config_.max_upload_bytes);
     request.body_reader = &*upload;
+    // Until the handler has read it (a request refused for its parameters is not).
+    current_request.unread_body = body_pending(req);
   } else if (content != nullptr) {
     // JSON bodies are kept; a body a route does not take is drained under the same limit.
     std::string body =
@@ -221,8 +243,17 @@ void HttpServer::answer(const httplib::Request& req, httplib::Response& res,
   } else if (route->body == api::BodyPolicy::json) {
     request.body = req.body;
   }
-  api::ApiResponse response = route->needs_token ? run_write(*route, context_, request, req)
-                                                 : route->handler(context_, request);
+  const auto run = [&] {
+    try {
+      return route->needs_token ? run_write(*route, context_, request, req)
+                                : route->handler(context_, request);
+    } catch (...) {
+      if (upload && upload->complete()) current_request.unread_body = false;
+      throw;
+    }
+  };
+  api::ApiResponse response = run();
+  if (upload && upload->complete()) current_request.unread_body = false;
   api::apply_caching(route->caching, request, response);
   send(req, res, std::move(response));
 }
@@ -236,9 +267,8 @@ void HttpServer::install() {
   s.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
     begin_request(req);
     const api::RouteMatch& match = current_request.match;
-    const bool pending = body_pending(req);
     const auto refuse = [&](api::ApiResponse response) {
-      if (pending) response.headers.emplace_back("Connection", "close");
+      current_request.unread_body = body_pending(req);
       send(req, res, std::move(response));
       return HandlerResponse::Handled;
     };
@@ -267,6 +297,8 @@ void HttpServer::install() {
     }
     if (match.route->needs_token && !auth_->allows(req.get_header_value("Authorization")))
       return refuse(refuse_write(*auth_, req));
+    // cpp-httplib reads no body of a GET (or HEAD): a small one left there ends the connection.
+    current_request.unread_body = match.route->method == "GET" && body_pending(req);
     return HandlerResponse::Unhandled;
   });
 
@@ -320,7 +352,8 @@ void HttpServer::install() {
   // httplib's own errors (payload too large, bad request line) in the same format.
   s.set_error_handler(httplib::Server::HandlerWithResponse(
       [this](const httplib::Request& req, httplib::Response& res) {
-        if (!res.body.empty()) return HandlerResponse::Unhandled;
+        // Answers of this server (send() gives each a Cache-Control) are left as they are.
+        if (!res.body.empty() || res.has_header("Cache-Control")) return HandlerResponse::Unhandled;
         std::string code = "http_error";
         std::string message = "HTTP error " + std::to_string(res.status);
         if (res.status == 404) {
@@ -344,6 +377,8 @@ void HttpServer::install() {
         R"({{"remote":"{}","method":"{}","path":"{}","status":{},"bytes":{},"ms":{:.3f},"model":"{}","endpoint":"{}"}})",
         req.remote_addr, req.method, req.path, res.status, res.body.size(), seconds * 1e3,
         current_request.model, endpoint);
+    // A request that never reaches pre-routing (a bad request line) must not inherit this one.
+    current_request = {Clock::now(), {}, {}, "other", false};
   });
 
   // The routes: pre-routing matched each request against the table, so each method the table

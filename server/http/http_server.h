@@ -1,5 +1,5 @@
-// The HTTP boundary: cpp-httplib serving the route table of api/routes/route_table.h, in one
-// place (docs/http-api.md "From socket to handler").
+// The HTTP boundary (docs/conventions.md "One HTTP boundary"): cpp-httplib serving the route
+// table of api/routes/route_table.h, in one place (docs/http-api.md "From socket to handler").
 // - before a body is read (pre-routing): the route is found (404, or 405 with Allow), OPTIONS
 //   and CORS preflights are answered, bodies a route does not read are refused above the
 //   payload limit, and the bearer token of a write route is checked (401/403);

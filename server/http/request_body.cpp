@@ -47,14 +47,14 @@ std::string read_limited_body(const httplib::Request& req, const httplib::Conten
 }
 
 bool UploadBodyReader::read(const std::function<bool(std::string_view piece)>& receive) {
-  if (!has_body(req_)) return true;
+  if (!has_body(req_)) return complete_ = true;
   bool stopped = false;
-  const bool complete = content_([&](const char* data, std::size_t size) {
+  complete_ = content_([&](const char* data, std::size_t size) {
     if (receive(std::string_view(data, size))) return true;
     stopped = true;
     return false;
   });
-  if (complete) return true;
+  if (complete_) return true;
   if (stopped) return false;
   // cpp-httplib skips, without calling the receiver, a body above its payload limit.
   if (req_.get_header_value<std::uint64_t>("Content-Length") > limit_bytes_)

@@ -33,11 +33,14 @@ class UploadBodyReader final : public api::BodyReader {
                    std::size_t limit_bytes)
       : req_(req), content_(content), limit_bytes_(limit_bytes) {}
   bool read(const std::function<bool(std::string_view piece)>& receive) override;
+  // Whether the whole body has been read.
+  bool complete() const { return complete_; }
 
  private:
   const httplib::Request& req_;
   const httplib::ContentReader& content_;
   std::size_t limit_bytes_;
+  bool complete_ = false;
 };
 
 }  // namespace clearsky::server

@@ -3,10 +3,13 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
+#include <exception>
 #include <sstream>
 
 #include "api/error/api_error.h"
+#include "models/core/invalid_input.h"
 
 namespace clearsky::server {
 
@@ -23,6 +26,13 @@ struct TableStore::Entry {
   double seconds = 0;
   bool from_cache = false;
   std::uint64_t last_used = 0;
+  std::size_t estimated_bytes = 0;  // counted while the build is pending
+};
+
+struct TableStore::SunPreparation {
+  bool done = false;  // guarded by the store's mutex
+  std::shared_ptr<const SunState> state;
+  std::exception_ptr error;
 };
 
 namespace {
@@ -57,6 +67,11 @@ std::string entry_key(const ModelFactory& factory, const std::string& canonical)
 
 std::string entry_key(const ModelFactory& factory, const ModelConfig& config) {
   return entry_key(factory, config.canonical_string());
+}
+
+bool pending(api::ModelState::Status status) {
+  return status == api::ModelState::Status::queued ||
+         status == api::ModelState::Status::precomputing;
 }
 
 }  // namespace
@@ -119,7 +134,20 @@ std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory&
                            options_.retry_after_s);
     }
   }
+  const std::size_t estimate = estimate_bytes_locked(factory);
+  if (!pinned && !make_room_locked(estimate, nullptr)) {
+    throw api::ApiError(503, "busy", "table_memory",
+                        "table_memory: the tables of model " + factory.descriptor->id + " (about " +
+                            std::to_string(estimate) +
+                            " bytes) do not fit in the table memory "
+                            "budget of " +
+                            std::to_string(options_.memory_budget_bytes) + " bytes (" +
+                            std::to_string(accounted_bytes_locked()) +
+                            " in use by tables being kept or built); try again later",
+                        options_.retry_after_s);
+  }
   auto entry = std::make_shared<Entry>();
+  entry->estimated_bytes = estimate;
   entry->factory = &factory;
   entry->config = config;
   entry->key = key;
@@ -137,13 +165,22 @@ std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory&
 
 std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory,
                                                   const ModelConfig& config) const {
-  // The configuration was validated by the request's parsing (api::parse_config); the build
-  // validates it once more, once per configuration (models/core/model_factory.h).
   // The default configuration (most requests) skips building its canonical text.
   static const AtmosphereParameters default_atmosphere;
   static const WavelengthGrid default_grid = ModelConfig{}.wavelengths;
   const bool plain = config.options.empty() && config.atmosphere == default_atmosphere &&
                      config.wavelengths == default_grid;
+  // Any other configuration is checked against the descriptor before it is queued, so that a
+  // caller that did not parse it from a request (evaluations, jobs, tests) gets a 400 naming the
+  // parameter at once instead of a failed build (the build checks it again, once per build:
+  // models/core/model_factory.h).
+  if (!plain) {
+    try {
+      validate_config(*factory.descriptor, config);
+    } catch (const InvalidInput& e) {
+      throw api::invalid_parameter(e.field(), e.reason());
+    }
+  }
   const std::string canonical = plain ? default_canonical_string() : config.canonical_string();
   const bool is_default = canonical == default_canonical_string();
   const std::string key = entry_key(factory, canonical);
@@ -183,7 +220,62 @@ std::shared_ptr<const SunState> TableStore::sun_state(const std::shared_ptr<cons
   // The models whose per-sun preparation is costly (Haber, Nishita96) keep their own bounded,
   // single-flight cache of per-sun states (models/core/sun_state_cache.h); for the others a
   // SunState is just the sun. A second cache here would only defeat the models' memory bound.
-  return model->prepare_sun(sun);
+  if (!model->descriptor().capabilities.per_sun_precomputation) return model->prepare_sun(sun);
+  // A costly preparation runs on its own thread so that the request waits at most build_wait,
+  // like a table build; the thread keeps the model alive and fills the model's cache, where a
+  // later request finds the state.
+  std::ostringstream key_text;
+  key_text.precision(17);
+  key_text << static_cast<const void*>(model.get()) << '|' << sun.zenith_rad << '|'
+           << sun.azimuth_rad;
+  const std::string key = key_text.str();
+  std::unique_lock lock(mutex_);
+  std::shared_ptr<SunPreparation> preparation;
+  if (const auto it = sun_preparations_.find(key); it != sun_preparations_.end()) {
+    preparation = it->second;
+  } else {
+    if (sun_preparations_.size() >= options_.capacity) {
+      throw api::not_ready(model->descriptor().id,
+                           "too many per-sun preparations are pending; try again later",
+                           options_.retry_after_s);
+    }
+    preparation = std::make_shared<SunPreparation>();
+    sun_preparations_.emplace(key, preparation);
+    std::erase_if(on_demand_, [](OnDemandBuild& b) {
+      if (!b.done->load()) return false;
+      b.thread.join();
+      return true;
+    });
+    auto done = std::make_shared<std::atomic<bool>>(false);
+    on_demand_.push_back({std::thread([this, model, sun, key, preparation, done] {
+                            std::shared_ptr<const SunState> state;
+                            std::exception_ptr error;
+                            PrecomputeContext context;
+                            context.cancel = &stopping_;
+                            try {
+                              state = model->prepare_sun(sun, context);
+                            } catch (...) {
+                              error = std::current_exception();
+                            }
+                            {
+                              std::lock_guard done_lock(mutex_);
+                              preparation->state = std::move(state);
+                              preparation->error = error;
+                              preparation->done = true;
+                              sun_preparations_.erase(key);
+                            }
+                            changed_.notify_all();
+                            *done = true;
+                          }),
+                          done});
+  }
+  changed_.wait_for(lock, options_.build_wait, [&] { return preparation->done; });
+  if (!preparation->done) {
+    throw api::not_ready(model->descriptor().id, "its per-sun state for this sun is being prepared",
+                         options_.retry_after_s);
+  }
+  if (preparation->error) std::rethrow_exception(preparation->error);
+  return preparation->state;
 }
 
 api::ModelState TableStore::default_state(const ModelFactory& factory) const {
@@ -220,6 +312,48 @@ bool TableStore::ready() const {
   for (const ModelFactory& f : factories_) {
     const auto it = entries_.find(entry_key(f, default_canonical_string()));
     if (it == entries_.end() || it->second->status != api::ModelState::Status::ready) return false;
+  }
+  return true;
+}
+
+std::size_t TableStore::accounted_bytes() const {
+  std::lock_guard lock(mutex_);
+  return accounted_bytes_locked();
+}
+
+std::size_t TableStore::accounted_bytes_locked() const {
+  std::size_t bytes = 0;
+  for (const auto& [key, e] : entries_) {
+    if (e->model)
+      bytes += e->model->table_bytes();
+    else if (pending(e->status))
+      bytes += e->estimated_bytes;
+  }
+  return bytes;
+}
+
+std::size_t TableStore::estimate_bytes_locked(const ModelFactory& factory) const {
+  // Models do not announce their table sizes before a build; the largest tables of this model
+  // built so far (its default, pinned and built at start, at the least) stand in for them.
+  std::size_t bytes = 0;
+  for (const auto& [key, e] : entries_) {
+    if (e->factory == &factory)
+      bytes = std::max(bytes, e->model ? e->model->table_bytes() : e->estimated_bytes);
+  }
+  return bytes;
+}
+
+bool TableStore::make_room_locked(std::size_t extra, const Entry* keep) const {
+  while (accounted_bytes_locked() + extra > options_.memory_budget_bytes) {
+    std::shared_ptr<Entry> oldest;
+    for (const auto& [key, e] : entries_) {
+      if (e->pinned || e->status != api::ModelState::Status::ready || e.get() == keep) continue;
+      if (!oldest || e->last_used < oldest->last_used) oldest = e;
+    }
+    if (!oldest) return false;
+    spdlog::info("tables: evicting {} ({} bytes) to stay within the table memory budget",
+                 oldest->key, oldest->model->table_bytes());
+    entries_.erase(oldest->key);
   }
   return true;
 }
@@ -311,9 +445,12 @@ void TableStore::evict_locked() const {
       ++unpinned;
       if (!oldest || e->last_used < oldest->last_used) oldest = e;
     }
-    if (unpinned <= options_.capacity || !oldest) return;
+    if (unpinned <= options_.capacity || !oldest) break;
     entries_.erase(oldest->key);
   }
+  // A build larger than its estimate: evict the least recently used until within the budget,
+  // this entry last (its requests still hold its model).
+  make_room_locked(0, nullptr);
 }
 
 }  // namespace clearsky::server

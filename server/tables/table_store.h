@@ -8,6 +8,16 @@
 // the build goes on. The default configuration of every model is pinned; other configurations
 // are evicted least-recently-used beyond `capacity` ready entries, and at most `capacity`
 // builds may be pending (503 beyond).
+// Memory: the tables of every entry (ready: their table_bytes(); pending: an estimate, the
+// largest tables of that model seen so far) count against `memory_budget_bytes`. Before a
+// requested build starts, least-recently-used unpinned entries are evicted to make room for
+// its estimate; if it still does not fit, the request gets 503 (parameter "table_memory") and
+// nothing is built. Pinned entries (the defaults) count but are never evicted. A finished build
+// larger than its estimate evicts further.
+// Per-sun states of models with per-sun precomputation are prepared on a helper thread: a
+// request waits up to build_wait for it, then gets 503 while the preparation goes on (the
+// model's own per-sun cache keeps the result for the next request); at most `capacity`
+// preparations run at once (503 beyond).
 // Thread-safety: all public functions may be called from any thread. The destructor cancels
 // pending builds and joins the builder threads.
 #pragma once
@@ -32,6 +42,7 @@ class TableStore final : public api::ModelProvider {
  public:
   struct Options {
     std::size_t capacity = 16;  // non-default configurations kept and pending
+    std::size_t memory_budget_bytes = std::size_t{1} << 30;  // tables of all entries
     std::chrono::milliseconds build_wait{2000};
     int retry_after_s = 5;
     unsigned builder_threads = 1;       // concurrent builds
@@ -64,6 +75,8 @@ class TableStore final : public api::ModelProvider {
   bool ready() const;
   // Bytes held by the tables of the ready entries, per model id.
   std::map<std::string, std::size_t> table_bytes() const;
+  // Bytes counted against memory_budget_bytes: ready tables plus the estimates of pending builds.
+  std::size_t accounted_bytes() const;
   void set_build_observer(BuildObserver observer) { observer_ = std::move(observer); }
 
  private:
@@ -75,6 +88,12 @@ class TableStore final : public api::ModelProvider {
   void launch_locked(const std::shared_ptr<Entry>& entry) const;
   void build(Entry& entry) const;
   void evict_locked() const;
+  // Evicts least-recently-used unpinned ready entries (never `keep`) while the accounted bytes
+  // plus `extra` exceed the budget; whether they now fit.
+  bool make_room_locked(std::size_t extra, const Entry* keep) const;
+  std::size_t accounted_bytes_locked() const;
+  std::size_t estimate_bytes_locked(const ModelFactory& factory) const;
+  struct SunPreparation;
 
   std::vector<ModelFactory> factories_;
   Options options_;
@@ -91,6 +110,7 @@ class TableStore final : public api::ModelProvider {
     std::shared_ptr<std::atomic<bool>> done;
   };
   mutable std::vector<OnDemandBuild> on_demand_;
+  mutable std::map<std::string, std::shared_ptr<SunPreparation>> sun_preparations_;
 };
 
 }  // namespace clearsky::server

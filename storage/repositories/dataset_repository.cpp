@@ -52,6 +52,20 @@ std::vector<DatasetSummary> DatasetRepository::list() {
   return result;
 }
 
+KeysetPage<DatasetSummary> DatasetRepository::list_page(
+    std::int64_t limit, const std::optional<std::string>& after_name) {
+  auto query = db_.prepare(std::string(kSummarySelect) +
+                           " WHERE ?1 IS NULL OR d.name > ?1 ORDER BY d.name LIMIT ?2");
+  if (after_name)
+    query.bind(1, *after_name);
+  else
+    query.bind_null(1);
+  query.bind(2, limit + 1);
+  std::vector<DatasetSummary> result;
+  while (query.step()) result.push_back(read_summary(query));
+  return keyset_page(std::move(result), limit);
+}
+
 bool DatasetRepository::remove(const std::string& name) {
   auto statement = db_.prepare("DELETE FROM datasets WHERE name = ?");
   statement.bind(1, name);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "storage/repositories/keyset_page.h"
 #include "storage/sqlite/database.h"
 
 namespace clearsky::storage {
@@ -27,7 +28,10 @@ class DatasetRepository {
   // with another format.
   std::int64_t find_or_create(const std::string& name, const std::string& format);
   std::optional<DatasetSummary> find(const std::string& name);
-  std::vector<DatasetSummary> list();
+  std::vector<DatasetSummary> list();  // by name
+  // At most limit datasets by name, those after after_name when given.
+  KeysetPage<DatasetSummary> list_page(std::int64_t limit,
+                                       const std::optional<std::string>& after_name = std::nullopt);
   // Deletes the dataset with its captures, samples and runs; false when absent.
   bool remove(const std::string& name);
 

@@ -13,11 +13,10 @@ namespace clearsky::storage {
 namespace {
 
 constexpr const char* kRunSelect =
-    "SELECT id, dataset_id, job_id, model_id, model_version, parameters, software_version, "
-    "min_wavelength_nm,"
-    " max_wavelength_nm, started_utc, finished_utc, status, error, rmse, precompute_seconds, "
-    "evaluate_seconds,"
-    " processing_steps, wavelengths_nm FROM evaluation_runs";
+    "SELECT id, dataset_id, job_id, model_id, model_version, parameters, software_version,"
+    " min_wavelength_nm, max_wavelength_nm, started_utc, finished_utc, status, error, rmse,"
+    " precompute_seconds, evaluate_seconds, processing_steps, wavelengths_nm, configuration"
+    " FROM evaluation_runs";
 
 std::optional<double> optional_double(const Statement& row, int column) {
   if (row.is_null(column)) return std::nullopt;
@@ -49,6 +48,7 @@ RunRecord read_run(const Statement& row) {
   r.evaluate_seconds = optional_double(row, 15);
   r.processing_steps = row.column_text(16);
   if (!row.is_null(17)) r.wavelengths_nm = decode_doubles(row.column_blob(17));
+  r.configuration = row.column_text(18);
   return r;
 }
 
@@ -72,10 +72,9 @@ std::int64_t store_sample_errors(Database& db, const std::vector<std::byte>& byt
 
 std::int64_t EvaluationRunRepository::start(const NewRun& run) {
   auto statement = db_.prepare(
-      "INSERT INTO evaluation_runs (dataset_id, job_id, model_id, model_version, parameters, "
-      "software_version,"
-      " min_wavelength_nm, max_wavelength_nm, started_utc, status) VALUES (?, ?, ?, ?, ?, ?, ?, ?, "
-      "?, 'running')");
+      "INSERT INTO evaluation_runs (dataset_id, job_id, model_id, model_version, parameters,"
+      " software_version, min_wavelength_nm, max_wavelength_nm, started_utc, configuration,"
+      " status) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, 'running')");
   statement.bind(1, run.dataset_id);
   if (run.job_id)
     statement.bind(2, *run.job_id);
@@ -87,7 +86,8 @@ std::int64_t EvaluationRunRepository::start(const NewRun& run) {
       .bind(6, run.software_version)
       .bind(7, run.min_wavelength_nm)
       .bind(8, run.max_wavelength_nm)
-      .bind(9, utc_now_iso8601());
+      .bind(9, utc_now_iso8601())
+      .bind(10, run.configuration);
   statement.run();
   return db_.last_insert_rowid();
 }
@@ -192,6 +192,57 @@ std::vector<RunRecord> EvaluationRunRepository::list(std::int64_t dataset_id) {
   std::vector<RunRecord> runs;
   while (query.step()) runs.push_back(read_run(query));
   return runs;
+}
+
+KeysetPage<RunRecord> EvaluationRunRepository::list(const RunFilter& filter, std::int64_t limit,
+                                                    std::optional<std::int64_t> before_id) {
+  // Start times are ISO 8601 UTC text, which julianday() reads (a trailing Z included).
+  auto query =
+      db_.prepare(std::string(kRunSelect) +
+                  " WHERE (?1 IS NULL OR dataset_id = ?1) AND (?2 IS NULL OR model_id = ?2)"
+                  " AND (?3 IS NULL OR status = ?3) AND (?4 IS NULL OR job_id = ?4)"
+                  " AND (?5 IS NULL OR (julianday(started_utc) - 2440587.5) * 86400.0 >= ?5)"
+                  " AND (?6 IS NULL OR (julianday(started_utc) - 2440587.5) * 86400.0 < ?6)"
+                  " AND (?7 IS NULL OR id < ?7) ORDER BY id DESC LIMIT ?8");
+  const auto bind_id = [&](int index, const std::optional<std::int64_t>& value) {
+    if (value)
+      query.bind(index, *value);
+    else
+      query.bind_null(index);
+  };
+  const auto bind_text = [&](int index, const std::optional<std::string>& value) {
+    if (value)
+      query.bind(index, *value);
+    else
+      query.bind_null(index);
+  };
+  bind_id(1, filter.dataset_id);
+  bind_text(2, filter.model_id);
+  bind_text(3, filter.status);
+  bind_id(4, filter.job_id);
+  query.bind_optional(5, filter.since_unix_s);
+  query.bind_optional(6, filter.until_unix_s);
+  bind_id(7, before_id);
+  query.bind(8, limit + 1);
+  std::vector<RunRecord> runs;
+  while (query.step()) runs.push_back(read_run(query));
+  return keyset_page(std::move(runs), limit);
+}
+
+std::optional<RunRecord> EvaluationRunRepository::previous_like(const RunRecord& run) {
+  auto query = db_.prepare(std::string(kRunSelect) +
+                           " WHERE dataset_id = ? AND model_id = ? AND configuration = ?"
+                           " AND min_wavelength_nm = ? AND max_wavelength_nm = ?"
+                           " AND status = 'succeeded' AND rmse IS NOT NULL AND id < ?"
+                           " ORDER BY id DESC LIMIT 1");
+  query.bind(1, run.dataset_id)
+      .bind(2, run.model_id)
+      .bind(3, run.configuration)
+      .bind(4, run.min_wavelength_nm)
+      .bind(5, run.max_wavelength_nm)
+      .bind(6, run.id);
+  if (!query.step()) return std::nullopt;
+  return read_run(query);
 }
 
 }  // namespace clearsky::storage

@@ -3,8 +3,11 @@
 // the measurements), when, how it ended, the total RMSE and timings, and the result of every
 // capture (sun angles used, RMSE) with, from schema version 2, the compared wavelengths and
 // each capture's per-sample errors (sample_errors_blob.h; identical blobs stored once). A run
-// is recorded as 'running' when it starts so that a crash leaves a trace. SQL on these tables
-// lives only here. Thread-safety: as the Database.
+// is recorded as 'running' when it starts so that a crash leaves a trace. From schema version
+// 4 a run's parameters are JSON text (those applied to its model, as given) and its
+// configuration key is kept apart for the history comparison; ids are never reused and a run
+// keeps its job id after the job is deleted. SQL on these tables lives only here.
+// Thread-safety: as the Database.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "storage/repositories/keyset_page.h"
 #include "storage/repositories/sample_errors_blob.h"
 #include "storage/sqlite/database.h"
 
@@ -36,7 +40,8 @@ struct NewRun {
   std::optional<std::int64_t> job_id;
   std::string model_id;
   std::string model_version;
-  std::string parameters;  // ModelConfig::canonical_string()
+  std::string parameters = "{}";  // JSON object: the parameters applied to the model, as given
+  std::string configuration;      // the model's ModelConfig::canonical_string()
   std::string software_version;
   double min_wavelength_nm = 360;
   double max_wavelength_nm = 720;
@@ -46,7 +51,10 @@ struct RunRecord {
   std::int64_t id = 0;
   std::int64_t dataset_id = 0;
   std::optional<std::int64_t> job_id;
-  std::string model_id, model_version, parameters, software_version;
+  std::string model_id, model_version;
+  std::string parameters;     // JSON object text
+  std::string configuration;  // ModelConfig::canonical_string()
+  std::string software_version;
   double min_wavelength_nm = 0, max_wavelength_nm = 0;
   std::string started_utc;
   std::optional<std::string> finished_utc;
@@ -58,6 +66,16 @@ struct RunRecord {
   // schema version 2 and runs not finished.
   std::optional<std::vector<double>> wavelengths_nm;
   std::vector<RunCaptureResult> captures;  // filled by get()
+};
+
+// Filters of list(); each unset one keeps every run.
+struct RunFilter {
+  std::optional<std::int64_t> dataset_id;
+  std::optional<std::string> model_id;
+  std::optional<std::string> status;
+  std::optional<std::int64_t> job_id;
+  std::optional<double> since_unix_s;  // started at or after
+  std::optional<double> until_unix_s;  // started before
 };
 
 class EvaluationRunRepository {
@@ -78,6 +96,13 @@ class EvaluationRunRepository {
   std::optional<RunRecord> get(std::int64_t run_id, bool with_samples = false);
   // Runs of a dataset, newest first, without per-capture results.
   std::vector<RunRecord> list(std::int64_t dataset_id);
+  // At most limit runs passing the filter, newest (highest id) first, with ids below before_id
+  // when given; without per-capture results.
+  KeysetPage<RunRecord> list(const RunFilter& filter, std::int64_t limit,
+                             std::optional<std::int64_t> before_id = std::nullopt);
+  // The newest succeeded run before this one of the same dataset, model, configuration and
+  // wavelength range (the history comparison's "like with like").
+  std::optional<RunRecord> previous_like(const RunRecord& run);
 
  private:
   Database& db_;

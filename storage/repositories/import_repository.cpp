@@ -137,9 +137,16 @@ std::optional<ImportRecord> ImportRepository::get(std::int64_t id) {
 std::vector<ImportRecord> ImportRepository::list(std::int64_t limit,
                                                  const std::optional<std::string>& status,
                                                  const std::optional<std::string>& dataset) {
+  return list_page(limit, status, dataset, std::nullopt).rows;
+}
+
+KeysetPage<ImportRecord> ImportRepository::list_page(std::int64_t limit,
+                                                     const std::optional<std::string>& status,
+                                                     const std::optional<std::string>& dataset,
+                                                     std::optional<std::int64_t> before_id) {
   auto statement = db_.prepare(std::string(kImportSelect) +
                                " WHERE (?1 IS NULL OR status = ?1) AND (?2 IS NULL OR dataset = ?2)"
-                               " ORDER BY id DESC LIMIT ?3");
+                               " AND (?3 IS NULL OR id < ?3) ORDER BY id DESC LIMIT ?4");
   if (status)
     statement.bind(1, *status);
   else
@@ -148,10 +155,14 @@ std::vector<ImportRecord> ImportRepository::list(std::int64_t limit,
     statement.bind(2, *dataset);
   else
     statement.bind_null(2);
-  statement.bind(3, limit);
+  if (before_id)
+    statement.bind(3, *before_id);
+  else
+    statement.bind_null(3);
+  statement.bind(4, limit + 1);
   std::vector<ImportRecord> out;
   while (statement.step()) out.push_back(read_import(statement));
-  return out;
+  return keyset_page(std::move(out), limit);
 }
 
 }  // namespace clearsky::storage

@@ -2,7 +2,8 @@
 // an upload or a server-side path), its state (queued, running, succeeded, failed), timings,
 // the last progress recorded, the report (JSON text) on success and the error on failure.
 // An import is recorded before it is queued so that a crash leaves a trace, which start-up
-// turns into a failure (fail_unfinished). SQL on this table lives only here.
+// turns into a failure (fail_unfinished). Ids are never reused (schema version 4). SQL on this
+// table lives only here.
 // Thread-safety: as the Database it uses.
 #pragma once
 
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "storage/importers/kider_importer.h"
+#include "storage/repositories/keyset_page.h"
 #include "storage/sqlite/database.h"
 
 namespace clearsky::storage {
@@ -52,6 +54,10 @@ class ImportRepository {
   std::vector<ImportRecord> list(std::int64_t limit = 100,
                                  const std::optional<std::string>& status = {},
                                  const std::optional<std::string>& dataset = {});
+  // The same as a keyset page: ids below before_id when given.
+  KeysetPage<ImportRecord> list_page(std::int64_t limit, const std::optional<std::string>& status,
+                                     const std::optional<std::string>& dataset,
+                                     std::optional<std::int64_t> before_id);
 
  private:
   Database& db_;

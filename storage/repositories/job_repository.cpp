@@ -55,6 +55,20 @@ std::vector<JobRecord> JobRepository::list() {
   return jobs;
 }
 
+KeysetPage<JobRecord> JobRepository::list_page(std::int64_t limit,
+                                               const std::optional<std::string>& after_name) {
+  auto query = db_.prepare(std::string(kJobSelect) +
+                           " WHERE ?1 IS NULL OR name > ?1 ORDER BY name LIMIT ?2");
+  if (after_name)
+    query.bind(1, *after_name);
+  else
+    query.bind_null(1);
+  query.bind(2, limit + 1);
+  std::vector<JobRecord> jobs;
+  while (query.step()) jobs.push_back(read_job(query));
+  return keyset_page(std::move(jobs), limit);
+}
+
 std::optional<JobRecord> JobRepository::get(std::int64_t id) {
   auto query = db_.prepare(std::string(kJobSelect) + " WHERE id = ?");
   query.bind(1, id);

@@ -1,6 +1,7 @@
 // Scheduled evaluations: a named job evaluates models (ids or "all") against a dataset on a
 // cron-style schedule; the scheduler (server/) records its last and next run. The schedule
-// text is validated by the scheduler, not here. SQL on the jobs table lives only here.
+// text is validated by the scheduler, not here. Ids are never reused (schema version 4); the
+// runs of a deleted job keep its id. SQL on the jobs table lives only here.
 // Thread-safety: as the Database it uses.
 #pragma once
 
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "storage/repositories/keyset_page.h"
 #include "storage/sqlite/database.h"
 
 namespace clearsky::storage {
@@ -31,7 +33,10 @@ class JobRepository {
   explicit JobRepository(Database& db) : db_(db) {}
   // Throws SqliteError (constraint) when the name is taken or the dataset does not exist.
   std::int64_t create(const JobRecord& job);
-  std::vector<JobRecord> list();
+  std::vector<JobRecord> list();  // by name
+  // At most limit jobs by name, those after after_name when given.
+  KeysetPage<JobRecord> list_page(std::int64_t limit,
+                                  const std::optional<std::string>& after_name = std::nullopt);
   std::optional<JobRecord> get(std::int64_t id);
   bool set_paused(std::int64_t id, bool paused);
   bool record_run(std::int64_t id, const std::string& last_run_utc,

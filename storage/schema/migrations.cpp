@@ -1,10 +1,13 @@
 // Schema migrations (migrations.h). Tables (docs/architecture.md "Storage and durability"):
 // datasets of measured captures, their samples (spectra as float64 blobs), evaluation runs with
-// per-capture results, and scheduled evaluation jobs; dataset imports. Times are ISO 8601 UTC text
-// except capture instants (unix seconds).
+// per-capture results, and scheduled evaluation jobs; dataset imports; from version 4, ids never
+// reused and run parameters as JSON (docs/data-api.md). Times are ISO 8601 UTC text except
+// capture instants (unix seconds).
 #include "storage/schema/migrations.h"
 
 #include <string>
+
+#include "storage/schema/legacy_run_parameters.h"
 
 namespace clearsky::storage {
 
@@ -145,13 +148,133 @@ CREATE TABLE imports (
 );
 CREATE INDEX imports_by_status ON imports(status);
 )sql",
+      // Version 4 (docs/data-api.md "Ids" and "Evaluation parameters"):
+      // - ids are never reused: jobs, evaluation runs and imports get AUTOINCREMENT (a table
+      //   can only get it by being rebuilt, which migrate() does with foreign keys off);
+      // - a run keeps its job id after the job is deleted (no foreign key on job_id), so that
+      //   GET /v1/evaluations?job=N still finds it;
+      // - a run's parameters are a JSON object of the parameters applied to its model, as the
+      //   user gave them; the model's full configuration key (ModelConfig::canonical_string(),
+      //   what the column held before) moves to `configuration`, which the history comparison
+      //   uses. Existing rows are converted by legacy_run_parameters_json
+      //   (legacy_run_parameters.h).
+      R"sql(
+CREATE TABLE jobs_v4 (
+  id INTEGER PRIMARY KEY AUTOINCREMENT,
+  name TEXT NOT NULL UNIQUE,
+  schedule TEXT NOT NULL,
+  dataset_id INTEGER NOT NULL REFERENCES datasets(id) ON DELETE CASCADE,
+  models TEXT NOT NULL,
+  parameters TEXT NOT NULL DEFAULT '',
+  paused INTEGER NOT NULL DEFAULT 0 CHECK (paused IN (0, 1)),
+  created_utc TEXT NOT NULL,
+  last_run_utc TEXT,
+  next_run_utc TEXT
+);
+INSERT INTO jobs_v4 (id, name, schedule, dataset_id, models, parameters, paused, created_utc,
+                     last_run_utc, next_run_utc)
+  SELECT id, name, schedule, dataset_id, models, parameters, paused, created_utc, last_run_utc,
+         next_run_utc FROM jobs;
+DROP TABLE jobs;
+ALTER TABLE jobs_v4 RENAME TO jobs;
+
+CREATE TABLE evaluation_runs_v4 (
+  id INTEGER PRIMARY KEY AUTOINCREMENT,
+  dataset_id INTEGER NOT NULL REFERENCES datasets(id) ON DELETE CASCADE,
+  job_id INTEGER,
+  model_id TEXT NOT NULL,
+  model_version TEXT NOT NULL,
+  parameters TEXT NOT NULL DEFAULT '{}',
+  configuration TEXT NOT NULL,
+  software_version TEXT NOT NULL,
+  min_wavelength_nm REAL NOT NULL,
+  max_wavelength_nm REAL NOT NULL,
+  started_utc TEXT NOT NULL,
+  finished_utc TEXT,
+  status TEXT NOT NULL CHECK (status IN ('running', 'succeeded', 'failed')),
+  error TEXT,
+  rmse REAL,
+  precompute_seconds REAL,
+  evaluate_seconds REAL,
+  processing_steps TEXT NOT NULL DEFAULT '',
+  wavelengths_nm BLOB
+);
+INSERT INTO evaluation_runs_v4 (id, dataset_id, job_id, model_id, model_version, parameters,
+                                configuration, software_version, min_wavelength_nm,
+                                max_wavelength_nm, started_utc, finished_utc, status, error, rmse,
+                                precompute_seconds, evaluate_seconds, processing_steps,
+                                wavelengths_nm)
+  SELECT id, dataset_id, job_id, model_id, model_version, legacy_run_parameters_json(parameters),
+         parameters, software_version, min_wavelength_nm, max_wavelength_nm, started_utc,
+         finished_utc, status, error, rmse, precompute_seconds, evaluate_seconds,
+         processing_steps, wavelengths_nm FROM evaluation_runs;
+DROP TABLE evaluation_runs;
+ALTER TABLE evaluation_runs_v4 RENAME TO evaluation_runs;
+CREATE INDEX runs_by_dataset ON evaluation_runs(dataset_id, started_utc);
+CREATE INDEX runs_by_job ON evaluation_runs(job_id);
+
+CREATE TABLE imports_v4 (
+  id INTEGER PRIMARY KEY AUTOINCREMENT,
+  dataset TEXT NOT NULL,
+  format TEXT NOT NULL,
+  source TEXT NOT NULL CHECK (source IN ('upload', 'path')),
+  path TEXT NOT NULL DEFAULT '',
+  upload_bytes INTEGER,
+  status TEXT NOT NULL CHECK (status IN ('queued', 'running', 'succeeded', 'failed')),
+  created_utc TEXT NOT NULL,
+  started_utc TEXT,
+  finished_utc TEXT,
+  phase TEXT NOT NULL DEFAULT '',
+  bytes_read INTEGER NOT NULL DEFAULT 0,
+  bytes_total INTEGER,
+  entries_read INTEGER NOT NULL DEFAULT 0,
+  entries_total INTEGER,
+  files_read INTEGER NOT NULL DEFAULT 0,
+  captures_added INTEGER NOT NULL DEFAULT 0,
+  samples_added INTEGER NOT NULL DEFAULT 0,
+  report TEXT,
+  error_code TEXT,
+  error TEXT
+);
+INSERT INTO imports_v4 SELECT * FROM imports;
+DROP TABLE imports;
+ALTER TABLE imports_v4 RENAME TO imports;
+CREATE INDEX imports_by_status ON imports(status);
+)sql",
   };
   return migrations;
 }
 
+namespace {
+
+// Foreign keys off while migrating, on again afterwards whatever happens: the rebuild of a
+// table (SQLite's "making other kinds of table schema changes" procedure) drops the old table,
+// which with foreign keys on would cascade to its children. The pragma is a no-op inside a
+// transaction, so it is set around them; each migration checks the keys before committing.
+class ForeignKeysOff {
+ public:
+  explicit ForeignKeysOff(Database& db) : db_(db) { db_.execute("PRAGMA foreign_keys = OFF"); }
+  ~ForeignKeysOff() {
+    try {
+      db_.execute("PRAGMA foreign_keys = ON");
+    } catch (...) {
+      // Never thrown by SQLite outside a transaction; a destructor must not throw.
+    }
+  }
+  ForeignKeysOff(const ForeignKeysOff&) = delete;
+  ForeignKeysOff& operator=(const ForeignKeysOff&) = delete;
+
+ private:
+  Database& db_;
+};
+
+}  // namespace
+
 int migrate(Database& db, const std::vector<std::string_view>& migrations) {
   const int latest = static_cast<int>(migrations.size());
   int applied = 0;
+  register_legacy_run_parameters(db);
+  const ForeignKeysOff keys_off(db);
   for (;;) {
     Transaction transaction(db);
     // Read inside the write transaction: two processes migrating at once apply each step once.
@@ -164,6 +287,9 @@ int migrate(Database& db, const std::vector<std::string_view>& migrations) {
       return applied;
     }
     db.execute(migrations[static_cast<std::size_t>(version)]);
+    if (db.prepare("PRAGMA foreign_key_check").step())
+      throw std::runtime_error("schema migration to version " + std::to_string(version + 1) +
+                               " leaves rows whose foreign keys point nowhere");
     db.execute("PRAGMA user_version = " + std::to_string(version + 1));
     transaction.commit();
     ++applied;

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/shared_data.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky {
 namespace {
@@ -29,10 +30,8 @@ std::pair<int, std::string> run(const std::string& arguments) {
 TEST(ImportPublicCaptures, FifteenCapturesOf81Samples) {
   const auto folder = testing::shared_data_dir() / "kider2014/2013-05-27/RADIANCE";
   CLEARSKY_REQUIRE_SHARED_DATA("kider2014/2013-05-27/RADIANCE");
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("clearsky_import_all_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  const std::string db = (dir / "sky.db").string();
+  const testing::TempDir dir;
+  const std::string db = dir.database_path().string();
   const std::string archives = folder.string() + "/*.7z";
 
   const auto start = std::chrono::steady_clock::now();
@@ -50,7 +49,6 @@ TEST(ImportPublicCaptures, FifteenCapturesOf81Samples) {
   ASSERT_EQ(again.first, 0) << again.second;
   EXPECT_EQ(nlohmann::json::parse(again.second).at("unchanged").size(), 15u);
   EXPECT_EQ(nlohmann::json::parse(again.second).at("added").size(), 0u);
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

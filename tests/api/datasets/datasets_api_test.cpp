@@ -15,8 +15,8 @@
 #include "storage/repositories/dataset_repository.h"
 #include "storage/schema/migrations.h"
 #include "tests/models/evaluation/synthetic_sky.h"
-#include "tests/storage/temp_dir.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky::api {
 namespace {
@@ -63,7 +63,7 @@ nlohmann::ordered_json upload(storage::Database& db, const std::filesystem::path
 
 TEST(DatasetsApi, ListAndShowSyntheticCapture) {
   storage::Database db = database_with_synthetic_dataset();
-  const auto list = list_datasets(db);
+  const auto list = list_datasets(db).items;
   ASSERT_EQ(list.size(), 1u);
   EXPECT_EQ(list[0]["name"], "synthetic");
   EXPECT_EQ(list[0]["format"], "kider2014");
@@ -102,13 +102,13 @@ TEST(DatasetsApi, UnknownDatasetOrCaptureIs404AndDeleteRemoves) {
   EXPECT_EQ(status_of([&] { show_dataset(db, "missing"); }), 404);
   EXPECT_EQ(status_of([&] { show_dataset(db, "synthetic", {false, std::string("nope")}); }), 404);
   EXPECT_EQ(delete_dataset(db, "synthetic")["deleted"], "synthetic");
-  EXPECT_TRUE(list_datasets(db).empty());
+  EXPECT_TRUE(list_datasets(db).items.empty());
   EXPECT_EQ(status_of([&] { delete_dataset(db, "synthetic"); }), 404);
 }
 
 TEST(DatasetsApi, UploadedArchiveImportsOnceAndReimportIsUnchanged) {
   CLEARSKY_REQUIRE_SHARED_DATA(kArchive);
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   storage::Database db = storage::open_database(dir.path / "db.sqlite");
   const std::string bytes = file_bytes(clearsky::testing::shared_data_dir() / kArchive);
   const auto report = upload(db, dir.path / "uploads", bytes, 8u << 20);
@@ -132,17 +132,17 @@ TEST(DatasetsApi, UploadedArchiveImportsOnceAndReimportIsUnchanged) {
 
 TEST(DatasetsApi, OversizedUploadIs413AndLeavesNothing) {
   CLEARSKY_REQUIRE_SHARED_DATA(kArchive);
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   storage::Database db = storage::open_database(dir.path / "db.sqlite");
   const std::string bytes = file_bytes(clearsky::testing::shared_data_dir() / kArchive);
   EXPECT_EQ(status_of([&] { upload(db, dir.path / "uploads", bytes, bytes.size() - 1); }), 413);
-  EXPECT_TRUE(list_datasets(db).empty());
+  EXPECT_TRUE(list_datasets(db).items.empty());
   EXPECT_TRUE(std::filesystem::is_empty(dir.path / "uploads"));
 }
 
 TEST(DatasetsApi, TruncatedOrForeignUploadIs400AndLeavesNothing) {
   CLEARSKY_REQUIRE_SHARED_DATA(kArchive);
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   storage::Database db = storage::open_database(dir.path / "db.sqlite");
   const std::string bytes = file_bytes(clearsky::testing::shared_data_dir() / kArchive);
   EXPECT_EQ(
@@ -150,13 +150,13 @@ TEST(DatasetsApi, TruncatedOrForeignUploadIs400AndLeavesNothing) {
       400);
   EXPECT_EQ(status_of([&] { upload(db, dir.path / "u", "this is not an archive", 8u << 20); }),
             400);
-  EXPECT_TRUE(list_datasets(db).empty());
+  EXPECT_TRUE(list_datasets(db).items.empty());
   EXPECT_EQ(status_of([&] { import_dataset(db, "x", "csv", dir.path); }), 400);
 }
 
 TEST(DatasetsApi, SameLabelWithOtherContentIs409) {
   CLEARSKY_REQUIRE_SHARED_DATA(kArchive);
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   storage::Database db = storage::open_database(dir.path / "db.sqlite");
   // A capture with the archive's label but other content, already stored.
   const auto dataset = storage::DatasetRepository(db).find_or_create("uploaded", "kider2014");
@@ -165,11 +165,11 @@ TEST(DatasetsApi, SameLabelWithOtherContentIs409) {
   storage::CaptureRepository(db).insert(dataset, c, "other", "test");
   const std::string bytes = file_bytes(clearsky::testing::shared_data_dir() / kArchive);
   EXPECT_EQ(status_of([&] { upload(db, dir.path / "u", bytes, 8u << 20); }), 409);
-  EXPECT_EQ(list_datasets(db)[0]["captures"], 1);
+  EXPECT_EQ(list_datasets(db).items[0]["captures"], 1);
 }
 
 TEST(UploadSpool, StaleFilesOfAKilledProcessAreRemovedAtStartUp) {
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   const auto folder = dir.path / "uploads";
   {
     UploadSpool kept(folder, 100);

@@ -1,4 +1,5 @@
-// ISO 8601 formatting of instants at an offset, and the round trip through the parser.
+// ISO 8601 formatting of instants at an offset or in an IANA time zone, and the round trip
+// through the parser.
 #include "api/encode/iso8601_time.h"
 
 #include <gtest/gtest.h>
@@ -33,6 +34,39 @@ TEST(FormatIso8601Time, RoundTripsThroughTheParser) {
 TEST(FormatIso8601Time, RejectsNonFiniteInstants) {
   EXPECT_THROW((void)format_iso8601_time(std::nan(""), 0), std::invalid_argument);
   EXPECT_THROW((void)format_iso8601_time(0.0, 19 * 60), std::invalid_argument);
+  EXPECT_THROW((void)format_iso8601_time(0.0, 14 * 60 + 1), std::invalid_argument);
+  EXPECT_THROW((void)format_iso8601_time(1e13, 0), std::invalid_argument);
+}
+
+TEST(FormatIso8601Time, ExpandedYears) {
+  // 10000-01-01T00:00:00Z.
+  EXPECT_EQ(format_iso8601_time(253402300800.0, 0, true), "+10000-01-01T00:00:00Z");
+  EXPECT_EQ(format_iso8601_time(253402300799.0, 0, true), "9999-12-31T23:59:59Z");
+}
+
+TEST(FormatIso8601TimeInZone, OffsetsFollowDaylightSavingTime) {
+  EXPECT_EQ(utc_offset_min_in_zone(1719835200.0, "Europe/Paris"), 120);
+  EXPECT_EQ(utc_offset_min_in_zone(1705316400.0, "Europe/Paris"), 60);
+  EXPECT_EQ(utc_offset_min_in_zone(1369669500.0, "America/New_York"), -240);
+  EXPECT_EQ(utc_offset_min_in_zone(1369669500.0, "UTC"), 0);
+  EXPECT_EQ(format_iso8601_time_in_zone(1719835200.0, "Europe/Paris"), "2024-07-01T14:00:00+02:00");
+  EXPECT_EQ(format_iso8601_time_in_zone(1705316400.0, "Europe/Paris"), "2024-01-15T12:00:00+01:00");
+  // The hour before and after clocks go back in Paris (2024-10-27 01:00Z).
+  EXPECT_EQ(format_iso8601_time_in_zone(1729990800.0 - 1.0, "Europe/Paris"),
+            "2024-10-27T02:59:59+02:00");
+  EXPECT_EQ(format_iso8601_time_in_zone(1729990800.0 + 1800.0, "Europe/Paris"),
+            "2024-10-27T02:30:00+01:00");
+  EXPECT_THROW((void)utc_offset_min_in_zone(0.0, "Mars/Olympus_Mons"), std::invalid_argument);
+}
+
+TEST(FormatIso8601TimeInZone, RoundTripsThroughTheLocalTimeParser) {
+  for (double unix_s : {1719835200.0, 1705316400.0, 1729989000.0, 1711846800.0 - 1.0}) {
+    const std::string text = format_iso8601_time_in_zone(unix_s, "Europe/Paris");
+    const std::string local = text.substr(0, text.size() - 6);  // without the offset
+    const Iso8601Time t = parse_iso8601_local_time(local, "Europe/Paris");
+    EXPECT_DOUBLE_EQ(t.unix_time_utc_s, unix_s) << text;
+    EXPECT_EQ(format_iso8601_time(t.unix_time_utc_s, t.utc_offset_min), text);
+  }
 }
 
 }  // namespace

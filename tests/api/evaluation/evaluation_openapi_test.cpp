@@ -1,4 +1,4 @@
-// The OpenAPI description of GET /v1/evaluations/{id} (api/openapi/data_paths.cpp) matches what
+// The OpenAPI description of GET /v1/evaluations/{id} (api/openapi/evaluations_operations.cpp) matches what
 // the handler takes (api/evaluation/evaluations_api.h): every documented query parameter and
 // value is accepted, a value outside the documented enum is refused, and the per-sample answer
 // and its absence for older runs are described.

@@ -112,7 +112,8 @@ TEST(EvaluationRunner, StoresEveryRunWithItsCaptureResults) {
   EXPECT_EQ(stored->status, "succeeded");
   EXPECT_EQ(stored->model_id, "offset");
   EXPECT_EQ(stored->software_version, "test");
-  EXPECT_EQ(stored->parameters, ModelConfig{}.canonical_string());
+  EXPECT_EQ(stored->parameters, "{}");
+  EXPECT_EQ(stored->configuration, ModelConfig{}.canonical_string());
   EXPECT_NEAR(*stored->rmse, 3.0, 1e-9);
   ASSERT_EQ(stored->captures.size(), 2u);
   EXPECT_EQ(stored->captures[1].capture_label, "capture 1");

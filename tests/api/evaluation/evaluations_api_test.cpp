@@ -10,17 +10,19 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <thread>
 
 #include "api/error/api_error.h"
 #include "api/evaluation/evaluation_pool.h"
 #include "api/evaluation/evaluation_runner.h"
+#include "models/registry.h"
 #include "storage/repositories/capture_repository.h"
 #include "storage/repositories/dataset_repository.h"
 #include "storage/repositories/evaluation_run_repository.h"
 #include "storage/schema/migrations.h"
 #include "tests/models/evaluation/function_model.h"
-#include "tests/storage/temp_dir.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky::api {
 namespace {
@@ -46,8 +48,16 @@ const ModelDescriptor& exact_d() {
   static const ModelDescriptor d = with_id("exact");
   return d;
 }
+// The offset model takes the atmosphere's turbidity and alpha (its descriptor lists them).
 const ModelDescriptor& offset_d() {
-  static const ModelDescriptor d = with_id("offset");
+  static const ModelDescriptor d = [] {
+    ModelDescriptor m = with_id("offset");
+    m.parameters.push_back(
+        ParameterSpec{"turbidity", "", "turbidity", 2.53, 1.0, 10.0, false, true});
+    m.parameters.push_back(
+        ParameterSpec{"alpha", "", "Angstrom alpha", 0.8, 0.0, 4.0, false, true});
+    return m;
+  }();
   return d;
 }
 const ModelDescriptor& slow_d() {
@@ -80,7 +90,7 @@ const std::vector<ModelFactory>& factories() {
 }
 
 struct Fixture {
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   std::filesystem::path file = dir.path / "db.sqlite";
   storage::Database db = storage::open_database(file);
   Fixture() {
@@ -114,8 +124,10 @@ TEST(EvaluationsApi, RequestIsCheckedBeforeQueueing) {
   const EvaluationRequest r = parse(R"({"models": ["offset"], "dataset": "synthetic",
                                         "parameters": {"turbidity": 4, "alpha": 1.0}})");
   EXPECT_EQ(r.models, std::vector<std::string>{"offset"});
-  EXPECT_DOUBLE_EQ(r.config.atmosphere.turbidity, 4.0);
-  EXPECT_DOUBLE_EQ(r.config.atmosphere.angstrom_alpha, 1.0);
+  EXPECT_EQ(r.parameters, nlohmann::json({{"turbidity", 4}, {"alpha", 1.0}}));
+  const ModelConfig offset_config = config_for_model(offset_d(), r.parameters);
+  EXPECT_DOUBLE_EQ(offset_config.atmosphere.turbidity, 4.0);
+  EXPECT_DOUBLE_EQ(offset_config.atmosphere.angstrom_alpha, 1.0);
   EXPECT_EQ(parse(R"({"dataset": "synthetic"})").models, std::vector<std::string>{"all"});
   EXPECT_EQ(status_of([&] { parse("{"); }), 400);
   EXPECT_EQ(status_of([&] { parse(R"({"models": "all"})"); }), 400);
@@ -157,7 +169,7 @@ TEST(EvaluationsApi, ModelOptionsApplyToTheModelsThatListThem) {
   };
   const EvaluationRequest r =
       parse(R"({"models": ["exact", "gain"], "dataset": "synthetic", "parameters": {"gain": 2}})");
-  EXPECT_EQ(r.config.options.at("gain"), 2.0);
+  EXPECT_EQ(r.parameters.at("gain"), 2);
   EXPECT_EQ(status_of([&] {
               parse(R"({"models": ["exact"], "dataset": "synthetic", "parameters": {"gain": 2}})");
             }),
@@ -174,9 +186,185 @@ TEST(EvaluationsApi, ModelOptionsApplyToTheModelsThatListThem) {
   const auto gain = runs.get(report.models[1].run_id);
   ASSERT_TRUE(exact && gain);
   EXPECT_EQ(exact->parameters.find("gain"), std::string::npos) << exact->parameters;
-  EXPECT_NE(gain->parameters.find(";gain=2"), std::string::npos) << gain->parameters;
+  EXPECT_EQ(exact->configuration.find("gain"), std::string::npos) << exact->configuration;
+  EXPECT_EQ(nlohmann::json::parse(gain->parameters), nlohmann::json({{"gain", 2}}));
+  EXPECT_NE(gain->configuration.find(";gain=2"), std::string::npos) << gain->configuration;
   EXPECT_NEAR(report.models[0].result.rmse, 0.0, 1e-9);
   EXPECT_GT(report.models[1].result.rmse, 10.0);  // twice the sky: tens of mW/(m2.sr.nm)
+}
+
+// The rule of docs/data-api.md "Evaluation parameters": a parameter applies to the requested
+// models whose descriptor lists it, only to them, and is refused (400 naming it) when none
+// of them lists it, atmosphere parameters as model options.
+TEST(EvaluationsApi, AParameterAppliesOnlyToTheModelsThatListIt) {
+  Fixture f;
+  const auto parse = [&](const std::string& body) {
+    return parse_evaluation_request(f.db, body, factories(), "t");
+  };
+  try {
+    parse(R"({"models": ["exact"], "dataset": "synthetic", "parameters": {"turbidity": 3}})");
+    ADD_FAILURE() << "turbidity accepted for a model that does not take it";
+  } catch (const ApiError& e) {
+    EXPECT_EQ(e.status(), 400);
+    EXPECT_EQ(e.parameter(), "turbidity");
+    EXPECT_NE(std::string(e.what()).find("exact"), std::string::npos) << e.what();
+  }
+  // Within the range of the model that takes it.
+  EXPECT_EQ(status_of([&] {
+              parse(R"({"models": ["offset"], "dataset": "synthetic",
+                        "parameters": {"turbidity": 11}})");
+            }),
+            400);
+  // Two models, one taking it: accepted, applied and recorded on that model's run only.
+  const EvaluationRequest r = parse(
+      R"({"models": ["exact", "offset"], "dataset": "synthetic", "parameters": {"turbidity": 3}})");
+  const EvaluationReport report = run_evaluation(f.db, r, factories());
+  ASSERT_EQ(report.models.size(), 2u);
+  EXPECT_NEAR(report.models[1].result.rmse, 3.0, 1e-9);
+  const auto exact = show_evaluation(f.db, report.models[0].run_id);
+  const auto offset = show_evaluation(f.db, report.models[1].run_id);
+  EXPECT_EQ(exact["parameters"], nlohmann::ordered_json::object());
+  EXPECT_EQ(offset["parameters"], nlohmann::ordered_json({{"turbidity", 3}}));
+  const auto stored = storage::EvaluationRunRepository(f.db).get(report.models[0].run_id);
+  EXPECT_EQ(stored->configuration, ModelConfig{}.canonical_string());
+}
+
+// The registered models: Bruneton lists no turbidity (its aerosols are alpha and beta),
+// Preetham does (from 2). Bruneton's configuration, hence its cache key and tables, is the
+// default one whatever turbidity another requested model gets.
+TEST(EvaluationsApi, TurbidityIsRefusedForBrunetonAndAppliedToPreetham) {
+  const ModelFactory* bruneton = find_model("bruneton");
+  const ModelFactory* preetham = find_model("preetham");
+  ASSERT_TRUE(bruneton && preetham);
+  const std::vector<const ModelFactory*> both = {bruneton, preetham};
+  const std::vector<const ModelFactory*> alone = {bruneton};
+  const nlohmann::json turbid = {{"turbidity", 3}};
+  try {
+    parse_evaluation_parameters(turbid, alone);
+    ADD_FAILURE() << "turbidity accepted for Bruneton alone";
+  } catch (const ApiError& e) {
+    EXPECT_EQ(e.status(), 400);
+    EXPECT_EQ(e.parameter(), "turbidity");
+  }
+  EXPECT_EQ(parse_evaluation_parameters(turbid, both), turbid);
+  EXPECT_EQ(config_for_model(*bruneton->descriptor, turbid).canonical_string(),
+            ModelConfig{}.canonical_string());
+  EXPECT_EQ(parameters_for_model(*bruneton->descriptor, turbid), nlohmann::json::object());
+  EXPECT_DOUBLE_EQ(config_for_model(*preetham->descriptor, turbid).atmosphere.turbidity, 3.0);
+  // Preetham's own range, as the sky endpoints check it: 1.5 is a valid atmosphere turbidity
+  // but not a Preetham one.
+  EXPECT_EQ(status_of([&] { parse_evaluation_parameters({{"turbidity", 1.5}}, both); }), 400);
+  // Alpha is Bruneton's, not Preetham's: applied to Bruneton only.
+  const nlohmann::json alpha = {{"alpha", 1.3}};
+  EXPECT_EQ(parse_evaluation_parameters(alpha, both), alpha);
+  EXPECT_EQ(config_for_model(*preetham->descriptor, alpha).canonical_string(),
+            ModelConfig{}.canonical_string());
+  EXPECT_DOUBLE_EQ(config_for_model(*bruneton->descriptor, alpha).atmosphere.angstrom_alpha, 1.3);
+  EXPECT_EQ(status_of([&] { parse_evaluation_parameters({{"sparkle", 1}}, both); }), 400);
+}
+
+// Parameters come back as the user gave them (not 0.80000000000000004), and the history
+// compares by configuration: a parameter given at its default is like leaving it out.
+TEST(EvaluationsApi, ParametersAreReturnedAsGivenAndHistoryComparesConfigurations) {
+  Fixture f;
+  const auto run = [&](const std::string& body) {
+    const EvaluationReport report =
+        run_evaluation(f.db, parse_evaluation_request(f.db, body, factories(), "1"), factories());
+    return show_evaluation(f.db, report.models.at(0).run_id);
+  };
+  const auto plain = run(R"({"models": ["offset"], "dataset": "synthetic"})");
+  const auto given = run(
+      R"({"models": ["offset"], "dataset": "synthetic", "parameters": {"turbidity": 2.53, "alpha": 0.8}})");
+  EXPECT_EQ(given["parameters"].dump(), R"({"alpha":0.8,"turbidity":2.53})");
+  EXPECT_EQ(given["history"]["previous_run"], plain["id"]);
+  EXPECT_EQ(given["history"]["rmse_changed"], false);
+  const auto other =
+      run(R"({"models": ["offset"], "dataset": "synthetic", "parameters": {"alpha": 1.3}})");
+  EXPECT_EQ(other["parameters"].dump(), R"({"alpha":1.3})");
+  EXPECT_TRUE(other["history"]["previous_run"].is_null());
+}
+
+// A list is filtered in SQL, then cut into pages of `limit` by id: every run once, newest
+// first, and the cursor of the last page absent.
+TEST(EvaluationsApi, ListsArePagedAfterFiltering) {
+  Fixture f;
+  std::vector<std::int64_t> offsets;
+  for (int i = 0; i < 5; ++i) {
+    const EvaluationReport report = run_evaluation(
+        f.db,
+        parse_evaluation_request(f.db, R"({"models": ["offset", "exact"], "dataset": "synthetic"})",
+                                 factories(), "1"),
+        factories());
+    offsets.insert(offsets.begin(), report.models[0].run_id);  // newest first
+  }
+  EvaluationFilter only_offset = parse_evaluation_filter(query({{"model", "offset"}}));
+  std::vector<std::int64_t> seen;
+  only_offset.page = {2, std::nullopt};
+  int pages = 0;
+  for (;;) {
+    const ListPage listed = list_evaluations(f.db, only_offset);
+    ++pages;
+    EXPECT_LE(listed.items.size(), 2u);
+    for (const auto& item : listed.items) {
+      EXPECT_EQ(item["model"], "offset");
+      seen.push_back(item["id"].get<std::int64_t>());
+    }
+    if (!listed.next_cursor) break;
+    EXPECT_EQ(listed.limit, 2);
+    only_offset.page.cursor = listed.next_cursor;
+  }
+  EXPECT_EQ(pages, 3);
+  EXPECT_EQ(seen, offsets);
+  // Exactly one page: no next cursor.
+  only_offset.page = {5, std::nullopt};
+  EXPECT_FALSE(list_evaluations(f.db, only_offset).next_cursor);
+  only_offset.page = {2, std::string("nonsense")};
+  EXPECT_EQ(status_of([&] { list_evaluations(f.db, only_offset); }), 400);
+  const EvaluationFilter paged = parse_evaluation_filter(query({{"limit", "2"}, {"cursor", "x"}}));
+  EXPECT_EQ(paged.page.limit, 2);
+  EXPECT_EQ(paged.page.cursor, "x");
+  EXPECT_EQ(status_of([&] { parse_evaluation_filter(query({{"limit", "1001"}})); }), 400);
+}
+
+// GET /v1/evaluations/tickets/{ticket} lists each model's run as soon as it starts.
+TEST(EvaluationPool, TicketListsEachRunAsItStarts) {
+  static std::promise<void> release;
+  static std::shared_future<void> released = release.get_future().share();
+  static const ModelDescriptor gated_d = with_id("gated");
+  static const std::vector<ModelFactory> models = {
+      {&gated_d,
+       [](const ModelConfig& c, const PrecomputeContext&) -> std::shared_ptr<const SkyModel> {
+         released.wait();
+         return std::make_shared<testing::FunctionModel>(sky, c, gated_d);
+       }},
+      factories()[0]};
+  Fixture f;
+  EvaluationPool pool(f.opener(), models, {1, 4, 1});
+  const std::int64_t t = pool.submit(parse_evaluation_request(
+      f.db, R"({"models": ["gated", "exact"], "dataset": "synthetic"})", models, "1"));
+  // The gated model's precomputation waits: its run is listed, running, before it ends.
+  TicketState state;
+  for (int i = 0; i < 3000; ++i) {
+    state = *pool.ticket(t);
+    if (!state.runs.empty()) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_EQ(state.runs.size(), 1u);
+  EXPECT_EQ(state.status, "running");
+  EXPECT_EQ(state.runs[0].model, "gated");
+  EXPECT_EQ(state.runs[0].status, "running");
+  const auto json = ticket_to_json(state);
+  EXPECT_EQ(json["runs"], nlohmann::ordered_json::array({state.runs[0].id}));
+  EXPECT_EQ(json["models"][0]["status"], "running");
+  EXPECT_EQ(show_evaluation(f.db, state.runs[0].id)["status"], "running");
+  release.set_value();
+  pool.wait_idle();
+  state = *pool.ticket(t);
+  EXPECT_EQ(state.status, "succeeded");
+  ASSERT_EQ(state.runs.size(), 2u);
+  EXPECT_EQ(state.runs[1].model, "exact");
+  for (const TicketRun& run : state.runs) EXPECT_EQ(run.status, "succeeded");
+  EXPECT_EQ(state.run_ids, (std::vector<std::int64_t>{state.runs[0].id, state.runs[1].id}));
 }
 
 TEST(EvaluationsApi, BackgroundRunsAreStoredListedAndComparedWithHistory) {
@@ -209,7 +397,7 @@ TEST(EvaluationsApi, BackgroundRunsAreStoredListedAndComparedWithHistory) {
   EXPECT_NEAR(run["captures"][0]["rmse"].get<double>(), 2.53, 1e-9);
   EXPECT_EQ(run["captures"][0]["values_compared"], 81 * 31);
   EXPECT_TRUE(run["timings"]["precompute_seconds"].is_number());
-  EXPECT_EQ(run["parameters"], ModelConfig{}.canonical_string());
+  EXPECT_EQ(run["parameters"], nlohmann::ordered_json::object());
   EXPECT_TRUE(run["history"]["previous_run"].is_null());
 
   // Same model and parameters: unchanged against the first run.
@@ -222,24 +410,26 @@ TEST(EvaluationsApi, BackgroundRunsAreStoredListedAndComparedWithHistory) {
   EXPECT_TRUE(t3["history"]["previous_run"].is_null());
 
   // Lists, newest first, with filters.
-  EXPECT_EQ(list_evaluations(f.db, {}).size(), 5u);
-  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter(query({{"model", "exact"}}))).size(),
-            1u);
+  EXPECT_EQ(list_evaluations(f.db, {}).items.size(), 5u);
+  EXPECT_EQ(
+      list_evaluations(f.db, parse_evaluation_filter(query({{"model", "exact"}}))).items.size(),
+      1u);
   EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter(
                                        query({{"model", "offset"}, {"dataset", "synthetic"}})))
-                .size(),
+                .items.size(),
             4u);
   EXPECT_EQ(
       list_evaluations(f.db, parse_evaluation_filter(query({{"since", "2000-01-01T00:00:00Z"}})))
-          .size(),
+          .items.size(),
       5u);
   EXPECT_EQ(
       list_evaluations(f.db, parse_evaluation_filter(query({{"until", "2000-01-01T00:00:00Z"}})))
-          .size(),
+          .items.size(),
       0u);
-  EXPECT_EQ(list_evaluations(f.db, parse_evaluation_filter(query({{"status", "failed"}}))).size(),
-            0u);
-  const auto newest = list_evaluations(f.db, {})[0];
+  EXPECT_EQ(
+      list_evaluations(f.db, parse_evaluation_filter(query({{"status", "failed"}}))).items.size(),
+      0u);
+  const auto newest = list_evaluations(f.db, {}).items[0];
   EXPECT_EQ(newest["id"], pool.ticket(fourth)->run_ids[0]);
   EXPECT_NEAR(newest["rmse"].get<double>(), 4.0, 1e-9);
   EXPECT_EQ(status_of([&] { parse_evaluation_filter(query({{"since", "yesterday"}})); }), 400);

@@ -49,6 +49,11 @@ TEST(Cors, AllowedOriginsOnly) {
   EXPECT_EQ(ok.header("Access-Control-Allow-Headers"), "Authorization, Content-Type");
   EXPECT_EQ(ok.header("Access-Control-Max-Age"), std::to_string(CorsPolicy::kMaxAgeS));
 
+  // Added once, however often asked.
+  ApiResponse twice = ok;
+  cors.add_headers("https://a.example", twice);
+  EXPECT_EQ(twice.headers.size(), ok.headers.size());
+
   const ApiResponse refused = cors.options(preflight("https://b.example"), "GET, OPTIONS");
   EXPECT_EQ(refused.status, 204);
   EXPECT_FALSE(refused.header("Access-Control-Allow-Origin"));

@@ -15,8 +15,8 @@
 #include "api/imports/imports_api.h"
 #include "storage/repositories/dataset_repository.h"
 #include "storage/schema/migrations.h"
-#include "tests/storage/temp_dir.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky::api {
 namespace {
@@ -47,7 +47,7 @@ storage::NewImport upload_of(const std::string& dataset, std::size_t bytes) {
 }
 
 struct Fixture {
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   std::filesystem::path db_path = dir.path / "sky.db";
   storage::Database db = storage::open_database(db_path);
 
@@ -93,8 +93,8 @@ TEST(ImportPool, UploadImportedInTheBackground) {
   const auto dataset = storage::DatasetRepository(f.db).find("noon");
   ASSERT_TRUE(dataset);
   EXPECT_EQ(dataset->samples, 81);
-  EXPECT_EQ(list_imports(f.db, &pool, query({{"status", "succeeded"}})).size(), 1u);
-  EXPECT_EQ(list_imports(f.db, &pool, query({{"dataset", "other"}})).size(), 0u);
+  EXPECT_EQ(list_imports(f.db, &pool, query({{"status", "succeeded"}})).items.size(), 1u);
+  EXPECT_EQ(list_imports(f.db, &pool, query({{"dataset", "other"}})).items.size(), 0u);
   EXPECT_THROW(list_imports(f.db, &pool, query({{"colour", "red"}})), ApiError);
 }
 
@@ -155,7 +155,7 @@ TEST(ImportPool, FullQueueIs503) {
     EXPECT_EQ(shown["status"], "failed");
     EXPECT_EQ(shown["error"]["code"], "invalid_archive") << shown.dump();
   }
-  EXPECT_EQ(list_imports(f.db, &pool, query({})).size(), 2u);  // the refused one left no row
+  EXPECT_EQ(list_imports(f.db, &pool, query({})).items.size(), 2u);  // the refused one left no row
 }
 
 TEST(ImportPool, StartUpFailsInterruptedImports) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "api/error/api_error.h"
+#include "api/evaluation/evaluations_api.h"
 #include "storage/repositories/capture_repository.h"
 #include "storage/repositories/dataset_repository.h"
 #include "storage/schema/migrations.h"
@@ -13,9 +14,20 @@
 namespace clearsky::api {
 namespace {
 
+// The test model, taking the atmosphere's turbidity.
+const ModelDescriptor& turbid_descriptor() {
+  static const ModelDescriptor d = [] {
+    ModelDescriptor m = testing::test_descriptor();
+    m.parameters.push_back(
+        ParameterSpec{"turbidity", "", "turbidity", 2.53, 1.0, 10.0, false, true});
+    return m;
+  }();
+  return d;
+}
+
 const std::vector<ModelFactory>& factories() {
   static const std::vector<ModelFactory> f = {
-      {&testing::test_descriptor(),
+      {&turbid_descriptor(),
        [](const ModelConfig& c, const PrecomputeContext&) -> std::shared_ptr<const SkyModel> {
          return std::make_shared<testing::FunctionModel>(
              [](const ViewDirection&, double) { return 0.0; }, c);
@@ -45,11 +57,13 @@ struct Fixture {
 
 TEST(JobsApi, CreateComputesTheNextRunAndListShowsIt) {
   Fixture f;
-  const auto job =
+  const CreatedResource created =
       create_job(f.db,
                  R"({"name": "nightly", "schedule": "30 2 * * *", "dataset": "synthetic",
                                   "models": ["test-model"], "parameters": {"turbidity": 3}})",
                  factories(), kNow);
+  const auto& job = created.body;
+  EXPECT_EQ(created.location, "/v1/jobs/" + std::to_string(job["id"].get<std::int64_t>()));
   EXPECT_EQ(job["name"], "nightly");
   EXPECT_EQ(job["dataset"], "synthetic");
   EXPECT_EQ(job["models"], nlohmann::json::array({"test-model"}));
@@ -60,10 +74,11 @@ TEST(JobsApi, CreateComputesTheNextRunAndListShowsIt) {
   EXPECT_TRUE(job["last_result"].empty());
   const auto all =
       create_job(f.db, R"({"name": "hourly", "schedule": "0 * * * *", "dataset": "synthetic"})",
-                 factories(), kNow);
+                 factories(), kNow)
+          .body;
   EXPECT_EQ(all["models"], "all");
   EXPECT_EQ(all["next_run"], "2026-11-21T12:00:00Z");
-  const auto list = list_jobs(f.db);
+  const auto list = list_jobs(f.db).items;
   ASSERT_EQ(list.size(), 2u);
   EXPECT_EQ(list[0]["name"], "hourly");  // by name
 
@@ -72,7 +87,7 @@ TEST(JobsApi, CreateComputesTheNextRunAndListShowsIt) {
   const EvaluationRequest request = job_evaluation_request(f.db, *record, "v");
   EXPECT_EQ(request.dataset, "synthetic");
   EXPECT_EQ(request.models, std::vector<std::string>{"test-model"});
-  EXPECT_DOUBLE_EQ(request.config.atmosphere.turbidity, 3.0);
+  EXPECT_EQ(request.parameters, nlohmann::json({{"turbidity", 3}}));
   EXPECT_EQ(request.job_id, record->id);
 }
 
@@ -122,7 +137,8 @@ TEST(JobsApi, PauseResumeDelete) {
   Fixture f;
   const auto job =
       create_job(f.db, R"({"name": "j", "schedule": "0 6 * * mon", "dataset": "synthetic"})",
-                 factories(), kNow);
+                 factories(), kNow)
+          .body;
   const std::int64_t id = job["id"];
   EXPECT_EQ(job["next_run"], "2026-11-23T06:00:00Z");
   EXPECT_EQ(pause_job(f.db, id)["paused"], true);
@@ -134,6 +150,53 @@ TEST(JobsApi, PauseResumeDelete) {
   EXPECT_EQ(status_of([&] { show_job(f.db, id); }), 404);
   EXPECT_EQ(status_of([&] { pause_job(f.db, id); }), 404);
   EXPECT_EQ(status_of([&] { delete_job(f.db, id); }), 404);
+}
+
+// A job's parameters follow the rule of POST /v1/evaluations: the test model takes
+// turbidity, not alpha.
+TEST(JobsApi, AParameterNoModelTakesIsRefused) {
+  Fixture f;
+  try {
+    create_job(f.db, R"({"name": "a", "schedule": "* * * * *", "dataset": "synthetic",
+                         "models": ["test-model"], "parameters": {"alpha": 1}})",
+               factories(), kNow);
+    ADD_FAILURE() << "alpha accepted";
+  } catch (const ApiError& e) {
+    EXPECT_EQ(e.status(), 400);
+    EXPECT_EQ(e.parameter(), "alpha");
+  }
+}
+
+// Deleting a job keeps its runs, found by the job's id, which no later job gets.
+TEST(JobsApi, ADeletedJobsRunsKeepItsId) {
+  Fixture f;
+  const auto dataset = storage::DatasetRepository(f.db).find("synthetic")->id;
+  storage::CaptureRepository(f.db).insert(
+      dataset, testing::synthetic_capture([](const ViewDirection&, double) { return 0.0; }), "hash",
+      "test");
+  const std::int64_t id =
+      create_job(f.db, R"({"name": "n", "schedule": "0 3 * * *", "dataset": "synthetic",
+                           "models": ["test-model"], "parameters": {"turbidity": 3}})",
+                 factories(), kNow)
+          .body["id"];
+  const EvaluationRequest request =
+      job_evaluation_request(f.db, *storage::JobRepository(f.db).get(id), "v");
+  const std::int64_t run = run_evaluation(f.db, request, factories()).models.at(0).run_id;
+  delete_job(f.db, id);
+  for (const char* name : {"job", "job_id"}) {
+    Parameters query("GET /v1/evaluations");
+    query.add(name, std::to_string(id));
+    const ListPage runs = list_evaluations(f.db, parse_evaluation_filter(std::move(query)));
+    ASSERT_EQ(runs.items.size(), 1u) << name;
+    EXPECT_EQ(runs.items[0]["id"], run);
+    EXPECT_EQ(runs.items[0]["job"], id);
+  }
+  EXPECT_EQ(show_evaluation(f.db, run)["parameters"], nlohmann::ordered_json({{"turbidity", 3}}));
+  const std::int64_t next =
+      create_job(f.db, R"({"name": "n", "schedule": "0 3 * * *", "dataset": "synthetic"})",
+                 factories(), kNow)
+          .body["id"];
+  EXPECT_GT(next, id);
 }
 
 }  // namespace

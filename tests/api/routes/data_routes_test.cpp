@@ -11,8 +11,8 @@
 #include "api/routes/route_match.h"
 #include "models/registry.h"
 #include "storage/schema/migrations.h"
-#include "tests/storage/temp_dir.h"
 #include "tests/support/synchronous_provider.h"
+#include "tests/support/temp_dir.h"
 #include "tests/support/test_sky_model.h"
 
 namespace clearsky::api {
@@ -80,7 +80,7 @@ class DataRouteHandlers : public ::testing::Test {
   }
   static nlohmann::json json_of(const ApiResponse& r) { return nlohmann::json::parse(r.body); }
 
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   clearsky::testing::SynchronousProvider provider{clearsky::testing::test_factories()};
   std::unique_ptr<EvaluationPool> pool;
   std::unique_ptr<ImportPool> imports;

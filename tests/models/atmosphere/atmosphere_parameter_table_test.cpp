@@ -112,12 +112,14 @@ TEST(AtmosphereParameterTable, DescriptorEntriesComeFromTheTable) {
   EXPECT_THROW(atmosphere_parameter_spec("earth_radius_m"), std::logic_error);
 }
 
-// The comment table of atmosphere_parameters.h, row by row, against the table.
-TEST(AtmosphereParameterTable, HeaderCommentTableMatches) {
-  const auto rows = testing::read_table(
-      testing::read_text(testing::source_root() / "models/atmosphere/atmosphere_parameters.h"),
-      "name");
-  ASSERT_EQ(rows.size(), kAtmosphereParameterTable.size());
+// The tables written for people (the comment table of atmosphere_parameters.h, the table of
+// docs/model-contract.md), row by row, against the table.
+class AtmosphereParameterDocumentation : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(AtmosphereParameterDocumentation, TableMatches) {
+  const auto rows =
+      testing::read_table(testing::read_text(testing::source_root() / GetParam()), "name");
+  ASSERT_EQ(rows.size(), kAtmosphereParameterTable.size()) << GetParam();
   // The member column by name (the only place a test can learn a member's spelling).
   const std::map<std::string, double AtmosphereParameters::*> members = {
       {"earth_radius_m", &AtmosphereParameters::earth_radius_m},
@@ -156,6 +158,10 @@ TEST(AtmosphereParameterTable, HeaderCommentTableMatches) {
     EXPECT_EQ(range->max_exclusive, p.max_exclusive) << p.name;
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Files, AtmosphereParameterDocumentation,
+                         ::testing::Values("models/atmosphere/atmosphere_parameters.h",
+                                           "docs/model-contract.md"));
 
 }  // namespace
 }  // namespace clearsky

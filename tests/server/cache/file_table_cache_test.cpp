@@ -4,19 +4,15 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <random>
+
+#include "models/core/content_hash.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky::server {
 namespace {
 
 class FileTableCacheTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir = std::filesystem::temp_directory_path() /
-          ("clearsky_cache_test_" + std::to_string(std::random_device{}()));
-    std::filesystem::remove_all(dir);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir); }
   std::string read(const std::filesystem::path& p) {
     std::ifstream f(p, std::ios::binary);
     return {std::istreambuf_iterator<char>(f), {}};
@@ -25,7 +21,8 @@ class FileTableCacheTest : public ::testing::Test {
     std::ofstream f(p, std::ios::binary | std::ios::trunc);
     f << s;
   }
-  std::filesystem::path dir;
+  clearsky::testing::TempDir temp;
+  const std::filesystem::path& dir = temp.path;
 };
 
 TEST_F(FileTableCacheTest, RoundTripsBinaryPayloads) {
@@ -57,7 +54,7 @@ TEST_F(FileTableCacheTest, CorruptTruncatedOrStaleFilesAreMisses) {
   EXPECT_FALSE(cache.load(key).has_value());
 
   std::string version = good;
-  version[8] = 2;  // another format version
+  version[8] = static_cast<char>(FileTableCache::kFormatVersion + 1);  // another format version
   write(path, version);
   EXPECT_FALSE(cache.load(key).has_value());
 
@@ -71,6 +68,38 @@ TEST_F(FileTableCacheTest, CorruptTruncatedOrStaleFilesAreMisses) {
   // Storing again repairs it.
   cache.store(key, "fresh");
   EXPECT_EQ(cache.load(key), "fresh");
+}
+
+// A file of format version 1 (the same header with an FNV-1a 64 checksum of the payload), as
+// written by earlier servers: a miss, never read as a version 2 file, and replaced on store.
+TEST_F(FileTableCacheTest, VersionOneFilesWithAnFnvChecksumAreRebuilt) {
+  FileTableCache cache(dir);
+  const std::string key = "bruneton-a9ee3c37742c94db";
+  const std::string payload = "a table written by format version 1";
+  std::string file = "CSKYTBL\n";
+  const auto put = [&file](std::uint64_t value, int bytes) {
+    for (int i = 0; i < bytes; ++i) file.push_back(static_cast<char>((value >> (8 * i)) & 0xff));
+  };
+  put(1, 4);
+  put(key.size(), 4);
+  file += key;
+  put(payload.size(), 8);
+  put(fnv1a_64(payload), 8);
+  file += payload;
+  write(cache.path_of(key), file);
+  EXPECT_FALSE(cache.load(key).has_value());
+
+  cache.store(key, payload);
+  EXPECT_EQ(cache.load(key), payload);
+  EXPECT_EQ(static_cast<unsigned char>(read(cache.path_of(key))[8]),
+            FileTableCache::kFormatVersion);
+}
+
+// The file name is the FNV-1a hash of the key (here the default Bruneton key), as in version 1,
+// so that an old file is found (and replaced) rather than left behind.
+TEST_F(FileTableCacheTest, FileNamesAreTheFnvHashOfTheKey) {
+  FileTableCache cache(dir);
+  EXPECT_EQ(cache.path_of("bruneton-a9ee3c37742c94db"), dir / "2c0551424c6a90ba.table");
 }
 
 TEST_F(FileTableCacheTest, ReportsHitsAndMisses) {

@@ -20,8 +20,8 @@
 #include "api/imports/imports_api.h"
 #include "models/registry.h"
 #include "storage/schema/migrations.h"
-#include "tests/storage/temp_dir.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky {
 namespace {
@@ -51,7 +51,7 @@ std::string bytes_of(const std::filesystem::path& path) {
 
 TEST(CliApiParity, PreethamOnTwoCapturesGivesTheSameRmseBothWays) {
   CLEARSKY_REQUIRE_SHARED_DATA("kider2014/2013-05-27/RADIANCE");
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   const std::string cli_db = (dir.path / "cli.db").string();
   const nlohmann::json cli_import = nlohmann::json::parse(
       run_cli("import kider " + archive("10.00").string() + " " + archive("12.00").string() +

@@ -13,6 +13,7 @@
 
 #include "models/registry.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky {
 namespace {
@@ -34,20 +35,11 @@ Result run(const std::string& arguments) {
   return result;
 }
 
+// The test's folder, with the database in var/ (which the CLI creates).
 struct TempDb {
-  std::filesystem::path dir;
-  std::string db;
-  TempDb() {
-    dir = std::filesystem::temp_directory_path() /
-          ("clearsky_cli_" + std::to_string(::getpid()) + "_" +
-           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(dir);
-    db = (dir / "var" / "sky.db").string();
-  }
-  ~TempDb() {
-    std::error_code ignored;
-    std::filesystem::remove_all(dir, ignored);
-  }
+  clearsky::testing::TempDir temp;
+  const std::filesystem::path& dir = temp.path;
+  std::string db = (dir / "var" / "sky.db").string();
 };
 
 std::string archive(const std::string& time) {
@@ -92,6 +84,15 @@ TEST(DataCommands, ErrorsAreReportedWithExitStatus1) {
   const Result unknown_model = run("evaluate --dataset missing --models nishita2042 --db " + t.db);
   EXPECT_EQ(unknown_model.exit_code, 1);
   EXPECT_NE(unknown_model.output.find("nishita2042"), std::string::npos) << unknown_model.output;
+  // A parameter that none of the requested models takes (docs/data-api.md "Evaluation
+  // parameters"), refused before anything is read or run.
+  const Result inapplicable =
+      run("evaluate --dataset missing --models bruneton --parameters '{\"turbidity\": 3}' --db " +
+          t.db);
+  EXPECT_EQ(inapplicable.exit_code, 1);
+  EXPECT_NE(inapplicable.output.find("turbidity: applies to none of the requested models"),
+            std::string::npos)
+      << inapplicable.output;
   std::filesystem::create_directories(t.dir);
   const auto bad = t.dir / "bad.7z";
   {

@@ -19,7 +19,7 @@
 #include "storage/repositories/evaluation_run_repository.h"
 #include "storage/schema/migrations.h"
 #include "tests/models/evaluation/function_model.h"
-#include "tests/storage/temp_dir.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky::server {
 namespace {
@@ -49,7 +49,7 @@ const ModelDescriptor& killer_descriptor() {
 }
 
 TEST(Durability, KilledDuringAnEvaluationTheRunIsMarkedFailedAtStartUp) {
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   const auto path = dir.path / "db.sqlite";
   {
     storage::Database db = storage::open_database(path);
@@ -93,7 +93,7 @@ TEST(Durability, KilledDuringAnEvaluationTheRunIsMarkedFailedAtStartUp) {
 }
 
 TEST(Durability, ReadersDuringWritesSeeWholeDatasets) {
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   const auto path = dir.path / "db.sqlite";
   storage::open_database(path);
   std::atomic<bool> done{false};
@@ -102,7 +102,7 @@ TEST(Durability, ReadersDuringWritesSeeWholeDatasets) {
   std::thread reader([&] {
     storage::Database db = storage::open_database(path);
     while (!done) {
-      for (const auto& d : api::list_datasets(db)) {
+      for (const auto& d : api::list_datasets(db).items) {
         if (d["captures"] != 4 || d["samples"] != 4 * 81) ++partial;
       }
       ++reads;

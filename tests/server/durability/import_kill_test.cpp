@@ -17,8 +17,8 @@
 #include <thread>
 
 #include "tests/storage/importers/tar_writer.h"
-#include "tests/storage/temp_dir.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky::server {
 namespace {
@@ -106,7 +106,7 @@ bool upload_files_left(const std::filesystem::path& uploads) {
 
 TEST(ImportDurability, ServerKilledDuringAnImportRestartsWithNothingPartial) {
   CLEARSKY_REQUIRE_SHARED_DATA(kRadiance);
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   const auto db = dir.path / "sky.db";
   const auto uploads = dir.path / "uploads";
   std::vector<std::pair<std::string, std::string>> files;

@@ -1,9 +1,9 @@
-// The two body limits through the real server (server/http/request_body.h, data_routes.h):
-// dataset uploads have their own limit (max_upload_bytes) while every other route keeps the
-// small payload limit; above either the answer is 413 in the project's error format and the
-// client, still sending, reads it (the body is drained, not cut), whether the size is declared
-// (Content-Length) or only found on arrival (chunked); a client asking first (Expect:
-// 100-continue) is told before it sends the body.
+// The two body limits through the real server (server/http/request_body.h, the body policies
+// of api/routes/route_table.h): dataset uploads have their own limit (max_upload_bytes) while
+// every other route keeps the small payload limit; above either the answer is 413 in the
+// project's error format and the client, still sending, reads it (the body is drained, not
+// cut), whether the size is declared (Content-Length) or only found on arrival (chunked); a
+// client asking first (Expect: 100-continue) is told before it sends the body.
 #include <gtest/gtest.h>
 
 #include "tests/server/http/data_server_fixture.h"

@@ -1,4 +1,4 @@
-// The data endpoints over loopback HTTP on an ephemeral port (server/http/data_routes.h):
+// The data endpoints over loopback HTTP on an ephemeral port (api/routes/route_table.h):
 // bearer-token rules (reads open, writes 403 without a configured token, 401 without the right
 // one), an archive upload imported as a background job (202, Location, /v1/imports), dataset
 // show/delete, an evaluation started over HTTP and read back, the job lifecycle, and the

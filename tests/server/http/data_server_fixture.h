@@ -18,7 +18,7 @@
 #include "models/registry.h"
 #include "server/http/http_server.h"
 #include "storage/schema/migrations.h"
-#include "tests/storage/temp_dir.h"
+#include "tests/support/temp_dir.h"
 #include "tests/support/test_sky_model.h"
 
 namespace clearsky::server::testing {
@@ -84,7 +84,7 @@ class DataServerFixture : public ::testing::Test {
     return state;
   }
 
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   std::filesystem::path db_path;
   Metrics metrics;
   std::unique_ptr<TableStore> tables;

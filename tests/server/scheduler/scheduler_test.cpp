@@ -15,7 +15,7 @@
 #include "storage/repositories/evaluation_run_repository.h"
 #include "storage/schema/migrations.h"
 #include "tests/models/evaluation/function_model.h"
-#include "tests/storage/temp_dir.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky::server {
 namespace {
@@ -49,7 +49,7 @@ const std::vector<ModelFactory>& factories() {
 constexpr std::int64_t kT0 = 1795258800;  // 2026-11-21T11:00:00Z
 
 struct Fixture {
-  storage::testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   std::filesystem::path file = dir.path / "db.sqlite";
   storage::Database db = storage::open_database(file);
   api::EvaluationPool::OpenDatabase opener = [path = file] { return storage::open_database(path); };
@@ -62,7 +62,8 @@ struct Fixture {
     return api::create_job(db,
                            R"({"name": ")" + schedule + model + R"(", "schedule": ")" + schedule +
                                R"(", "dataset": "synthetic", "models": [")" + model + R"("]})",
-                           factories(), kT0)["id"];
+                           factories(), kT0)
+        .body["id"];
   }
   std::size_t runs_of(std::int64_t job_id) {
     std::size_t n = 0;

@@ -13,8 +13,8 @@
 #include "storage/repositories/dataset_repository.h"
 #include "storage/schema/migrations.h"
 #include "tests/storage/importers/tar_writer.h"
-#include "tests/storage/temp_dir.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky::storage {
 namespace {
@@ -34,7 +34,7 @@ std::filesystem::path archive(const std::string& time) {
 
 TEST(KiderImportProgress, TarOfPublishedArchivesReadsAsTheirCaptures) {
   CLEARSKY_REQUIRE_SHARED_DATA(kRadiance);
-  testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   const auto tar = dir.path / "two.tar";
   testing::write_tar(tar, {{"a/2013-05-27___09.30.00.7z", bytes_of(archive("09.30"))},
                            {"README.txt", "not a capture"},
@@ -70,7 +70,7 @@ TEST(KiderImportProgress, TarOfPublishedArchivesReadsAsTheirCaptures) {
 
 TEST(KiderImportProgress, ImportReportsReadingThenWriting) {
   CLEARSKY_REQUIRE_SHARED_DATA(kRadiance);
-  testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   const auto tar = dir.path / "two.tar";
   testing::write_tar(tar, {{"2013-05-27___10.00.00.7z", bytes_of(archive("10.00"))},
                            {"2013-05-27___10.15.00.7z", bytes_of(archive("10.15"))}});
@@ -95,7 +95,7 @@ TEST(KiderImportProgress, ImportReportsReadingThenWriting) {
 }
 
 TEST(KiderImportProgress, FolderTotalsAreKnownFromTheStart) {
-  testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   std::filesystem::create_directories(dir.path / "f");
   for (int i = 0; i < 81; ++i) {
     std::ofstream out(
@@ -114,7 +114,7 @@ TEST(KiderImportProgress, FolderTotalsAreKnownFromTheStart) {
 }
 
 TEST(KiderImportProgress, AnArchiveWithoutCapturesCreatesNothing) {
-  testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   const auto tar = dir.path / "none.tar";
   testing::write_tar(tar, {{"notes.txt", "no capture here"}});
   Database db = open_database(dir.path / "sky.db");

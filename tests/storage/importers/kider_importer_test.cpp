@@ -14,8 +14,8 @@
 #include "storage/repositories/capture_repository.h"
 #include "storage/repositories/dataset_repository.h"
 #include "storage/schema/migrations.h"
-#include "tests/storage/temp_dir.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky::storage {
 namespace {
@@ -63,7 +63,7 @@ void write_folder_capture(const std::filesystem::path& folder, int bad_sample) {
 
 TEST(KiderImporter, ImportsARealArchive) {
   CLEARSKY_REQUIRE_SHARED_DATA(kRadiance);
-  testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   Database db = open_database(dir.path / "sky.db");
   const ImportReport report = import_kider(db, request({archive("09.30")}, "kider"));
   EXPECT_EQ(report.added, std::vector<std::string>{"2013-05-27___09.30.00"});
@@ -89,7 +89,7 @@ TEST(KiderImporter, ImportsARealArchive) {
 
 TEST(KiderImporter, ReimportChangesNothing) {
   CLEARSKY_REQUIRE_SHARED_DATA(kRadiance);
-  testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   Database db = open_database(dir.path / "sky.db");
   import_kider(db, request({archive("09.30")}));
   const std::string before = snapshot(db);
@@ -101,7 +101,7 @@ TEST(KiderImporter, ReimportChangesNothing) {
 
 TEST(KiderImporter, MalformedFileLeavesTheDatabaseUnchanged) {
   CLEARSKY_REQUIRE_SHARED_DATA(kRadiance);
-  testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   Database db = open_database(dir.path / "sky.db");
   import_kider(db, request({archive("09.30")}));
   const std::string before = snapshot(db);
@@ -118,7 +118,7 @@ TEST(KiderImporter, MalformedFileLeavesTheDatabaseUnchanged) {
 
 TEST(KiderImporter, ArchiveUploadedInMemoryEqualsTheFile) {
   CLEARSKY_REQUIRE_SHARED_DATA(kRadiance);
-  testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   Database db = open_database(dir.path / "sky.db");
   std::ifstream in(archive("10.15"), std::ios::binary);
   KiderImportRequest upload;
@@ -137,7 +137,7 @@ TEST(KiderImporter, ArchiveUploadedInMemoryEqualsTheFile) {
 
 TEST(KiderImporter, TruncatedArchiveLeavesTheDatabaseUnchanged) {
   CLEARSKY_REQUIRE_SHARED_DATA(kRadiance);
-  testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   Database db = open_database(dir.path / "sky.db");
   import_kider(db, request({archive("09.30")}));
   const std::string before = snapshot(db);
@@ -151,7 +151,7 @@ TEST(KiderImporter, TruncatedArchiveLeavesTheDatabaseUnchanged) {
 }
 
 TEST(KiderImporter, SameLabelWithOtherContentIsAConflict) {
-  testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   Database db = open_database(dir.path / "sky.db");
   write_folder_capture(dir.path / "a", -1);
   import_kider(db, request({dir.path / "a"}));
@@ -169,7 +169,7 @@ TEST(KiderImporter, SameLabelWithOtherContentIsAConflict) {
 
 TEST(KiderImporter, ProcessKilledDuringImportLeavesTheDatabaseAsBefore) {
   CLEARSKY_REQUIRE_SHARED_DATA(kRadiance);
-  testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   const auto path = dir.path / "sky.db";
   std::string before;
   {

@@ -3,34 +3,18 @@
 #include "storage/importers/kider_reader.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <fstream>
 
 #include "models/core/numeric.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky::storage {
 namespace {
 
 const char* kArchive = "kider2014/2013-05-27/RADIANCE/2013-05-27___09.30.00.7z";
-
-// A fresh temporary folder removed at the end of the test.
-struct TempDir {
-  std::filesystem::path path;
-  TempDir() {
-    path = std::filesystem::temp_directory_path() /
-           ("clearsky_kider_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(path);
-    std::filesystem::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path, ignored);
-  }
-};
 
 const MeasuredSample& by_index(const MeasuredCapture& c, int index) {
   for (const auto& s : c.samples)
@@ -71,7 +55,7 @@ TEST(KiderReader, ArchivesWithRawFilesKeepOnlyRadiance) {
 
 TEST(KiderReader, TruncatedArchiveIsRefused) {
   CLEARSKY_REQUIRE_SHARED_DATA(kArchive);
-  TempDir dir;
+  clearsky::testing::TempDir dir;
   const auto source = clearsky::testing::shared_data_dir() / kArchive;
   std::ifstream in(source, std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -87,7 +71,7 @@ TEST(KiderReader, TruncatedArchiveIsRefused) {
 }
 
 TEST(KiderReader, FolderWithAMalformedFileIsRefusedNamingFileAndLine) {
-  TempDir dir;
+  clearsky::testing::TempDir dir;
   const auto folder = dir.path / "2013-05-27___09.30.00";
   std::filesystem::create_directories(folder);
   for (int i = 0; i < 81; ++i) {

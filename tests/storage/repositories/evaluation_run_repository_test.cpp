@@ -34,7 +34,7 @@ NewRun new_run(std::int64_t dataset) {
   run.model_id = "preetham";
   run.model_version =
       std::string("1");  // (assigning the literal trips a GCC 12 -Wrestrict false positive)
-  run.parameters = "alpha=0.8;beta=0.04";
+  run.parameters = R"({"alpha":0.8,"beta":0.04})";
   run.software_version = "0.1.0";
   return run;
 }
@@ -50,7 +50,7 @@ TEST(EvaluationRunRepository, StoresAFinishedRunWithItsCaptures) {
   ASSERT_TRUE(run);
   EXPECT_EQ(run->status, "succeeded");
   EXPECT_EQ(run->model_id, "preetham");
-  EXPECT_EQ(run->parameters, "alpha=0.8;beta=0.04");
+  EXPECT_EQ(run->parameters, R"({"alpha":0.8,"beta":0.04})");
   EXPECT_DOUBLE_EQ(*run->rmse, 88.5);
   EXPECT_DOUBLE_EQ(*run->evaluate_seconds, 1.5);
   EXPECT_TRUE(run->finished_utc.has_value());

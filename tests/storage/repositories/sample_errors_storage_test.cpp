@@ -83,7 +83,7 @@ NewRun new_run(std::int64_t dataset) {
   run.dataset_id = dataset;
   run.model_id = "preetham";
   run.model_version = std::string("1");
-  run.parameters = "alpha=0.8";
+  run.parameters = R"({"alpha":0.8})";
   run.software_version = "0.1.0";
   return run;
 }

@@ -8,7 +8,7 @@
 
 #include "storage/schema/migrations.h"
 #include "storage/sqlite/blob.h"
-#include "tests/storage/temp_dir.h"
+#include "tests/support/temp_dir.h"
 
 namespace clearsky::storage {
 namespace {
@@ -78,7 +78,7 @@ TEST(Database, BindsAndReadsEveryType) {
 }
 
 TEST(Database, FileDatabasesUseWalAndForeignKeys) {
-  testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   Database db = open_database(dir.path / "a.db");
   auto mode = db.prepare("PRAGMA journal_mode");
   ASSERT_TRUE(mode.step());
@@ -95,7 +95,7 @@ TEST(Database, FileDatabasesUseWalAndForeignKeys) {
 }
 
 TEST(Migrations, BringAnEmptyDatabaseToTheLatestVersionOnce) {
-  testing::TempDir dir;
+  clearsky::testing::TempDir dir;
   {
     Database db = Database::open(dir.path / "m.db");
     EXPECT_EQ(db.user_version(), 0);

@@ -1,0 +1,340 @@
+// The dataset and import operations (openapi_area.h): stored measurement datasets and the
+// background imports that fill them (api/datasets/datasets_api.h, api/imports/imports_api.h,
+// server/http/data_routes.cpp). The examples are answers of a server that imported a synthetic
+// capture in the Kider et al. 2014 format (tests/server/openapi/synthetic_kider.py).
+#include "api/openapi/openapi_area.h"
+
+namespace clearsky::api::openapi {
+namespace {
+
+Json schemas() {
+  return parse(R"json({
+  "DatasetSummary": {
+    "type": "object",
+    "required": ["name", "format", "created", "captures", "samples"],
+    "additionalProperties": false,
+    "properties": {
+      "name": {"type": "string"},
+      "format": {"type": "string", "description": "The measurement format, e.g. kider2014."},
+      "created": {"type": "string", "format": "date-time"},
+      "captures": {"type": "integer", "minimum": 0},
+      "samples": {"type": "integer", "minimum": 0}
+    }
+  },
+  "DatasetList": {
+    "type": "array",
+    "items": {"$ref": "#/components/schemas/DatasetSummary"}
+  },
+  "Place": {
+    "type": "object",
+    "required": ["latitude", "longitude", "elevation_m"],
+    "additionalProperties": false,
+    "properties": {
+      "latitude": {"type": "number", "minimum": -90, "maximum": 90},
+      "longitude": {"type": "number", "minimum": -180, "maximum": 180},
+      "elevation_m": {"type": "number"}
+    }
+  },
+  "CaptureSample": {
+    "type": "object",
+    "description": "One measured direction; with capture=LABEL also its spectrum.",
+    "required": ["index", "view_zenith", "view_azimuth", "flags"],
+    "additionalProperties": false,
+    "properties": {
+      "index": {"type": "integer", "minimum": 0},
+      "view_zenith": {"type": "number", "description": "Degrees."},
+      "view_azimuth": {"type": "number", "description": "Degrees clockwise from North."},
+      "flags": {"type": "integer", "description": "Quality flags (1: the sample is known to be defective, kept as measured)."},
+      "wavelengths_nm": {"type": "array", "items": {"type": "number"}},
+      "radiance": {"type": "array", "items": {"type": "number"}, "description": "W/(m2.sr.nm), as measured."}
+    }
+  },
+  "Capture": {
+    "type": "object",
+    "required": ["label", "time", "time_utc", "place", "sun_zenith", "sun_azimuth", "sun_azimuth_estimated", "samples"],
+    "additionalProperties": false,
+    "properties": {
+      "label": {"type": "string"},
+      "time": {"type": "string", "format": "date-time", "description": "In the site's UTC offset."},
+      "time_utc": {"type": "string", "format": "date-time"},
+      "place": {"$ref": "#/components/schemas/Place"},
+      "sun_zenith": {"type": "number", "nullable": true, "description": "Computed by SPA without refraction, degrees."},
+      "sun_azimuth": {"type": "number", "nullable": true},
+      "sun_azimuth_estimated": {"type": "number", "nullable": true},
+      "samples": {
+        "description": "The number of samples; with samples=true or capture=LABEL the samples themselves.",
+        "oneOf": [
+          {"type": "integer", "minimum": 0},
+          {"type": "array", "items": {"$ref": "#/components/schemas/CaptureSample"}}
+        ]
+      }
+    }
+  },
+  "Dataset": {
+    "type": "object",
+    "required": ["name", "format", "created", "captures"],
+    "additionalProperties": false,
+    "properties": {
+      "name": {"type": "string"},
+      "format": {"type": "string"},
+      "created": {"type": "string", "format": "date-time"},
+      "captures": {"type": "array", "items": {"$ref": "#/components/schemas/Capture"}}
+    }
+  },
+  "DatasetDeleted": {
+    "type": "object",
+    "required": ["deleted"],
+    "additionalProperties": false,
+    "properties": {"deleted": {"type": "string", "description": "The dataset's name."}}
+  },
+  "ImportReport": {
+    "type": "object",
+    "description": "What an import added (null in an import's state until it succeeds).",
+    "nullable": true,
+    "required": ["dataset", "added", "unchanged", "samples_added", "seconds"],
+    "additionalProperties": false,
+    "properties": {
+      "dataset": {"type": "string"},
+      "added": {"type": "array", "items": {"type": "string"}, "description": "Capture labels added."},
+      "unchanged": {"type": "array", "items": {"type": "string"}, "description": "Capture labels already stored with the same content."},
+      "samples_added": {"type": "integer", "minimum": 0},
+      "seconds": {"type": "number", "minimum": 0}
+    }
+  },
+  "ImportProgress": {
+    "type": "object",
+    "nullable": true,
+    "required": ["phase", "bytes_read", "bytes_total", "entries_read", "entries_total", "files_read", "captures_added", "samples_added"],
+    "additionalProperties": false,
+    "properties": {
+      "phase": {"type": "string", "enum": ["reading", "writing", "committed"]},
+      "bytes_read": {"type": "integer", "minimum": 0},
+      "bytes_total": {"type": "integer", "minimum": 0, "nullable": true, "description": "Of the archive as stored; null while unknown."},
+      "entries_read": {"type": "integer", "minimum": 0},
+      "entries_total": {"type": "integer", "minimum": 0, "nullable": true, "description": "Known for folders, for archives at their end."},
+      "files_read": {"type": "integer", "minimum": 0},
+      "captures_added": {"type": "integer", "minimum": 0},
+      "samples_added": {"type": "integer", "minimum": 0}
+    }
+  },
+  "ImportError": {
+    "type": "object",
+    "description": "Why an import failed (null unless it did).",
+    "nullable": true,
+    "required": ["code", "message"],
+    "additionalProperties": false,
+    "properties": {
+      "code": {"type": "string", "description": "invalid_archive, conflict, interrupted (the server stopped), cancelled (dropped at a graceful stop), ..."},
+      "message": {"type": "string"}
+    }
+  },
+  "Import": {
+    "type": "object",
+    "required": ["id", "dataset", "format", "source", "path", "upload_bytes", "status", "progress", "timings", "report", "error", "location"],
+    "additionalProperties": false,
+    "properties": {
+      "id": {"type": "integer", "minimum": 1},
+      "dataset": {"type": "string"},
+      "format": {"type": "string", "enum": ["kider"]},
+      "source": {"type": "string", "enum": ["upload", "path"]},
+      "path": {"type": "string", "nullable": true, "description": "With source=path."},
+      "upload_bytes": {"type": "integer", "nullable": true, "description": "With source=upload."},
+      "status": {"type": "string", "enum": ["queued", "running", "succeeded", "failed"]},
+      "progress": {"$ref": "#/components/schemas/ImportProgress"},
+      "timings": {
+        "type": "object",
+        "required": ["created", "started", "finished"],
+        "additionalProperties": false,
+        "properties": {
+          "created": {"type": "string", "format": "date-time"},
+          "started": {"type": "string", "format": "date-time", "nullable": true},
+          "finished": {"type": "string", "format": "date-time", "nullable": true}
+        }
+      },
+      "report": {"$ref": "#/components/schemas/ImportReport"},
+      "error": {"$ref": "#/components/schemas/ImportError"},
+      "location": {"type": "string", "description": "/v1/imports/{id}"}
+    }
+  },
+  "ImportList": {
+    "type": "array",
+    "items": {"$ref": "#/components/schemas/Import"}
+  },
+  "ArchiveUpload": {
+    "type": "string",
+    "format": "binary",
+    "description": "A .7z, zip or tar archive of Kider .asd.rad.txt files, or of the published .7z captures."
+  }
+})json");
+}
+
+const char* kImportExample =
+    R"json({"id": 1, "dataset": "synthetic", "format": "kider", "source": "path", "path": "/tmp/oa/synth", "upload_bytes": null, "status": "succeeded", "progress": {"phase": "committed", "bytes_read": 4830932, "bytes_total": 4830932, "entries_read": 81, "entries_total": 81, "files_read": 81, "captures_added": 1, "samples_added": 81}, "timings": {"created": "2026-11-23T19:42:13.347Z", "started": "2026-11-23T19:42:13.348Z", "finished": "2026-11-23T19:42:13.562Z"}, "report": {"dataset": "synthetic", "added": ["2013-05-27___11.45.00"], "unchanged": [], "samples_added": 81, "seconds": 0.214297728}, "error": null, "location": "/v1/imports/1"})json";
+
+Json operations() {
+  Json ops = parse(R"json({
+  "listDatasets": {
+    "operationId": "listDatasets",
+    "tags": ["datasets"],
+    "summary": "Stored datasets",
+    "description": "The stored measurement datasets with their capture and sample counts.",
+    "parameters": [
+      {"$ref": "#/components/parameters/limit"},
+      {"$ref": "#/components/parameters/cursor"}
+    ],
+    "responses": {
+      "200": {
+        "description": "The datasets.",
+        "headers": {"Link": {"$ref": "#/components/headers/Link"}},
+        "content": {"application/json": {
+          "schema": {"$ref": "#/components/schemas/DatasetList"},
+          "example": [{"name": "synthetic", "format": "kider2014", "created": "2026-11-23T19:42:13.533Z", "captures": 1, "samples": 81}]
+        }}
+      },
+      "400": {"description": "An unknown or invalid parameter."}
+    }
+  },
+  "importDataset": {
+    "operationId": "importDataset",
+    "tags": ["datasets", "imports"],
+    "summary": "Import captures into a dataset",
+    "description": "Imports Kider et al. 2014 captures as a background job: the body is an archive (streamed to disk under --max-upload-bytes, default 1 GiB), or no body and path= names an archive or folder on the server. The route checks the parameters, format and path, then answers 202 with the import's state; follow Location. The import is one transaction: a failure leaves nothing behind.",
+    "parameters": [
+      {"name": "name", "in": "query", "required": true, "description": "The dataset to import into (created when absent).", "schema": {"type": "string", "minLength": 1}, "example": "synthetic"},
+      {"name": "format", "in": "query", "required": false, "description": "The measurement format.", "schema": {"type": "string", "enum": ["kider"], "default": "kider"}},
+      {"name": "path", "in": "query", "required": false, "description": "An archive or folder on the server, instead of a body.", "schema": {"type": "string"}}
+    ],
+    "requestBody": {
+      "required": false,
+      "description": "The archive; absent (Content-Length: 0) with path=.",
+      "content": {"application/octet-stream": {"schema": {"$ref": "#/components/schemas/ArchiveUpload"}}}
+    },
+    "responses": {
+      "202": {
+        "description": "Queued: the import's state (as GET /v1/imports/{id}).",
+        "headers": {"Location": {"description": "/v1/imports/{id}", "required": true, "schema": {"type": "string"}}},
+        "content": {"application/json": {
+          "schema": {"$ref": "#/components/schemas/Import"},
+          "example": {"id": 1, "dataset": "synthetic", "format": "kider", "source": "path", "path": "/tmp/oa/synth", "upload_bytes": null, "status": "running", "progress": {"phase": "reading", "bytes_read": 1073533, "bytes_total": 4830932, "entries_read": 18, "entries_total": 81, "files_read": 18, "captures_added": 0, "samples_added": 0}, "timings": {"created": "2026-11-23T19:42:13.347Z", "started": "2026-11-23T19:42:13.348Z", "finished": null}, "report": null, "error": null, "location": "/v1/imports/1"}
+        }}
+      },
+      "400": {"description": "A missing or unknown parameter, an unknown format, no body and no path, a body and a path, or no such path on the server."},
+      "413": {"description": "The upload is above --max-upload-bytes (code too_large, parameter body)."},
+      "503": {"description": "Too many imports are queued (--import-queue; code busy), or the server runs no import workers."}
+    }
+  },
+  "getDataset": {
+    "operationId": "getDataset",
+    "tags": ["datasets"],
+    "summary": "One dataset",
+    "description": "A dataset's captures: time, place and the sun's angles; samples=true adds each capture's sample directions, capture=LABEL keeps one capture and adds each sample's spectrum.",
+    "parameters": [
+      {"name": "name", "in": "path", "required": true, "description": "The dataset's name.", "schema": {"type": "string"}, "example": "synthetic"},
+      {"name": "samples", "in": "query", "required": false, "description": "Add each capture's samples (true/false or 1/0).", "schema": {"type": "boolean", "default": false}},
+      {"name": "capture", "in": "query", "required": false, "description": "Only the capture with this label, with each sample's spectrum.", "schema": {"type": "string"}, "example": "2013-05-27___11.45.00"}
+    ],
+    "responses": {
+      "200": {
+        "description": "The dataset.",
+        "content": {"application/json": {
+          "schema": {"$ref": "#/components/schemas/Dataset"},
+          "example": {"name": "synthetic", "format": "kider2014", "created": "2026-11-23T19:42:13.533Z", "captures": [{"label": "2013-05-27___11.45.00", "time": "2013-05-27T11:45:00-04:00", "time_utc": "2013-05-27T15:45:00Z", "place": {"latitude": 42.443449, "longitude": -76.481962, "elevation_m": 250.0}, "sun_zenith": 26.651259213110777, "sun_azimuth": 136.07696990085265, "sun_azimuth_estimated": null, "samples": 81}]}
+        }}
+      },
+      "400": {"description": "An unknown parameter or a samples value other than true or false."},
+      "404": {"description": "No such dataset (code unknown_dataset), or no capture of that label (unknown_capture)."}
+    }
+  },
+  "deleteDataset": {
+    "operationId": "deleteDataset",
+    "tags": ["datasets"],
+    "summary": "Delete a dataset",
+    "description": "Deletes a dataset with its captures and their evaluation runs.",
+    "parameters": [
+      {"name": "name", "in": "path", "required": true, "description": "The dataset's name.", "schema": {"type": "string"}, "example": "synthetic"}
+    ],
+    "responses": {
+      "200": {
+        "description": "Deleted.",
+        "content": {"application/json": {
+          "schema": {"$ref": "#/components/schemas/DatasetDeleted"},
+          "example": {"deleted": "synthetic"}
+        }}
+      },
+      "400": {"description": "A query parameter (the route takes none)."},
+      "404": {"description": "No such dataset (code unknown_dataset)."}
+    }
+  },
+  "listImports": {
+    "operationId": "listImports",
+    "tags": ["imports"],
+    "summary": "Dataset imports",
+    "description": "Imports, newest first, with their state, progress (live while running), timings, and report or error.",
+    "parameters": [
+      {"name": "status", "in": "query", "required": false, "description": "Only imports in this state.", "schema": {"type": "string", "enum": ["queued", "running", "succeeded", "failed"]}},
+      {"name": "dataset", "in": "query", "required": false, "description": "Only imports into this dataset.", "schema": {"type": "string"}},
+      {"$ref": "#/components/parameters/limit"},
+      {"$ref": "#/components/parameters/cursor"}
+    ],
+    "responses": {
+      "200": {
+        "description": "The imports.",
+        "headers": {"Link": {"$ref": "#/components/headers/Link"}},
+        "content": {"application/json": {"schema": {"$ref": "#/components/schemas/ImportList"}}}
+      },
+      "400": {"description": "An unknown parameter or an invalid status."}
+    }
+  },
+  "getImport": {
+    "operationId": "getImport",
+    "tags": ["imports"],
+    "summary": "One import",
+    "description": "An import's state; an import a crash interrupted reads failed with code interrupted.",
+    "parameters": [
+      {"name": "id", "in": "path", "required": true, "description": "The import's id.", "schema": {"type": "integer", "minimum": 1}, "example": 1}
+    ],
+    "responses": {
+      "200": {
+        "description": "The import.",
+        "content": {"application/json": {"schema": {"$ref": "#/components/schemas/Import"}}}
+      },
+      "400": {"description": "An id that is not a positive integer, or a query parameter."},
+      "404": {"description": "No such import (code unknown_import)."}
+    }
+  }
+})json");
+  ops["listImports"]["responses"]["200"]["content"]["application/json"]["example"] =
+      Json::array({parse(kImportExample)});
+  ops["getImport"]["responses"]["200"]["content"]["application/json"]["example"] =
+      parse(kImportExample);
+  return ops;
+}
+
+}  // namespace
+
+// Turns each error response's description into a response with the Error body.
+void complete_errors(Json& operations) {
+  for (auto& [id, operation] : operations.items()) {
+    for (auto& [status, response] : operation["responses"].items()) {
+      if (status[0] != '4' && status[0] != '5') continue;
+      if (response.contains("$ref") || response.contains("content")) continue;
+      const std::string description = response["description"];
+      response = status == "503" ? retry_later_response(description) : error_response(description);
+    }
+  }
+}
+
+Area datasets_area() {
+  Area area;
+  area.components["schemas"] = schemas();
+  area.operations = operations();
+  complete_errors(area.operations);
+  for (auto& [id, operation] : area.operations.items()) {
+    operation["security"] = Json::array();
+    if (id == "importDataset" || id == "deleteDataset") make_write(operation);
+    add_common_errors(operation, id == "importDataset");
+  }
+  return area;
+}
+
+}  // namespace clearsky::api::openapi

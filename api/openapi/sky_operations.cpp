@@ -1,0 +1,477 @@
+// The sky operations (openapi_area.h): the sun, spectral radiance, irradiance, colour and the
+// skydome image (api/handlers/*, api/skydome/skydome_render.h). Parameter ranges are those the
+// handlers check (api/request/views.h, api/request/sky_request.cpp, api/parse/sun_request.h);
+// the 413 limits are the defaults of Limits (api/request/sky_request.h), which the server's
+// --max-views, --max-wavelengths and --max-skydome-size change. The examples are answers of a
+// server started with --models preetham,hosek (the 503: with bruneton, its tables building).
+#include "api/openapi/openapi_area.h"
+#include "api/request/sky_request.h"
+
+namespace clearsky::api::openapi {
+namespace {
+
+Json schemas() {
+  Json s = parse(R"json({
+  "Sun": {
+    "type": "object",
+    "description": "The sun from NREL SPA and the local day's sunrise, transit and sunset (ISO 8601 in the request's UTC offset; null in polar day or night).",
+    "required": ["zenith", "azimuth", "sunrise", "transit", "sunset", "day"],
+    "additionalProperties": false,
+    "properties": {
+      "zenith": {"type": "number", "minimum": 0, "maximum": 180, "description": "Topocentric zenith angle, degrees (refraction applied unless refraction=false)."},
+      "azimuth": {"type": "number", "minimum": 0, "maximum": 360, "description": "Degrees clockwise from North."},
+      "sunrise": {"type": "string", "nullable": true},
+      "transit": {"type": "string", "nullable": true},
+      "sunset": {"type": "string", "nullable": true},
+      "day": {"type": "string", "enum": ["normal", "polar_day", "polar_night"]}
+    }
+  },
+  "SunUsed": {
+    "type": "object",
+    "description": "The sun the model was asked for: given, or computed by SPA from lat, lon and time.",
+    "required": ["zenith_deg", "azimuth_deg", "source"],
+    "additionalProperties": false,
+    "properties": {
+      "zenith_deg": {"type": "number", "minimum": 0, "maximum": 180},
+      "azimuth_deg": {"type": "number", "minimum": 0, "maximum": 360, "description": "Clockwise from North, normalised to [0, 360)."},
+      "source": {"type": "string", "enum": ["given", "spa"]}
+    }
+  },
+  "View": {
+    "type": "object",
+    "required": ["view_zenith", "view_azimuth"],
+    "additionalProperties": false,
+    "properties": {
+      "view_zenith": {"type": "number", "minimum": 0, "maximum": 180, "description": "Degrees from the local vertical."},
+      "view_azimuth": {"type": "number", "minimum": -360, "maximum": 360, "description": "Degrees clockwise from North."}
+    }
+  },
+  "ViewPair": {
+    "type": "array",
+    "description": "[view_zenith, view_azimuth], degrees.",
+    "minItems": 2,
+    "maxItems": 2,
+    "items": {"type": "number", "minimum": -360, "maximum": 360}
+  },
+  "ViewBatch": {
+    "type": "array",
+    "description": "Viewing directions; the batch fails as a whole on its first view the model cannot answer, naming it (views[3]). Above the server's limit (--max-views, default 10000): 413.",
+    "minItems": 1,
+    "items": {"oneOf": [{"$ref": "#/components/schemas/View"}, {"$ref": "#/components/schemas/ViewPair"}]}
+  },
+  "RadianceSample": {
+    "type": "object",
+    "required": ["view_zenith_deg", "view_azimuth_deg", "radiance"],
+    "additionalProperties": false,
+    "properties": {
+      "view_zenith_deg": {"type": "number"},
+      "view_azimuth_deg": {"type": "number"},
+      "radiance": {"type": "array", "items": {"type": "number", "minimum": 0}, "description": "W/(m2.sr.nm), one per wavelengths_nm."}
+    }
+  },
+  "Radiance": {
+    "type": "object",
+    "required": ["model", "model_version", "sun", "altitude_m", "unit", "grid", "wavelengths_nm", "samples"],
+    "additionalProperties": false,
+    "properties": {
+      "model": {"type": "string"},
+      "model_version": {"type": "string"},
+      "sun": {"$ref": "#/components/schemas/SunUsed"},
+      "altitude_m": {"type": "number"},
+      "unit": {"type": "string", "enum": ["W/(m2.sr.nm)"]},
+      "grid": {"type": "string", "enum": ["bins", "points"], "description": "bins: each value is the mean over its bin (the paper's 40 bins); points: the value at the wavelength."},
+      "bin_width_nm": {"type": "number", "description": "With grid=bins."},
+      "wavelengths_nm": {"type": "array", "items": {"type": "number"}},
+      "samples": {"type": "array", "items": {"$ref": "#/components/schemas/RadianceSample"}}
+    }
+  },
+  "RadianceCsv": {
+    "type": "string",
+    "description": "format=csv: a header line, then one row per view and wavelength: view_zenith_deg,view_azimuth_deg,wavelength_nm,radiance_w_m2_sr_nm."
+  },
+  "RgbSample": {
+    "type": "object",
+    "required": ["view_zenith_deg", "view_azimuth_deg", "rgb", "luminance_cd_m2"],
+    "additionalProperties": false,
+    "properties": {
+      "view_zenith_deg": {"type": "number"},
+      "view_azimuth_deg": {"type": "number"},
+      "rgb": {"type": "array", "minItems": 3, "maxItems": 3, "items": {"type": "number"}, "description": "Linear sRGB (D65), radiometric: XYZ with Y in W/(m2.sr)."},
+      "luminance_cd_m2": {"type": "number", "minimum": 0}
+    }
+  },
+  "Rgb": {
+    "type": "object",
+    "required": ["model", "model_version", "method", "sun", "altitude_m", "colour_space", "samples"],
+    "additionalProperties": false,
+    "properties": {
+      "model": {"type": "string"},
+      "model_version": {"type": "string"},
+      "method": {"type": "string", "enum": ["spectral", "three"]},
+      "sun": {"$ref": "#/components/schemas/SunUsed"},
+      "altitude_m": {"type": "number"},
+      "colour_space": {"type": "string"},
+      "integrated_range_nm": {"type": "array", "minItems": 2, "maxItems": 2, "items": {"type": "number"}, "description": "method=spectral: the wavelengths the CIE integral covers."},
+      "warning": {"type": "string", "description": "When the model answers only part of the grid (e.g. Hosek up to 720 nm): the missing light counts as zero."},
+      "samples": {"type": "array", "items": {"$ref": "#/components/schemas/RgbSample"}}
+    }
+  },
+  "IrradianceComponent": {
+    "type": "object",
+    "required": ["irradiance_w_m2", "illuminance_lx"],
+    "additionalProperties": false,
+    "properties": {
+      "irradiance_w_m2": {"type": "number", "minimum": 0, "description": "Sum over the answered grid (integrated_range_nm)."},
+      "illuminance_lx": {"type": "number", "minimum": 0},
+      "spectral_w_m2_nm": {"type": "array", "items": {"type": "number", "minimum": 0}, "description": "With spectral=true, one per wavelengths_nm."}
+    }
+  },
+  "Irradiance": {
+    "type": "object",
+    "description": "direct = direct normal x max(0, cos incidence), 0 with the sun below the horizon; diffuse = the model's sky irradiance on the plane (ground reflection excluded); global = both. The components present follow component=.",
+    "required": ["model", "model_version", "sun", "altitude_m", "plane", "integrated_range_nm", "ground_reflection"],
+    "additionalProperties": false,
+    "properties": {
+      "model": {"type": "string"},
+      "model_version": {"type": "string"},
+      "sun": {"$ref": "#/components/schemas/SunUsed"},
+      "altitude_m": {"type": "number"},
+      "plane": {
+        "type": "object",
+        "required": ["tilt_deg", "surface_azimuth_deg"],
+        "additionalProperties": false,
+        "properties": {"tilt_deg": {"type": "number"}, "surface_azimuth_deg": {"type": "number"}}
+      },
+      "integrated_range_nm": {"type": "array", "minItems": 2, "maxItems": 2, "items": {"type": "number"}},
+      "ground_reflection": {"type": "string", "enum": ["excluded"]},
+      "wavelengths_nm": {"type": "array", "items": {"type": "number"}, "description": "With spectral=true."},
+      "direct_normal": {"$ref": "#/components/schemas/IrradianceComponent"},
+      "direct": {"$ref": "#/components/schemas/IrradianceComponent"},
+      "diffuse": {"$ref": "#/components/schemas/IrradianceComponent"},
+      "global": {"$ref": "#/components/schemas/IrradianceComponent"}
+    }
+  },
+  "SkydomeImage": {
+    "type": "string",
+    "format": "binary",
+    "description": "An uncompressed scan-line OpenEXR file, streamed (chunked) as it is computed: channels R, G, B (rgb), Y (luminance) or S0.<nm>nm (spectral, Fichet et al. 2021), and A, 1 where the model answered and 0 where it did not."
+  }
+})json");
+  const Json sky = sky_body_properties();
+  const auto batch = [&](const char* description, const Json& specific) {
+    Json body = {{"type", "object"},
+                 {"description", description},
+                 {"required", {"model", "views"}},
+                 {"additionalProperties", false},
+                 {"properties", sky}};
+    for (const auto& [name, schema] : specific.items()) body["properties"][name] = schema;
+    body["properties"]["views"] = ref("schemas", "ViewBatch");
+    return body;
+  };
+  s["RadianceBatchRequest"] = batch(
+      "The parameters of GET /v1/radiance as members (numbers or strings; view_zenith and "
+      "view_azimuth replaced by views).",
+      parse(R"json({
+        "wavelengths": {"type": "string", "description": "As the query parameter of GET /v1/radiance."},
+        "format": {"type": "string", "enum": ["json", "csv"], "default": "json"}
+      })json"));
+  s["RgbBatchRequest"] = batch(
+      "The parameters of GET /v1/rgb as members (numbers or strings; view_zenith and "
+      "view_azimuth replaced by views).",
+      parse(R"json({
+        "method": {"type": "string", "enum": ["spectral", "three"], "default": "spectral"}
+      })json"));
+  return s;
+}
+
+Json endpoint_parameters() {
+  const Limits limits;
+  Json p = parse(R"json({
+  "view_zenith": {
+    "name": "view_zenith", "in": "query", "required": true,
+    "description": "View zenith angle, degrees from the local vertical.",
+    "schema": {"type": "number", "minimum": 0, "maximum": 180},
+    "example": 45
+  },
+  "view_azimuth": {
+    "name": "view_azimuth", "in": "query", "required": true,
+    "description": "View azimuth, degrees clockwise from North.",
+    "schema": {"type": "number", "minimum": -360, "maximum": 360},
+    "example": 0
+  },
+  "wavelengths": {
+    "name": "wavelengths", "in": "query", "required": false,
+    "description": "",
+    "schema": {"type": "string"},
+    "example": "450,550,650"
+  }
+})json");
+  p["wavelengths"]["description"] =
+      "Wavelengths, nm, each in (0, 100000] and increasing: a list (450,550,650) or "
+      "start:stop:step (stop included). Absent: the model's default grid (the paper's 40 bins "
+      "of 11.75 nm from 360 nm, those in the model's range). Values all on that grid are read "
+      "from its tables; any other list builds tables on exactly those points (503 while they "
+      "are built). At most " +
+      std::to_string(limits.max_wavelengths) +
+      " (--max-wavelengths; above: 413); outside the model's spectral range: 422.";
+  return p;
+}
+
+// The responses every sky computation shares.
+void add_sky_errors(Json& operation, bool get) {
+  Json& r = operation["responses"];
+  r["400"] = error_response(
+      "An invalid, unknown, unused, duplicate or conflicting parameter, or a bad body (codes "
+      "invalid_parameter, unknown_parameter, missing_parameter, conflicting_parameters, "
+      "invalid_body); error.parameter names it.");
+  r["400"]["content"]["application/json"]["example"] = parse(
+      R"json({"error": {"code": "invalid_parameter", "message": "turbidity: must be in [2, 10]", "parameter": "turbidity"}})json");
+  r["404"] = error_response("No served model has this id (code unknown_model).");
+  r["404"]["content"]["application/json"]["example"] = parse(
+      R"json({"error": {"code": "unknown_model", "message": "model: no model 'nope' (available: preetham, hosek)", "parameter": "model"}})json");
+  r["413"] = error_response(
+      "Above a configured limit: views, wavelengths, image size, or the request body (code "
+      "too_large); error.parameter names it.");
+  r["413"]["content"]["application/json"]["example"] = parse(
+      R"json({"error": {"code": "too_large", "message": "wavelengths: at most 2000 wavelengths", "parameter": "wavelengths"}})json");
+  r["422"] = error_response(
+      "The model cannot answer this request (code model_cannot_answer): the sun below the "
+      "horizon for a model that needs it above, a view below the horizon, an altitude or "
+      "wavelength outside the model's range, a fitted model outside its domain "
+      "(outside_fit_domain; clamp_negative_fit=1 answers 0 there). The message says why; "
+      "error.parameter names the parameter or the view (views[3]).");
+  r["422"]["content"]["application/json"]["example"] = parse(
+      R"json({"error": {"code": "model_cannot_answer", "message": "model preetham cannot answer: the model does not answer for a sun this far below the zenith (see its max_sun_zenith_deg)", "parameter": "sun_zenith"}})json");
+  r["503"] = retry_later_response(
+      "The tables this request needs are being built (code model_not_ready): retry after "
+      "Retry-After seconds.");
+  r["503"]["content"]["application/json"]["example"] = parse(
+      R"json({"error": {"code": "model_not_ready", "message": "model bruneton: its tables for this configuration are being built (in progress, 0% done)", "parameter": "model"}})json");
+  if (get && operation["operationId"] == "getSkydome") {
+    // Streamed: no tag, since the body is not known before it is sent.
+    r["200"]["headers"]["Cache-Control"] = ref("headers", "Cache-Control");
+  } else if (get) {
+    add_revalidation(operation);
+  }
+  add_common_errors(operation, !get);
+}
+
+Json operations() {
+  Json ops = parse(R"json({
+  "getSun": {
+    "operationId": "getSun",
+    "tags": ["sun"],
+    "summary": "Sun position, sunrise, transit and sunset",
+    "description": "The sun's topocentric zenith and azimuth at a place and time (NREL SPA) and the local day's sunrise, transit and sunset (the same query as `clearsky sun`).",
+    "parameters": [
+      {"name": "lat", "in": "query", "required": true, "description": "Latitude, degrees North in [-90, 90]: decimal or DMS (42d26'36\"N).", "schema": {"type": "string"}, "example": "42.444"},
+      {"name": "lon", "in": "query", "required": true, "description": "Longitude, degrees East in [-180, 180]: decimal or DMS.", "schema": {"type": "string"}, "example": "-76.5"},
+      {"name": "time", "in": "query", "required": false, "description": "ISO 8601 with a UTC offset or Z (years 0000 to 6000); absent: now. The answer's times are in this offset.", "schema": {"type": "string", "format": "date-time"}, "example": "2013-05-27T11:45:00-04:00"},
+      {"name": "altitude", "in": "query", "required": false, "description": "Observer elevation above sea level, m.", "schema": {"type": "number", "minimum": -6500000, "default": 0}},
+      {"name": "pressure", "in": "query", "required": false, "description": "Annual mean pressure for refraction, mbar.", "schema": {"type": "number", "minimum": 0, "maximum": 5000, "default": 1013.25}},
+      {"name": "temperature", "in": "query", "required": false, "description": "Annual mean temperature for refraction, degrees Celsius, above -273.", "schema": {"type": "number", "minimum": -273, "exclusiveMinimum": true, "maximum": 6000, "default": 15}},
+      {"name": "delta_t", "in": "query", "required": false, "description": "TT - UT1, seconds.", "schema": {"type": "number", "minimum": -8000, "maximum": 8000, "default": 69}},
+      {"name": "delta_ut1", "in": "query", "required": false, "description": "UT1 - UTC, seconds.", "schema": {"type": "number", "minimum": -1, "exclusiveMinimum": true, "maximum": 1, "exclusiveMaximum": true, "default": 0}},
+      {"name": "refraction", "in": "query", "required": false, "description": "Apply atmospheric refraction (true/false or 1/0).", "schema": {"type": "boolean", "default": true}}
+    ],
+    "responses": {
+      "200": {
+        "description": "The sun.",
+        "content": {"application/json": {
+          "schema": {"$ref": "#/components/schemas/Sun"},
+          "example": {"zenith": 26.652540765126872, "azimuth": 136.0464246389158, "sunrise": "2013-05-27T05:34:08-04:00", "transit": "2013-05-27T13:03:10-04:00", "sunset": "2013-05-27T20:32:40-04:00", "day": "normal"}
+        }}
+      },
+      "400": {
+        "description": "A missing, invalid or unknown parameter (code invalid_parameter); error.parameter names it.",
+        "content": {"application/json": {
+          "schema": {"$ref": "#/components/schemas/Error"},
+          "example": {"error": {"code": "invalid_parameter", "message": "lon: is required", "parameter": "lon"}}
+        }}
+      }
+    }
+  },
+  "getRadiance": {
+    "operationId": "getRadiance",
+    "tags": ["sky"],
+    "summary": "Spectral sky radiance for one view",
+    "description": "The model's spectral radiance, W/(m2.sr.nm), seen in one direction, at the model's default wavelengths or those asked for.",
+    "parameters": [],
+    "responses": {
+      "200": {
+        "description": "Spectral radiance.",
+        "content": {
+          "application/json": {
+            "schema": {"$ref": "#/components/schemas/Radiance"},
+            "example": {"altitude_m": 0.0, "grid": "points", "model": "preetham", "model_version": "1", "samples": [{"radiance": [0.16657478187859964, 0.07732172727214032, 0.03455196147970835], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}], "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}, "unit": "W/(m2.sr.nm)", "wavelengths_nm": [450.0, 550.0, 650.0]}
+          },
+          "text/csv": {
+            "schema": {"$ref": "#/components/schemas/RadianceCsv"},
+            "example": "view_zenith_deg,view_azimuth_deg,wavelength_nm,radiance_w_m2_sr_nm\n45,0,450,0.166574782\n45,0,550,0.0773217273\n45,0,650,0.0345519615\n"
+          }
+        }
+      }
+    }
+  },
+  "postRadiance": {
+    "operationId": "postRadiance",
+    "tags": ["sky"],
+    "summary": "Spectral sky radiance for a batch of views",
+    "description": "As GET /v1/radiance for many views at once: the parameters and the views in a JSON body (at most --payload-max-bytes, default 8 MiB).",
+    "requestBody": {
+      "required": true,
+      "content": {"application/json": {
+        "schema": {"$ref": "#/components/schemas/RadianceBatchRequest"},
+        "example": {"model": "preetham", "sun_zenith": 30, "sun_azimuth": 135, "wavelengths": "450,550,650", "views": [[45, 0], {"view_zenith": 60, "view_azimuth": 90}]}
+      }}
+    },
+    "responses": {
+      "200": {
+        "description": "Spectral radiance, one sample per view, in the order given.",
+        "content": {
+          "application/json": {
+            "schema": {"$ref": "#/components/schemas/Radiance"},
+            "example": {"altitude_m": 0.0, "grid": "points", "model": "preetham", "model_version": "1", "samples": [{"radiance": [0.16657478187859964, 0.07732172727214032, 0.03455196147970835], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}, {"radiance": [0.27521367017693504, 0.14807347448705338, 0.08606376978831415], "view_azimuth_deg": 90.0, "view_zenith_deg": 60.0}], "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}, "unit": "W/(m2.sr.nm)", "wavelengths_nm": [450.0, 550.0, 650.0]}
+          },
+          "text/csv": {"schema": {"$ref": "#/components/schemas/RadianceCsv"}}
+        }
+      }
+    }
+  },
+  "getIrradiance": {
+    "operationId": "getIrradiance",
+    "tags": ["sky"],
+    "summary": "Irradiance on a plane",
+    "description": "Direct sun, diffuse sky (ground reflection excluded) and global irradiance on a horizontal or tilted plane: W/m2 over the model's answered grid, illuminance in lx, and spectra in W/(m2.nm) with spectral=true.",
+    "parameters": [
+      {"name": "tilt", "in": "query", "required": false, "description": "Plane tilt from horizontal, degrees.", "schema": {"type": "number", "minimum": 0, "maximum": 180, "default": 0}},
+      {"name": "surface_azimuth", "in": "query", "required": false, "description": "Azimuth of the plane's normal, degrees clockwise from North.", "schema": {"type": "number", "minimum": -360, "maximum": 360, "default": 180}},
+      {"name": "component", "in": "query", "required": false, "description": "Which components to answer (a model without sun or sky irradiance answers 422 for the components it lacks).", "schema": {"type": "string", "enum": ["all", "direct", "diffuse", "global"], "default": "all"}},
+      {"name": "spectral", "in": "query", "required": false, "description": "Add each component's spectrum and the wavelengths.", "schema": {"type": "boolean", "default": false}}
+    ],
+    "responses": {
+      "200": {
+        "description": "Irradiance.",
+        "content": {"application/json": {
+          "schema": {"$ref": "#/components/schemas/Irradiance"},
+          "example": {"altitude_m": 0.0, "diffuse": {"illuminance_lx": 28493.223923522513, "irradiance_w_m2": 180.52086377322016}, "direct": {"illuminance_lx": 88658.85993633908, "irradiance_w_m2": 479.46653007527397}, "direct_normal": {"illuminance_lx": 95663.66999330047, "irradiance_w_m2": 517.348496685935}, "global": {"illuminance_lx": 117152.08385986158, "irradiance_w_m2": 659.987393848494}, "ground_reflection": "excluded", "integrated_range_nm": [360.0, 830.0], "model": "preetham", "model_version": "1", "plane": {"surface_azimuth_deg": 180.0, "tilt_deg": 30.0}, "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}}
+        }}
+      }
+    }
+  },
+  "getRgb": {
+    "operationId": "getRgb",
+    "tags": ["sky"],
+    "summary": "Colour and luminance for one view",
+    "description": "Linear sRGB (D65, radiometric: Y in W/(m2.sr)) and luminance (cd/m2): method=spectral integrates the model's 40-bin spectrum against the CIE 1931 functions; method=three is the paper's 3-wavelength method (the model built on 440, 550 and 680 nm).",
+    "parameters": [
+      {"name": "method", "in": "query", "required": false, "description": "spectral (CIE 1931 over the 40 bins) or three (the paper's 3-wavelength method).", "schema": {"type": "string", "enum": ["spectral", "three"], "default": "spectral"}}
+    ],
+    "responses": {
+      "200": {
+        "description": "Colour.",
+        "content": {"application/json": {
+          "schema": {"$ref": "#/components/schemas/Rgb"},
+          "example": {"altitude_m": 0.0, "colour_space": "linear sRGB (D65), radiometric: Y in W/(m2.sr)", "integrated_range_nm": [360.0, 830.0], "method": "spectral", "model": "preetham", "model_version": "1", "samples": [{"luminance_cd_m2": 5404.272403652347, "rgb": [4.374940149346866, 8.14954111417067, 15.988335948967407], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}], "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}}
+        }}
+      }
+    }
+  },
+  "postRgb": {
+    "operationId": "postRgb",
+    "tags": ["sky"],
+    "summary": "Colour and luminance for a batch of views",
+    "description": "As GET /v1/rgb for many views at once: the parameters and the views in a JSON body (at most --payload-max-bytes, default 8 MiB).",
+    "requestBody": {
+      "required": true,
+      "content": {"application/json": {
+        "schema": {"$ref": "#/components/schemas/RgbBatchRequest"},
+        "example": {"model": "hosek", "lat": 42.444, "lon": "-76.5", "time": "2013-05-27T11:45:00-04:00", "views": [[45, 0], {"view_zenith": 60, "view_azimuth": 90}]}
+      }}
+    },
+    "responses": {
+      "200": {
+        "description": "Colour, one sample per view, in the order given.",
+        "content": {"application/json": {
+          "schema": {"$ref": "#/components/schemas/Rgb"},
+          "example": {"altitude_m": 0.0, "colour_space": "linear sRGB (D65), radiometric: Y in W/(m2.sr)", "integrated_range_nm": [360.0, 724.25], "method": "spectral", "model": "hosek", "model_version": "1", "samples": [{"luminance_cd_m2": 3125.214328653716, "rgb": [2.618930817129737, 4.657793717117717, 9.528364421411645], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}, {"luminance_cd_m2": 5483.929524803734, "rgb": [5.293662459038357, 8.191446310734195, 14.481891990482866], "view_azimuth_deg": 90.0, "view_zenith_deg": 60.0}], "sun": {"azimuth_deg": 136.0464246389158, "source": "spa", "zenith_deg": 26.652540765126872}, "warning": "the model answers only part of the grid; the CIE integral covers [360.000000, 724.250000] nm (missing light counts as zero)"}
+        }}
+      }
+    }
+  },
+  "getSkydome": {
+    "operationId": "getSkydome",
+    "tags": ["sky"],
+    "summary": "An OpenEXR image of the sky",
+    "description": "The whole sky as an image: fisheye (size x size, equidistant, North up, East left), latlong (size x size/2) or cubemap (size x 6 size), OpenEXR envmap conventions. Everything is checked before the first byte; then the image is computed in bands of 16 rows and streamed (chunked).",
+    "parameters": [
+      {"name": "projection", "in": "query", "required": false, "description": "Image projection.", "schema": {"type": "string", "enum": ["fisheye", "latlong", "cubemap"], "default": "fisheye"}},
+      {"name": "size", "in": "query", "required": false, "description": "", "schema": {"type": "integer", "minimum": 8, "default": 512}},
+      {"name": "channels", "in": "query", "required": false, "description": "rgb: R, G, B linear sRGB; luminance: Y in cd/m2; spectral: one channel per wavelength, W/(m2.sr.nm). Every image also has A.", "schema": {"type": "string", "enum": ["rgb", "luminance", "spectral"], "default": "rgb"}},
+      {"name": "pixel_type", "in": "query", "required": false, "description": "Sample type; absent: half for rgb, float otherwise.", "schema": {"type": "string", "enum": ["half", "float"]}},
+      {"name": "method", "in": "query", "required": false, "description": "channels=rgb only: as GET /v1/rgb.", "schema": {"type": "string", "enum": ["spectral", "three"], "default": "spectral"}},
+      {"name": "wavelengths", "in": "query", "required": false, "description": "channels=spectral only: as GET /v1/radiance.", "schema": {"type": "string"}}
+    ],
+    "responses": {
+      "200": {
+        "description": "The image.",
+        "headers": {
+          "Content-Disposition": {"description": "inline; filename=\"sky.exr\"", "schema": {"type": "string"}}
+        },
+        "content": {"image/x-exr": {"schema": {"$ref": "#/components/schemas/SkydomeImage"}}}
+      }
+    }
+  }
+})json");
+  const Limits limits;
+  Json& size = ops["getSkydome"]["parameters"][1];
+  size["schema"]["maximum"] = limits.max_skydome_size;
+  size["description"] = "Image width in pixels (even for latlong); at most " +
+                        std::to_string(limits.max_skydome_size) +
+                        " (--max-skydome-size; above: 413).";
+  const auto with_sky = [&](Json& operation, std::initializer_list<const char*> before, bool get) {
+    Json parameters = sky_parameter_refs();
+    for (const char* name : before) parameters.push_back(ref("parameters", name));
+    const Json own = operation.value("parameters", Json::array());
+    for (const auto& p : own) parameters.push_back(p);
+    if (get) {
+      operation["parameters"] = std::move(parameters);
+    } else {
+      operation.erase("parameters");
+    }
+    add_sky_errors(operation, get);
+  };
+  with_sky(ops["getRadiance"], {"view_zenith", "view_azimuth", "wavelengths"}, true);
+  ops["getRadiance"]["parameters"].push_back(
+      {{"name", "format"},
+       {"in", "query"},
+       {"required", false},
+       {"description", "json, or csv (one row per view and wavelength)."},
+       {"schema", {{"type", "string"}, {"enum", {"json", "csv"}}, {"default", "json"}}}});
+  with_sky(ops["postRadiance"], {}, false);
+  with_sky(ops["getIrradiance"], {}, true);
+  with_sky(ops["getRgb"], {"view_zenith", "view_azimuth"}, true);
+  with_sky(ops["postRgb"], {}, false);
+  with_sky(ops["getSkydome"], {}, true);
+  // The sun query has no model, tables or limits: 400 only. Without time its answer is the
+  // current sun, which no cache may keep (Cache-Control: no-store).
+  add_revalidation(ops["getSun"]);
+  add_common_errors(ops["getSun"], false);
+  for (auto& [id, operation] : ops.items()) operation["security"] = Json::array();
+  return ops;
+}
+
+}  // namespace
+
+Area sky_area() {
+  Area area;
+  area.operations = operations();
+  area.components["schemas"] = schemas();
+  area.components["parameters"] = sky_parameter_components();
+  const Json endpoint = endpoint_parameters();
+  for (const auto& [name, parameter] : endpoint.items())
+    area.components["parameters"][name] = parameter;
+  return area;
+}
+
+}  // namespace clearsky::api::openapi
