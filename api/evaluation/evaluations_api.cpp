@@ -100,7 +100,7 @@ nlohmann::json parse_evaluation_parameters(const nlohmann::json& parameters,
   }
   try {
     for (const ModelFactory* model : models)
-      validate_model_config(*model->descriptor, config_for_model(*model->descriptor, parameters));
+      validate_config(*model->descriptor, config_for_model(*model->descriptor, parameters));
   } catch (const std::invalid_argument& e) {
     throw from_invalid_argument(e);
   }
