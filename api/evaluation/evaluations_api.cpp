@@ -9,7 +9,6 @@
 
 #include "api/encode/iso8601_time.h"
 #include "api/error/api_error.h"
-#include "api/parse/invalid_parameter.h"
 #include "api/parse/iso8601_time.h"
 #include "api/request/sky_request.h"
 #include "storage/repositories/dataset_repository.h"
@@ -30,11 +29,7 @@ nlohmann::ordered_json optional_value(const std::optional<T>& value) {
 }
 
 double time_of(const std::string& iso, const std::string& parameter) {
-  try {
-    return parse_iso8601_time(iso, parameter).unix_time_utc_s;
-  } catch (const InvalidParameter& e) {
-    throw invalid_parameter(e.parameter(), e.message());
-  }
+  return parse_iso8601_time(iso, parameter).unix_time_utc_s;
 }
 
 std::map<std::int64_t, std::string> dataset_names(storage::Database& db) {

@@ -10,10 +10,13 @@
 #include <regex>
 #include <stdexcept>
 
-#include "api/parse/invalid_parameter.h"
+#include "api/error/api_error.h"
 
 namespace clearsky::api {
 namespace {
+
+// A text in double quotes, for messages.
+std::string quoted(std::string_view text) { return '"' + std::string(text) + '"'; }
 
 constexpr int kMaxUtcOffsetMin = 14 * 60;
 
@@ -55,8 +58,8 @@ class Iso8601Reader {
   Iso8601Reader(std::string_view text, const std::string& parameter)
       : text_(text), parameter_(parameter) {}
 
-  InvalidParameter fail(const std::string& why) const {
-    return InvalidParameter(
+  ApiError fail(const std::string& why) const {
+    return invalid_parameter(
         parameter_,
         why + " in " + quoted(text_) +
             "; expected an ISO 8601 time with offset such as 2013-05-27T11:45:00-04:00");
@@ -128,9 +131,9 @@ const date::time_zone& locate_zone(std::string_view zone, const std::string& zon
   try {
     return *date::locate_zone(zone);
   } catch (const std::exception&) {
-    throw InvalidParameter(zone_parameter, "unknown time zone " + quoted(zone) +
-                                               "; expected an IANA time zone name such as "
-                                               "Europe/Paris or America/New_York");
+    throw invalid_parameter(zone_parameter, "unknown time zone " + quoted(zone) +
+                                                "; expected an IANA time zone name such as "
+                                                "Europe/Paris or America/New_York");
   }
 }
 
@@ -151,16 +154,16 @@ Iso8601Time parse_iso8601_local_time(std::string_view text, std::string_view zon
   Iso8601Reader reader(text, parameter);
   const LocalTime local = reader.local_time();
   if (!reader.rest().empty()) {
-    throw InvalidParameter(parameter, "unexpected characters after the time in " + quoted(text) +
-                                          "; with " + zone_parameter +
-                                          " give the local time without offset, such as "
-                                          "2013-05-27T11:45:00");
+    throw invalid_parameter(parameter, "unexpected characters after the time in " + quoted(text) +
+                                           "; with " + zone_parameter +
+                                           " give the local time without offset, such as "
+                                           "2013-05-27T11:45:00");
   }
   const date::time_zone& time_zone = locate_zone(zone, zone_parameter);
   const date::local_info info = time_zone.get_info(local.whole_seconds());
   if (info.result == date::local_info::nonexistent) {
-    throw InvalidParameter(parameter, quoted(text) + " does not exist in " + std::string(zone) +
-                                          " (the clocks skip it when they go forward)");
+    throw invalid_parameter(parameter, quoted(text) + " does not exist in " + std::string(zone) +
+                                           " (the clocks skip it when they go forward)");
   }
   // Unique, or ambiguous (the clocks go back): the first of the two instants.
   const std::chrono::seconds offset = info.first.offset;

@@ -6,7 +6,7 @@
 // no leap seconds (unix time has none); offsets up to 14 hours (the widest in use, UTC+14 in
 // Kiribati). Calendar and time zones are Howard Hinnant's date/tz (Debian
 // libhowardhinnant-date-dev), which reads the system's IANA time zone database
-// (/usr/share/zoneinfo, Debian package tzdata). Errors are api::InvalidParameter naming the
+// (/usr/share/zoneinfo, Debian package tzdata). Errors are api::ApiError (400 invalid_parameter) naming the
 // parameter.
 #pragma once
 

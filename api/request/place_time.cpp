@@ -7,7 +7,6 @@
 
 #include "api/error/api_error.h"
 #include "api/parse/coordinates.h"
-#include "api/parse/invalid_parameter.h"
 #include "api/parse/iso8601_time.h"
 #include "models/core/invalid_input.h"
 
@@ -96,15 +95,10 @@ void read_time(Parameters& p, const PlaceTimeParameter& r, std::optional<double>
   const std::string name(r.name);
   const auto text = p.text(name);
   if (text) {
-    // api/parse/iso8601_time.h throws its own InvalidParameter; it becomes an ApiError here.
-    try {
-      const Iso8601Time parsed = parse_iso8601_time(*text, name);
-      out.position.*r.field = parsed.unix_time_utc_s;
-      out.utc_offset_min = parsed.utc_offset_min;
-      out.utc_designator = parsed.utc_designator;
-    } catch (const InvalidParameter& e) {
-      throw invalid_parameter(e.parameter(), e.message());
-    }
+    const Iso8601Time parsed = parse_iso8601_time(*text, name);
+    out.position.*r.field = parsed.unix_time_utc_s;
+    out.utc_offset_min = parsed.utc_offset_min;
+    out.utc_designator = parsed.utc_designator;
   } else {
     if (!now_unix_s) throw missing_parameter(name, "this endpoint has no default instant");
     out.position.*r.field = *now_unix_s;

@@ -11,7 +11,6 @@
 #include <set>
 
 #include "api/http/cache_policy.h"
-#include "api/parse/invalid_parameter.h"
 #include "api/routes/route_match.h"
 #include "server/http/bounded_task_queue.h"
 #include "server/http/request_body.h"
@@ -336,8 +335,6 @@ void HttpServer::install() {
           std::rethrow_exception(error);
         } catch (const api::ApiError& e) {
           send(req, res, api::error_response(e));
-        } catch (const api::InvalidParameter& e) {
-          send(req, res, api::error_response(api::invalid_parameter(e.parameter(), e.message())));
         } catch (const std::exception& e) {
           spdlog::error("{} {}: {}", req.method, req.path, e.what());
           send(req, res,

@@ -5,6 +5,7 @@
 
 #include <chrono>
 
+#include "api/error/api_error.h"
 #include "api/jobs/cron_schedule.h"
 #include "api/jobs/jobs_api.h"
 #include "api/parse/iso8601_time.h"
@@ -49,7 +50,7 @@ TickReport Scheduler::tick(std::int64_t now_unix_s) {
     double due_s = 0;
     try {
       due_s = api::parse_iso8601_time(*job.next_run_utc, "next_run").unix_time_utc_s;
-    } catch (const std::invalid_argument& e) {
+    } catch (const api::ApiError& e) {
       // A next run this program cannot read is replaced, not run.
       spdlog::error("job {} ({}): next run '{}': {}; recomputed", job.id, job.name,
                     *job.next_run_utc, e.what());

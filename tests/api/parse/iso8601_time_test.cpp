@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "api/parse/invalid_parameter.h"
+#include "api/error/api_error.h"
 
 namespace clearsky::api {
 namespace {
@@ -66,7 +66,7 @@ TEST(ParseIso8601Time, MalformedOrImpossibleTimesAreRejected) {
     try {
       (void)parse_iso8601_time(bad, "time");
       ADD_FAILURE() << "accepted " << bad;
-    } catch (const InvalidParameter& e) {
+    } catch (const ApiError& e) {
       EXPECT_EQ(e.parameter(), "time");
       EXPECT_NE(std::string(e.what()).find("2013-05-27T11:45:00-04:00"), std::string::npos)
           << e.what();
@@ -111,7 +111,7 @@ TEST(ParseIso8601LocalTime, SkippedTimesUnknownZonesAndOffsetsAreRefused) {
   const auto refused_naming = [](const char* text, const char* zone) -> std::string {
     try {
       (void)parse_iso8601_local_time(text, zone, "time", "tz");
-    } catch (const InvalidParameter& e) {
+    } catch (const ApiError& e) {
       return e.parameter();
     }
     return "accepted";
