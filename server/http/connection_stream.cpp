@@ -60,11 +60,16 @@ ConnectionStream::Wait ConnectionStream::wait(
   }
 }
 
-bool ConnectionStream::wait_for_request(const std::function<bool()>& stop) {
+bool ConnectionStream::wait_for_request(const std::function<bool()>& stop, bool first) {
   if (buffer_begin_ < buffer_end_) return true;
-  const auto deadline = Clock::now() + limits_.keep_alive_timeout;
-  return wait(POLLIN, deadline, [&](Clock::time_point) { return stop() || load_.scarce(); }) ==
-         Wait::ready;
+  const auto start = Clock::now();
+  // A new connection's first request is usually there already; a client slow to send it (a
+  // loaded machine) gets the grace of a head before scarcity closes it. Between requests, an
+  // idle connection goes at once.
+  const auto give_up = [&](Clock::time_point now) {
+    return stop() || (load_.scarce() && (!first || now - start >= limits_.scarce_head_grace));
+  };
+  return wait(POLLIN, start + limits_.keep_alive_timeout, give_up) == Wait::ready;
 }
 
 void ConnectionStream::begin_request() {

@@ -40,8 +40,9 @@ class ConnectionStream final : public httplib::Stream {
   ConnectionStream(socket_t sock, const ConnectionLimits& limits, const WorkerLoad& load);
 
   // Waits for the first byte of the next request (true), or gives up: keep-alive timeout,
-  // closed connection, workers scarce, or stop() returning true.
-  bool wait_for_request(const std::function<bool()>& stop);
+  // closed connection, workers scarce (for the first request of the connection: after the
+  // scarce head grace), or stop() returning true.
+  bool wait_for_request(const std::function<bool()>& stop, bool first);
   // The head of a request starts (its clock runs from here) and ends (setup of the request).
   void begin_request();
   void end_head();
