@@ -24,7 +24,9 @@ bool ConnectionServer::process_and_close_socket(socket_t sock) {
     const bool last = left == 1 || load_.scarce();
     bool closed = false;
     ok = process_request(stream, last, closed, [&stream](httplib::Request&) { stream.end_head(); });
-    if (!ok || closed || last) break;
+    // A head that did not arrive whole (too slow, or not HTTP) was answered 400: what follows
+    // on the connection cannot be trusted to start a request.
+    if (!ok || closed || last || !stream.head_complete()) break;
   }
   ::shutdown(sock, SHUT_RDWR);
   ::close(sock);

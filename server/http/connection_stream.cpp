@@ -74,11 +74,15 @@ bool ConnectionStream::wait_for_request(const std::function<bool()>& stop, bool 
 
 void ConnectionStream::begin_request() {
   in_head_ = true;
+  head_complete_ = false;
   head_start_ = Clock::now();
   answering_ = false;
 }
 
-void ConnectionStream::end_head() { in_head_ = false; }
+void ConnectionStream::end_head() {
+  in_head_ = false;
+  head_complete_ = true;
+}
 
 ssize_t ConnectionStream::read(char* ptr, std::size_t size) {
   if (buffer_begin_ < buffer_end_) {

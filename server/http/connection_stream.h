@@ -46,6 +46,8 @@ class ConnectionStream final : public httplib::Stream {
   // The head of a request starts (its clock runs from here) and ends (setup of the request).
   void begin_request();
   void end_head();
+  // The head of the request in progress arrived whole.
+  bool head_complete() const { return head_complete_; }
 
   bool is_readable() const override;
   bool is_writable() const override;
@@ -70,6 +72,7 @@ class ConnectionStream final : public httplib::Stream {
   std::vector<char> buffer_;
   std::size_t buffer_begin_ = 0, buffer_end_ = 0;
   bool in_head_ = false;
+  bool head_complete_ = false;
   Clock::time_point head_start_{};
   bool answering_ = false;
   Clock::time_point answer_start_{};
