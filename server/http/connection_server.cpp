@@ -13,11 +13,11 @@ ConnectionServer::ConnectionServer(const ConnectionLimits& limits,
 }
 
 bool ConnectionServer::process_and_close_socket(socket_t sock) {
-  ConnectionStream stream(sock, limits_, load_);
   const auto stopping = [this] { return svr_sock_ == INVALID_SOCKET; };
+  ConnectionStream stream(sock, limits_, load_, stopping);
   bool ok = false;
   for (std::size_t left = keep_alive_max_count_; left > 0 && !stopping(); --left) {
-    if (!stream.wait_for_request(stopping, left == keep_alive_max_count_)) break;
+    if (!stream.wait_for_request(left == keep_alive_max_count_)) break;
     stream.begin_request();
     // While workers are scarce, the answer ends the connection: the worker goes to a
     // connection waiting for one (the client reconnects at the back of the queue).

@@ -12,6 +12,7 @@
 #include <array>
 #include <cerrno>
 #include <cstring>
+#include <utility>
 
 namespace clearsky::server {
 
@@ -41,8 +42,12 @@ void ip_and_port(const sockaddr_storage& address, socklen_t length, std::string&
 }  // namespace
 
 ConnectionStream::ConnectionStream(socket_t sock, const ConnectionLimits& limits,
-                                   const WorkerLoad& load)
-    : sock_(sock), limits_(limits), load_(load), buffer_(kBufferBytes) {}
+                                   const WorkerLoad& load, std::function<bool()> stopping)
+    : sock_(sock),
+      limits_(limits),
+      load_(load),
+      stopping_(std::move(stopping)),
+      buffer_(kBufferBytes) {}
 
 ConnectionStream::Wait ConnectionStream::wait(
     short events, Clock::time_point deadline,
@@ -60,14 +65,14 @@ ConnectionStream::Wait ConnectionStream::wait(
   }
 }
 
-bool ConnectionStream::wait_for_request(const std::function<bool()>& stop, bool first) {
+bool ConnectionStream::wait_for_request(bool first) {
   if (buffer_begin_ < buffer_end_) return true;
   const auto start = Clock::now();
   // A new connection's first request is usually there already; a client slow to send it (a
   // loaded machine) gets the grace of a head before scarcity closes it. Between requests, an
   // idle connection goes at once.
   const auto give_up = [&](Clock::time_point now) {
-    return stop() || (load_.scarce() && (!first || now - start >= limits_.scarce_head_grace));
+    return stopping_() || (load_.scarce() && (!first || now - start >= limits_.scarce_head_grace));
   };
   return wait(POLLIN, start + limits_.keep_alive_timeout, give_up) == Wait::ready;
 }
@@ -94,7 +99,8 @@ ssize_t ConnectionStream::read(char* ptr, std::size_t size) {
   auto deadline = Clock::now() + limits_.read_timeout;
   if (in_head_) deadline = std::min(deadline, head_start_ + limits_.head_timeout);
   const auto head_too_slow = [this](Clock::time_point now) {
-    return in_head_ && load_.scarce() && now - head_start_ >= limits_.scarce_head_grace;
+    return in_head_ &&
+           (stopping_() || (load_.scarce() && now - head_start_ >= limits_.scarce_head_grace));
   };
   // Large reads (bodies) go straight to the caller; small ones (the head, read a byte at a
   // time by cpp-httplib) through the buffer.

@@ -36,13 +36,15 @@ class ConnectionStream final : public httplib::Stream {
  public:
   using Clock = std::chrono::steady_clock;
 
-  // The connection keeps sock (closed by its owner). load must outlive the stream.
-  ConnectionStream(socket_t sock, const ConnectionLimits& limits, const WorkerLoad& load);
+  // The connection keeps sock (closed by its owner). load must outlive the stream. While
+  // stopping() is true (the server stops), waits for a request or for a head give up.
+  ConnectionStream(socket_t sock, const ConnectionLimits& limits, const WorkerLoad& load,
+                   std::function<bool()> stopping);
 
   // Waits for the first byte of the next request (true), or gives up: keep-alive timeout,
   // closed connection, workers scarce (for the first request of the connection: after the
-  // scarce head grace), or stop() returning true.
-  bool wait_for_request(const std::function<bool()>& stop, bool first);
+  // scarce head grace), or the server stopping.
+  bool wait_for_request(bool first);
   // The head of a request starts (its clock runs from here) and ends (setup of the request).
   void begin_request();
   void end_head();
@@ -69,6 +71,7 @@ class ConnectionStream final : public httplib::Stream {
   socket_t sock_;
   ConnectionLimits limits_;
   const WorkerLoad& load_;
+  std::function<bool()> stopping_;
   std::vector<char> buffer_;
   std::size_t buffer_begin_ = 0, buffer_end_ = 0;
   bool in_head_ = false;

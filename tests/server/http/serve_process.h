@@ -59,14 +59,20 @@ class ServeProcess {
       if (at != std::string::npos) port_ = std::stoi(text.substr(at + marker.size()));
     }
   }
-  ~ServeProcess() {
+  ~ServeProcess() { stop(); }
+  ServeProcess(const ServeProcess&) = delete;
+  ServeProcess& operator=(const ServeProcess&) = delete;
+
+  // SIGTERM, then waits for the process to end; returns how long that took.
+  std::chrono::duration<double> stop() {
+    const auto start = std::chrono::steady_clock::now();
     if (pid_ > 0) {
       ::kill(pid_, SIGTERM);
       ::waitpid(pid_, nullptr, 0);
+      pid_ = -1;
     }
+    return std::chrono::steady_clock::now() - start;
   }
-  ServeProcess(const ServeProcess&) = delete;
-  ServeProcess& operator=(const ServeProcess&) = delete;
 
   // 0 when the server did not start within 60 s.
   int port() const { return port_; }

@@ -2,7 +2,8 @@
 // `clearsky serve`: while 70 slowloris connections, 200 idle keep-alive connections or 70 slow
 // readers of a large skydome hold connections, /healthz on a new connection is answered within
 // 1 s, during the attack and after it. The limits themselves: idle connections are released when
-// workers are scarce, a request head has a deadline, an answer read too slowly is cut.
+// workers are scarce, a request head has a deadline, an answer read too slowly is cut, and a
+// stopping server does not wait for the heads and idle connections it holds.
 #include <gtest/gtest.h>
 #include <poll.h>
 
@@ -73,6 +74,18 @@ TEST(Starvation, SlowReadersOfALargeSkydomeLeaveHealthzAnswered) {
 TEST(Starvation, IdleConnectionsAreReleasedWhenWorkersAreScarce) {
   // 8 workers for 20 keep-alive connections: each is served, then let go at once.
   expect_no_starvation({"--threads", "8", "--max-queued", "32"}, Kind::idle_keep_alive, 20);
+}
+
+TEST(Starvation, TheServerStopsPromptlyWhileHeadsAreIncomplete) {
+  clearsky::testing::TempDir dir;
+  ServeProcess server(dir.path, {});
+  ASSERT_GT(server.port(), 0) << server.log();
+  HostileClients slowloris(Kind::slowloris, server.port(), 10);
+  HostileClients idle(Kind::idle_keep_alive, server.port(), 10);
+  ASSERT_EQ(slowloris.connected() + idle.connected(), 20u);
+  std::this_thread::sleep_for(500ms);
+  // Not after the head deadline (10 s) or the keep-alive timeout (5 s).
+  EXPECT_LT(server.stop().count(), 4.0);
 }
 
 // Reads from fd until the server closes the connection (or `limit` passes); returns the bytes
