@@ -220,9 +220,12 @@ void HttpServer::send(const httplib::Request& req, httplib::Response& res,
                       api::ApiResponse response) {
   // Answers without a cache policy (errors, refusals) are never stored.
   if (!response.header("Cache-Control")) response.headers.emplace_back("Cache-Control", "no-store");
-  const std::string origin = req.get_header_value("Origin");
-  cors_.add_headers(
-      req.has_header("Origin") ? std::optional<std::string_view>(origin) : std::nullopt, response);
+  if (cors_.enabled()) {
+    const std::string origin = req.get_header_value("Origin");
+    cors_.add_headers(
+        req.has_header("Origin") ? std::optional<std::string_view>(origin) : std::nullopt,
+        response);
+  }
   res.status = response.status;
   for (const auto& [name, value] : response.headers) res.set_header(name, value);
   current_request.model = response.model_id;
@@ -285,8 +288,10 @@ void HttpServer::install() {
   s.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
     begin_request(req);
     const api::RouteMatch& match = current_request.match;
+    const bool is_chunked = chunked(req);
+    const bool pending = is_chunked || req.get_header_value<std::uint64_t>("Content-Length") > 0;
     const auto refuse = [&](api::ApiResponse response) {
-      current_request.unread_body = body_pending(req);
+      current_request.unread_body = pending;
       send(req, res, std::move(response));
       return HandlerResponse::Handled;
     };
@@ -295,8 +300,9 @@ void HttpServer::install() {
     // POST routes read (or drain) their body under their own limit; other bodies would be
     // buffered whole by cpp-httplib up to the upload limit: refused above the payload limit.
     const bool reads_body = match.route != nullptr && match.route->method == "POST";
-    if (!reads_body && (chunked(req) || req.get_header_value<std::uint64_t>("Content-Length") >
-                                            config_.payload_max_bytes)) {
+    if (!reads_body &&
+        (is_chunked || (pending && req.get_header_value<std::uint64_t>("Content-Length") >
+                                       config_.payload_max_bytes))) {
       api::ApiResponse response =
           api::error_response(body_too_large(config_.payload_max_bytes, "the request body"));
       response.headers.emplace_back("Connection", "close");
@@ -316,7 +322,7 @@ void HttpServer::install() {
     if (match.route->needs_token && !auth_->allows(req.get_header_value("Authorization")))
       return refuse(refuse_write(*auth_, req));
     // cpp-httplib reads no body of a GET (or HEAD): a small one left there ends the connection.
-    current_request.unread_body = match.route->method == "GET" && body_pending(req);
+    current_request.unread_body = match.route->method == "GET" && pending;
     return HandlerResponse::Unhandled;
   });
 
