@@ -65,5 +65,19 @@ TEST(ParseCoordinates, RangeAndMalformedInputNameTheParameter) {
   }
 }
 
+// A colon after a seconds component, or a fourth colon, made GeographicLib write past its
+// arrays and crash the server (found by fuzz/coordinates_fuzz.cpp): refused before it is read,
+// while the colon forms D:M and D:M:S stay accepted.
+TEST(ParseCoordinates, ColonAfterSecondsIsRefusedNotCrashing) {
+  const auto lat = [](const std::string& t) { return parse_latitude(t, "lat"); };
+  for (const char* bad : {"4\"1:1:d", "4\"1:1", "1:2:3:4", "1:2:3:4:5", "1d2:3:4", "1'2:3",
+                          "4\xe2\x80\xb3"
+                          "1:1"})
+    EXPECT_EQ(rejected_parameter(lat, bad), "lat") << bad;
+  EXPECT_NEAR(parse_latitude("42:26:36.4N"), 42.0 + 26.0 / 60 + 36.4 / 3600, 1e-12);
+  EXPECT_NEAR(parse_latitude("-42:30"), -42.5, 1e-12);
+  EXPECT_NEAR(parse_longitude("W76:28"), -(76.0 + 28.0 / 60), 1e-12);
+}
+
 }  // namespace
 }  // namespace clearsky::api
