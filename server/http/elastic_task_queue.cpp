@@ -32,7 +32,10 @@ void ElasticTaskQueue::start_worker() {
   ++idle_;
 }
 
-void ElasticTaskQueue::publish() { load_.set(busy_, tasks_.size()); }
+void ElasticTaskQueue::publish() {
+  // Queued tasks that an idle worker is about to take do not wait for one.
+  load_.set(busy_, tasks_.size() > idle_ ? tasks_.size() - idle_ : 0);
+}
 
 void ElasticTaskQueue::enqueue(std::function<void()> task) {
   std::unique_lock lock(mutex_);

@@ -1,5 +1,6 @@
 // How busy the HTTP workers are, shared by the worker pool (which updates it) and the
-// connections (which read it): workers are scarce when connections wait for one, or when
+// connections (which read it): workers are scarce when connections wait for one (queued and no
+// idle worker to take them), or when
 // fewer than `reserve` workers are left below the cap. While they are scarce, connections
 // that hold a worker without a request in progress let it go (docs/deployment.md "Limits in
 // the server"): idle keep-alive connections close, answers carry `Connection: close`, and a
