@@ -6,11 +6,11 @@
 #   fuzz/run.sh --build                         build only
 #
 # TARGET is a program's name without _fuzz (api_routes, kider_archive, ...); all by default.
-# The build is build-fuzz/ (clang with ASan + UBSan + libFuzzer, ccache when present); what the
-# fuzzer learns goes to build-fuzz/fuzz-work/TARGET (the committed seeds in fuzz/corpus/ are
-# only read), crashes to build-fuzz/fuzz-artifacts/, logs to build-fuzz/fuzz-logs/. Exits
-# non-zero when a program finds anything; the summary lists executions, coverage (cov, ft)
-# and findings per program.
+# The build is build-fuzz/, or $CLEARSKY_FUZZ_BUILD_DIR (clang with ASan + UBSan + libFuzzer,
+# ccache when present). What the fuzzer learns goes to BUILD/fuzz-work/TARGET (the committed
+# seeds in fuzz/corpus/ are only read), crashes to BUILD/fuzz-artifacts/, logs to
+# BUILD/fuzz-logs/. Exits non-zero when a program finds anything; the summary lists
+# executions, coverage (cov, ft) and findings per program.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -27,7 +27,7 @@ case "$mode" in
     ;;
   --build) ;;
   *)
-    sed -n '2,14p' "$0" >&2
+    sed -n '2,13p' "$0" >&2
     exit 2
     ;;
 esac
@@ -40,7 +40,7 @@ targets=("$@")
 # project's dependencies.
 deploy/install-deps.sh
 
-build=build-fuzz
+build=${CLEARSKY_FUZZ_BUILD_DIR:-build-fuzz}
 launcher=()
 command -v ccache >/dev/null 2>&1 && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 # -O1 with line tables: quick to build, fast enough to fuzz, readable reports.

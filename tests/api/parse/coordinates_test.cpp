@@ -79,5 +79,20 @@ TEST(ParseCoordinates, ColonAfterSecondsIsRefusedNotCrashing) {
   EXPECT_NEAR(parse_longitude("W76:28"), -(76.0 + 28.0 / 60), 1e-12);
 }
 
+// GeographicLib alone reads the 'e' of an exponent as East and its sign as a second term:
+// "1e-05" was -4 degrees, and a JSON body's 0.00001 reaches the parser as
+// "1.0000000000000001e-05" (found by fuzz/coordinates_fuzz.cpp).
+TEST(ParseCoordinates, ExponentsAreNumbersNotHemispheres) {
+  EXPECT_DOUBLE_EQ(parse_longitude("1e-05"), 1e-05);
+  EXPECT_DOUBLE_EQ(parse_longitude("1.0000000000000001e-05"), 1.0000000000000001e-05);
+  EXPECT_DOUBLE_EQ(parse_latitude("2.7777777777777779e-05"), 2.7777777777777779e-05);
+  EXPECT_DOUBLE_EQ(parse_latitude(" -1.5E+01 "), -15.0);
+  EXPECT_DOUBLE_EQ(parse_longitude("+1e2"), 100.0);
+  EXPECT_DOUBLE_EQ(parse_longitude("12E"), 12.0);  // a hemisphere letter still is one
+  const auto lon = [](const std::string& t) { return parse_longitude(t, "lon"); };
+  for (const char* bad : {"2e-3W", "1e-5d", "1e999", "1.5e+01'"})
+    EXPECT_EQ(rejected_parameter(lon, bad), "lon") << bad;
+}
+
 }  // namespace
 }  // namespace clearsky::api
