@@ -11,7 +11,7 @@ packages=(
   prometheus-cpp-dev libspdlog-dev libcli11-dev libnlopt-cxx-dev
   libhowardhinnant-date-dev tzdata libxxhash-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  wrk curl python3
+  wrk curl python3 haproxy
   python3-jsonschema
   # The fuzz programs (fuzz/run.sh, docs/fuzzing.md): clang 14 with its sanitizer and libFuzzer
   # runtimes; ccache keeps their rebuilds short.

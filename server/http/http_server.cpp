@@ -12,7 +12,7 @@
 
 #include "api/http/cache_policy.h"
 #include "api/routes/route_match.h"
-#include "server/http/bounded_task_queue.h"
+#include "server/http/connection_server.h"
 #include "server/http/request_body.h"
 
 namespace clearsky::server {
@@ -129,6 +129,28 @@ std::shared_ptr<spdlog::logger> access_logger() {
   return logger;
 }
 
+// The time limits of a connection (docs/deployment.md "Limits in the server").
+ConnectionLimits connection_limits(const ServerConfig& config) {
+  using std::chrono::seconds;
+  ConnectionLimits limits;
+  limits.read_timeout = seconds(config.read_timeout_s);
+  limits.write_timeout = seconds(config.write_timeout_s);
+  limits.keep_alive_timeout = seconds(config.keep_alive_timeout_s);
+  limits.head_timeout = seconds(config.request_head_timeout_s);
+  limits.min_send_rate_bytes_per_s = config.min_send_rate_bytes;
+  limits.send_rate_grace = seconds(config.send_rate_grace_s);
+  return limits;
+}
+
+// Workers grow on demand up to the cap; connections beyond it wait in a bounded queue.
+ElasticTaskQueue::Options worker_pool(const ServerConfig& config) {
+  config.check_connection_slots();
+  ElasticTaskQueue::Options pool;
+  pool.max_workers = config.worker_threads();
+  pool.max_queued = config.max_queued;
+  return pool;
+}
+
 }  // namespace
 
 HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& metrics)
@@ -142,10 +164,7 @@ HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& 
                [this] { return metrics_.scrape(tables_.table_bytes()); },
                config.retry_after_s,
                [](const std::string& message) { spdlog::warn("{}", message); }},
-      http_(std::make_unique<httplib::Server>()) {
-  const unsigned workers = config_.worker_threads();
-  const std::size_t queued = config_.max_queued;
-  http_->new_task_queue = [workers, queued] { return new BoundedTaskQueue(workers, queued); };
+      http_(std::make_unique<ConnectionServer>(connection_limits(config), worker_pool(config))) {
   // The library's one limit is the largest body any route takes (an upload); the other routes
   // apply payload_max_bytes themselves (request_body.h and the pre-routing handler).
   http_->set_payload_max_length(config_.body_limit_bytes());
