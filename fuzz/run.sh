@@ -2,7 +2,7 @@
 # Builds and runs the libFuzzer programs of fuzz/ (docs/fuzzing.md).
 #
 #   fuzz/run.sh --smoke [TARGET...]             every seed once, then 10 s of mutation each
-#   fuzz/run.sh --campaign MINUTES [TARGET...]  MINUTES of mutation each (10 or more advised)
+#   fuzz/run.sh --campaign [MINUTES] [TARGET...]  MINUTES (default 10) of mutation each
 #   fuzz/run.sh --build                         build only
 #
 # TARGET is a program's name without _fuzz (api_routes, kider_archive, ...); all by default.
@@ -21,8 +21,11 @@ seconds=10
 case "$mode" in
   --smoke) ;;
   --campaign)
-    minutes=${1:?"--campaign needs MINUTES"}
-    shift
+    minutes=10
+    if [[ "${1:-}" =~ ^[0-9]+$ ]]; then
+      minutes=$1
+      shift
+    fi
     seconds=$((minutes * 60))
     ;;
   --build) ;;
