@@ -15,18 +15,21 @@ constexpr std::pair<std::string_view, std::string_view> kSolarFieldParameters[] 
     {"delta_t_s", "delta_t"},    {"delta_ut1_s", "delta_ut1"},
 };
 
+// A JSON body's member named "" is the one parameter without a name (the HTTP layer drops a
+// query parameter without one); an empty name would be written as no parameter (null), so it
+// is named as the body (found by fuzz/api_routes_fuzz.cpp).
+std::string named(const std::string& parameter) { return parameter.empty() ? "body" : parameter; }
+
 }  // namespace
 
 ApiError invalid_parameter(const std::string& parameter, const std::string& message) {
-  return ApiError::about(400, "invalid_parameter", parameter, message);
+  return ApiError::about(400, "invalid_parameter", named(parameter),
+                         parameter.empty() ? "a member named \"\": " + message : message);
 }
 
 ApiError unknown_parameter(const std::string& parameter, const std::string& endpoint) {
-  // A JSON body's member named "" is the one parameter without a name (the HTTP layer drops
-  // a query parameter without one); an empty name would be written as no parameter (null), so
-  // it is named as the body (found by fuzz/api_routes_fuzz.cpp).
   if (parameter.empty())
-    return ApiError::about(400, "unknown_parameter", "body",
+    return ApiError::about(400, "unknown_parameter", named(parameter),
                            "a member named \"\" is not a parameter of " + endpoint);
   return ApiError::about(400, "unknown_parameter", parameter,
                          "not a parameter of " + endpoint + " (or not used by this request)");

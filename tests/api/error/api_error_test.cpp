@@ -26,5 +26,14 @@ TEST(UnknownParameter, AMemberWithoutANameIsTheBodys) {
   EXPECT_EQ(body["error"]["code"], "unknown_parameter");
 }
 
+// The same member with an object for its value: refused as invalid, naming the body.
+TEST(InvalidParameter, AMemberWithoutANameIsTheBodys) {
+  EXPECT_EQ(invalid_parameter("lat", "out of range").parameter(), "lat");
+  const ApiError e = invalid_parameter("", "must be a string, a number or a boolean");
+  EXPECT_EQ(e.parameter(), "body");
+  const nlohmann::json body = nlohmann::json::parse(error_response(e).body);
+  EXPECT_EQ(body["error"]["parameter"], "body");
+}
+
 }  // namespace
 }  // namespace clearsky::api
