@@ -2,7 +2,7 @@
 # Builds and runs the libFuzzer programs of fuzz/ (docs/fuzzing.md).
 #
 #   fuzz/run.sh --smoke [TARGET...]             every seed once, then 10 s of mutation each
-#   fuzz/run.sh --campaign MINUTES [TARGET...]  MINUTES of mutation each (10 or more advised)
+#   fuzz/run.sh --campaign [MINUTES] [TARGET...]  MINUTES (default 10) of mutation each
 #   fuzz/run.sh --build                         build only
 #
 # TARGET is a program's name without _fuzz (api_routes, kider_archive, ...); all by default.
@@ -21,8 +21,11 @@ seconds=10
 case "$mode" in
   --smoke) ;;
   --campaign)
-    minutes=${1:?"--campaign needs MINUTES"}
-    shift
+    minutes=10
+    if [[ "${1:-}" =~ ^[0-9]+$ ]]; then
+      minutes=$1
+      shift
+    fi
     seconds=$((minutes * 60))
     ;;
   --build) ;;
@@ -43,6 +46,9 @@ deploy/install-deps.sh
 build=${CLEARSKY_FUZZ_BUILD_DIR:-build-fuzz}
 launcher=()
 command -v ccache >/dev/null 2>&1 && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+# ccache shares the objects between clones and build folders: paths relative to the root, and
+# the folder not hashed for the debug information.
+export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
 # -O1 with line tables: quick to build, fast enough to fuzz, readable reports.
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
   -DCMAKE_CXX_COMPILER=clang++ -DCLEARSKY_FUZZ=ON -DCLEARSKY_PCH=OFF \
@@ -62,34 +68,52 @@ max_len() {
   esac
 }
 
-mkdir -p "$build/fuzz-work" "$build/fuzz-artifacts" "$build/fuzz-logs"
-summary=()
-failed=0
-for target in "${targets[@]}"; do
-  work="$build/fuzz-work/$target"
-  log="$build/fuzz-logs/$target.log"
+# One program: its log, and its summary line and exit status next to the log.
+run_target() {
+  local target=$1 work="$build/fuzz-work/$1" log="$build/fuzz-logs/$1.log" status=0
   mkdir -p "$work"
-  options=(-max_total_time="$seconds" -max_len="$(max_len "$target")" -timeout=10
+  local options=(-max_total_time="$seconds" -max_len="$(max_len "$target")" -timeout=10
     -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$build/fuzz-artifacts/$target-")
   [ -f "fuzz/dictionaries/$target.dict" ] && options+=(-dict="fuzz/dictionaries/$target.dict")
-  echo "fuzz: $target for ${seconds} s (log $log)"
-  status=0
   UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     "$build/fuzz/${target}_fuzz" "${options[@]}" "$work" "fuzz/corpus/$target" >"$log" 2>&1 ||
     status=$?
+  local runs last cov ft result
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
-  last=$(grep -E '^#[0-9]+' "$log" | tail -1 || true)
+  last=$(grep -aE '^#[0-9]+' "$log" | tail -1 || true)
   cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$last")
   ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$last")
   if [ "$status" -eq 0 ]; then
     result="no finding"
   else
+    result="FINDING (exit $status): $(grep -a -m1 -E 'ERROR:|FUZZ INVARIANT|runtime error' "$log" || echo see log)"
+  fi
+  printf '%-14s %10s runs  cov %-6s ft %-6s %s\n' "$target" "${runs:-?}" "${cov:-?}" "${ft:-?}" \
+    "$result" >"$log.summary"
+  echo "$status" >"$log.status"
+}
+
+# The smoke run uses every core (the programs are single-threaded); a campaign runs one
+# program at a time unless CLEARSKY_FUZZ_JOBS says otherwise.
+parallel=${CLEARSKY_FUZZ_JOBS:-1}
+[ "$mode" = "--smoke" ] && parallel=${CLEARSKY_FUZZ_JOBS:-$(nproc)}
+mkdir -p "$build/fuzz-work" "$build/fuzz-artifacts" "$build/fuzz-logs"
+for target in "${targets[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$parallel" ]; do wait -n || true; done
+  echo "fuzz: $target for ${seconds} s (log $build/fuzz-logs/$target.log)"
+  run_target "$target" &
+done
+wait
+failed=0
+echo "fuzz summary (${seconds} s each, root $root):"
+for target in "${targets[@]}"; do
+  log="$build/fuzz-logs/$target.log"
+  printf '  %s' "$(cat "$log.summary")"
+  echo
+  if [ "$(cat "$log.status")" != 0 ]; then
     failed=1
-    result="FINDING (exit $status): $(grep -m1 -E 'ERROR:|FUZZ INVARIANT|runtime error|deadly signal' "$log" || echo see log)"
+    echo "---- $log (end)" >&2
     tail -40 "$log" >&2
   fi
-  summary+=("$(printf '%-14s %10s runs  cov %-6s ft %-6s %s' "$target" "${runs:-?}" "${cov:-?}" "${ft:-?}" "$result")")
 done
-echo "fuzz summary (${seconds} s each, root $root):"
-printf '  %s\n' "${summary[@]}"
 exit "$failed"
