@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# Builds and runs the libFuzzer programs of fuzz/ (docs/fuzzing.md).
+#
+#   fuzz/run.sh --smoke [TARGET...]             every seed once, then 10 s of mutation each
+#   fuzz/run.sh --campaign MINUTES [TARGET...]  MINUTES of mutation each (10 or more advised)
+#   fuzz/run.sh --build                         build only
+#
+# TARGET is a program's name without _fuzz (api_routes, kider_archive, ...); all by default.
+# The build is build-fuzz/, or $CLEARSKY_FUZZ_BUILD_DIR (clang with ASan + UBSan + libFuzzer,
+# ccache when present). What the fuzzer learns goes to BUILD/fuzz-work/TARGET (the committed
+# seeds in fuzz/corpus/ are only read), crashes to BUILD/fuzz-artifacts/, logs to
+# BUILD/fuzz-logs/. Exits non-zero when a program finds anything; the summary lists
+# executions, coverage (cov, ft) and findings per program.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+
+mode=${1:-}
+shift || true
+seconds=10
+case "$mode" in
+  --smoke) ;;
+  --campaign)
+    minutes=${1:?"--campaign needs MINUTES"}
+    shift
+    seconds=$((minutes * 60))
+    ;;
+  --build) ;;
+  *)
+    sed -n '2,13p' "$0" >&2
+    exit 2
+    ;;
+esac
+
+all_targets=(api_routes kider_archive iso8601_time cron_schedule coordinates table_cache sample_blob)
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
+
+# clang, its sanitizer and fuzzer runtimes (libclang-rt-14-dev) and ccache come with the
+# project's dependencies.
+deploy/install-deps.sh
+
+build=${CLEARSKY_FUZZ_BUILD_DIR:-build-fuzz}
+launcher=()
+command -v ccache >/dev/null 2>&1 && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+# -O1 with line tables: quick to build, fast enough to fuzz, readable reports.
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+  -DCMAKE_CXX_COMPILER=clang++ -DCLEARSKY_FUZZ=ON -DCLEARSKY_PCH=OFF \
+  -DCLEARSKY_BUILD_BENCHMARKS=OFF -DCLEARSKY_BUILD_ACCURACY_TESTS=OFF "${launcher[@]}" >/dev/null
+cmake --build "$build" -j "$(nproc)" --target "${targets[@]/%/_fuzz}"
+[ "$mode" = "--build" ] && exit 0
+
+# The longest input each program is given: an HTTP request with a small body; an archive as
+# large as the seed archives; short texts; a few small tables.
+max_len() {
+  case "$1" in
+    api_routes) echo 8192 ;;
+    kider_archive) echo 65536 ;;
+    table_cache) echo 32768 ;;
+    sample_blob) echo 4096 ;;
+    *) echo 256 ;;
+  esac
+}
+
+mkdir -p "$build/fuzz-work" "$build/fuzz-artifacts" "$build/fuzz-logs"
+summary=()
+failed=0
+for target in "${targets[@]}"; do
+  work="$build/fuzz-work/$target"
+  log="$build/fuzz-logs/$target.log"
+  mkdir -p "$work"
+  options=(-max_total_time="$seconds" -max_len="$(max_len "$target")" -timeout=10
+    -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$build/fuzz-artifacts/$target-")
+  [ -f "fuzz/dictionaries/$target.dict" ] && options+=(-dict="fuzz/dictionaries/$target.dict")
+  echo "fuzz: $target for ${seconds} s (log $log)"
+  status=0
+  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    "$build/fuzz/${target}_fuzz" "${options[@]}" "$work" "fuzz/corpus/$target" >"$log" 2>&1 ||
+    status=$?
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  last=$(grep -E '^#[0-9]+' "$log" | tail -1 || true)
+  cov=$(sed -n 's/.* cov: \([0-9]*\).*/\1/p' <<<"$last")
+  ft=$(sed -n 's/.* ft: \([0-9]*\).*/\1/p' <<<"$last")
+  if [ "$status" -eq 0 ]; then
+    result="no finding"
+  else
+    failed=1
+    result="FINDING (exit $status): $(grep -m1 -E 'ERROR:|FUZZ INVARIANT|runtime error|deadly signal' "$log" || echo see log)"
+    tail -40 "$log" >&2
+  fi
+  summary+=("$(printf '%-14s %10s runs  cov %-6s ft %-6s %s' "$target" "${runs:-?}" "${cov:-?}" "${ft:-?}" "$result")")
+done
+echo "fuzz summary (${seconds} s each, root $root):"
+printf '  %s\n' "${summary[@]}"
+exit "$failed"
