@@ -40,6 +40,8 @@ std::vector<ModelFactory> served_models(const std::vector<std::string>& ids) {
 }
 
 void run_server(const server::ServerConfig& config, const std::string& software_version) {
+  // Before anything starts: too many connection slots for cpp-httplib's select(2).
+  config.check_connection_slots();
   // Signals are taken by one thread with sigwait (a handler may not call into the server).
   sigset_t signals;
   sigemptyset(&signals);
