@@ -11,8 +11,11 @@ packages=(
   prometheus-cpp-dev libspdlog-dev libcli11-dev libnlopt-cxx-dev
   libhowardhinnant-date-dev tzdata libxxhash-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  wrk curl python3
+  wrk curl python3 haproxy
   python3-jsonschema
+  # The fuzz programs (fuzz/run.sh, docs/fuzzing.md): clang 14 with its sanitizer and libFuzzer
+  # runtimes; ccache keeps their rebuilds short.
+  clang libclang-rt-14-dev ccache
 )
 # The OpenAPI linter (docs/openapi.md) runs on node and npm: Debian's, unless the machine
 # already has a node with its npm (another distribution's nodejs package ships both).

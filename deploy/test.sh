@@ -27,3 +27,9 @@ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCLEARSKY_SANITIZE=O
 cmake --build build-asan -j "$jobs"
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --output-on-failure -j "$jobs" -L unit --timeout 1200)
+
+# The fuzz programs' smoke run (fuzz/run.sh, docs/fuzzing.md), after the suite: a clang build
+# of their own (ccache), every committed seed, then 10 s of mutation per program.
+if command -v clang++ >/dev/null 2>&1; then
+  fuzz/run.sh --smoke
+fi

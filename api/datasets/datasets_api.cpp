@@ -6,6 +6,7 @@
 #include "api/encode/iso8601_time.h"
 #include "api/error/api_error.h"
 #include "models/core/numeric.h"
+#include "storage/importers/import_conflict.h"
 #include "storage/importers/kider_format.h"
 #include "storage/importers/kider_importer.h"
 #include "storage/repositories/capture_repository.h"
@@ -127,18 +128,17 @@ nlohmann::ordered_json import_dataset(
   storage::ImportReport report;
   try {
     report = storage::import_kider(db, request);
-  } catch (const storage::KiderFormatError& e) {
-    throw ApiError(400, "invalid_archive", "", e.what());
+  } catch (const storage::ImportConflict& e) {
+    // A label already held with other content, or the dataset's format differs.
+    throw ApiError(409, "conflict", "", e.what());
   } catch (const storage::SqliteError&) {
     throw;
   } catch (const std::invalid_argument& e) {
-    // A label already held with other content, or the dataset's format differs.
-    throw ApiError(409, "conflict", "", e.what());
+    // An incomplete or mixed-up capture, no files.
+    throw ApiError(400, "invalid_archive", "", e.what());
   } catch (const std::runtime_error& e) {
-    const std::string message = e.what();
-    if (message.find("different content") != std::string::npos)
-      throw ApiError(409, "conflict", "", message);
-    throw ApiError(400, "invalid_archive", "", message);
+    // KiderFormatError, or an archive libarchive cannot read.
+    throw ApiError(400, "invalid_archive", "", e.what());
   }
   return import_report_json(report);
 }

@@ -32,6 +32,16 @@ nlohmann::ordered_json float_to_json(float value) {
   return shortest;
 }
 
+nlohmann::ordered_json sample_handling_to_json(const std::vector<storage::SampleHandling>& stored,
+                                               std::string_view handling) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const storage::SampleHandling& h : stored) {
+    if (h.handling != handling) continue;
+    out.push_back({{"reason", h.reason}, {"count", h.indices.size()}, {"samples", h.indices}});
+  }
+  return out;
+}
+
 nlohmann::ordered_json samples_to_json(const storage::SampleErrorTable& samples,
                                        SampleDetail detail) {
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
@@ -59,15 +69,30 @@ nlohmann::ordered_json evaluation_to_json(const EvaluationReport& report, Sample
     const EvaluationResult& r = run.result;
     nlohmann::ordered_json captures = nlohmann::ordered_json::array();
     for (const CaptureEvaluation& c : r.captures) {
-      nlohmann::ordered_json capture = {{"time", c.time_iso},
-                                        {"sun_zenith", finite(c.sun_zenith_deg, "sun zenith")},
-                                        {"sun_azimuth", finite(c.sun_azimuth_deg, "sun azimuth")},
-                                        {"rmse", finite(c.rmse, "capture RMSE")}};
+      const auto handling = stored_sample_handling(c);
+      nlohmann::ordered_json capture = {
+          {"time", c.time_iso},
+          {"sun_zenith", finite(c.sun_zenith_deg, "sun zenith")},
+          {"sun_azimuth", finite(c.sun_azimuth_deg, "sun azimuth")},
+          {"rmse", c.answered() ? nlohmann::ordered_json(finite(c.rmse, "capture RMSE"))
+                                : nlohmann::ordered_json(nullptr)},
+          {"samples_compared", c.samples.size()},
+          {"excluded", sample_handling_to_json(handling, "excluded")},
+          {"clamped", sample_handling_to_json(handling, "clamped")}};
       if (samples != SampleDetail::none)
-        capture["samples"] = samples_to_json(stored_sample_errors(c), samples);
+        capture["samples"] =
+            samples_to_json(stored_sample_errors(c, r.wavelengths_nm.size()), samples);
       captures.push_back(std::move(capture));
     }
-    nlohmann::ordered_json model = {{"model", r.model_id}, {"rmse", finite(r.rmse, "RMSE")}};
+    nlohmann::ordered_json model = {
+        {"model", r.model_id},
+        {"rmse", r.samples_compared == 0 ? nlohmann::ordered_json(nullptr)
+                                         : nlohmann::ordered_json(finite(r.rmse, "RMSE"))},
+        {"out_of_domain", to_string(report.out_of_domain)},
+        {"samples_compared", r.samples_compared},
+        {"samples_excluded", r.samples_excluded},
+        {"samples_clamped", r.samples_clamped},
+        {"captures_unanswered", r.captures_unanswered}};
     if (samples == SampleDetail::spectra) model["wavelengths_nm"] = r.wavelengths_nm;
     model["captures"] = std::move(captures);
     model["precompute_seconds"] = finite(r.precompute_seconds, "precompute time");

@@ -10,6 +10,11 @@
 // shortest decimal that reads back to the same float32), so that the CLI and the API
 // (GET /v1/evaluations/{id}?samples=...) print the same numbers. Errors: model - measured,
 // mW/(m2.sr.nm); angles in degrees, azimuth clockwise from North.
+// Samples the model could not answer (docs/data-api.md "Samples a model cannot answer"): each
+// model adds "out_of_domain" (exclude or clamp), "samples_compared" (what its RMSE covers),
+// "samples_excluded", "samples_clamped" and "captures_unanswered" (its RMSE is null when no
+// capture is answered); each capture adds "samples_compared", "excluded" and "clamped" ([{"reason",
+// "count", "samples": [scan indices]}], by reason), and an unanswered capture has "rmse": null.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -24,6 +29,9 @@ enum class SampleDetail { none, summary, spectra };
 // The "samples" array of one capture.
 nlohmann::ordered_json samples_to_json(const storage::SampleErrorTable& samples,
                                        SampleDetail detail);
+// The "excluded" (handling "excluded") or "clamped" array of one capture.
+nlohmann::ordered_json sample_handling_to_json(const std::vector<storage::SampleHandling>& stored,
+                                               std::string_view handling);
 // A float32 as the JSON number of its shortest round-tripping decimal (2.53f -> 2.53).
 nlohmann::ordered_json float_to_json(float value);
 

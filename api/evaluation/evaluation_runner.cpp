@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "api/request/sky_request.h"
+#include "models/core/invalid_input.h"
 #include "models/core/parallel.h"
 #include "models/evaluation/capture_preparation.h"
 #include "models/registry.h"
@@ -13,17 +14,39 @@
 
 namespace clearsky::api {
 
-storage::SampleErrorTable stored_sample_errors(const CaptureEvaluation& capture) {
+storage::SampleErrorTable stored_sample_errors(const CaptureEvaluation& capture,
+                                               std::size_t wavelength_count) {
   storage::SampleErrorTable table;
   const std::size_t n = capture.samples.size();
-  table.wavelength_count =
-      static_cast<std::uint32_t>(n == 0 ? 0 : capture.sample_errors.size() / n);
+  table.wavelength_count = static_cast<std::uint32_t>(wavelength_count);
   table.samples.reserve(n);
   for (const SampleEvaluation& s : capture.samples)
     table.samples.push_back({s.index, static_cast<float>(s.view_zenith_deg),
                              static_cast<float>(s.view_azimuth_deg), s.rmse, s.bias});
   table.errors.assign(capture.sample_errors.begin(), capture.sample_errors.end());
   return table;
+}
+
+std::vector<storage::SampleHandling> stored_sample_handling(const CaptureEvaluation& capture) {
+  std::vector<storage::SampleHandling> out;
+  const auto add = [&](const std::vector<OutOfDomainSamples>& lists, const char* handling) {
+    for (const OutOfDomainSamples& l : lists)
+      out.push_back({handling, std::string(to_string(l.reason)),
+                     std::vector<std::int32_t>(l.indices.begin(), l.indices.end())});
+  };
+  add(capture.excluded, "excluded");
+  add(capture.clamped, "clamped");
+  return out;
+}
+
+OutOfDomain out_of_domain_of(const nlohmann::json& parameters) {
+  if (!parameters.is_object() || !parameters.contains(kOutOfDomainParameter))
+    return OutOfDomain::exclude;
+  const nlohmann::json& value = parameters[kOutOfDomainParameter];
+  const auto handling =
+      value.is_string() ? out_of_domain_from_string(value.get<std::string>()) : std::nullopt;
+  if (!handling) throw InvalidInput(kOutOfDomainParameter, "must be \"exclude\" or \"clamp\"");
+  return *handling;
 }
 
 nlohmann::json parameters_for_model(const ModelDescriptor& descriptor,
@@ -118,8 +141,11 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
     transaction.commit();
   }
 
+  EvaluationOptions options = request.options;
+  options.out_of_domain = out_of_domain_of(request.parameters);
   EvaluationReport report;
   report.dataset = request.dataset;
+  report.out_of_domain = options.out_of_domain;
   report.min_wavelength_nm = request.options.min_wavelength_nm;
   report.max_wavelength_nm = request.options.max_wavelength_nm;
   storage::EvaluationRunRepository runs(db);
@@ -132,7 +158,11 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
     run.model_id = id;
     run.model_version = factory.descriptor->version;
     const ModelConfig config = config_for_model(*factory.descriptor, request.parameters);
-    run.parameters = parameters_for_model(*factory.descriptor, request.parameters).dump();
+    nlohmann::json applied = parameters_for_model(*factory.descriptor, request.parameters);
+    if (request.parameters.is_object() && request.parameters.contains(kOutOfDomainParameter))
+      applied[kOutOfDomainParameter] = request.parameters[kOutOfDomainParameter];
+    run.parameters = applied.dump();
+    run.out_of_domain = std::string(to_string(options.out_of_domain));
     run.configuration = config.canonical_string();
     run.software_version = request.software_version;
     run.min_wavelength_nm = request.options.min_wavelength_nm;
@@ -140,7 +170,7 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
     const std::int64_t run_id = runs.start(run);
     if (request.on_run_status) request.on_run_status(run_id, id, "running");
     try {
-      EvaluationResult result = evaluate_model(factory, config, captures, request.options);
+      EvaluationResult result = evaluate_model(factory, config, captures, options);
       std::vector<storage::RunCaptureResult> per_capture;
       for (std::size_t i = 0; i < result.captures.size(); ++i) {
         const CaptureEvaluation& c = result.captures[i];
@@ -149,8 +179,11 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
         r.sun_zenith_deg = c.sun_zenith_deg;
         r.sun_azimuth_deg = c.sun_azimuth_deg;
         r.rmse = c.rmse;
+        r.answered = c.answered();
         r.values_compared = static_cast<std::int64_t>(c.values_compared);
-        r.samples = stored_sample_errors(c);
+        r.samples_compared = static_cast<std::int64_t>(c.samples.size());
+        r.out_of_domain = stored_sample_handling(c);
+        r.samples = stored_sample_errors(c, result.wavelengths_nm.size());
         per_capture.push_back(std::move(r));
       }
       runs.finish(run_id, result.rmse, result.precompute_seconds, result.evaluate_seconds, steps,

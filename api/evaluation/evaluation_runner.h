@@ -7,6 +7,9 @@
 // gave them; each model gets those its descriptor lists (atmosphere parameters and options
 // alike) and nothing else, so that a parameter another requested model takes neither changes
 // this model's configuration (its cache key, its tables) nor is recorded on its run.
+// Samples a model cannot answer (models/evaluation/evaluate_model.h) are excluded or clamped as
+// the evaluation parameter "out_of_domain" says ("exclude", the default, or "clamp"; stored
+// with the run's parameters when given, docs/data-api.md "Samples a model cannot answer").
 // Thread-safety: uses the given Database from the calling thread only.
 #pragma once
 
@@ -20,6 +23,7 @@
 
 #include "models/core/sky_model.h"
 #include "models/evaluation/evaluate_model.h"
+#include "storage/repositories/compared_samples.h"
 #include "storage/repositories/sample_errors_blob.h"
 #include "storage/sqlite/database.h"
 
@@ -49,12 +53,24 @@ struct EvaluationReport {
   std::string dataset;
   double min_wavelength_nm = 360;
   double max_wavelength_nm = 720;
+  OutOfDomain out_of_domain = OutOfDomain::exclude;
   std::vector<ModelRun> models;  // in the order requested
 };
 
 // A capture's per-sample errors as they are stored with the run (sample_errors_blob.h): what
-// both the CLI's JSON and the API's answer are made of, so that the two agree to the bit.
-storage::SampleErrorTable stored_sample_errors(const CaptureEvaluation& capture);
+// both the CLI's JSON and the API's answer are made of, so that the two agree to the bit;
+// wavelength_count: the run's compared wavelengths (EvaluationResult::wavelengths_nm).
+storage::SampleErrorTable stored_sample_errors(const CaptureEvaluation& capture,
+                                               std::size_t wavelength_count);
+// A capture's excluded and clamped samples as they are stored with the run.
+std::vector<storage::SampleHandling> stored_sample_handling(const CaptureEvaluation& capture);
+
+// The name of the evaluation parameter that chooses what is done with the samples a model
+// cannot answer; it applies to every model and is no model's parameter.
+inline constexpr const char* kOutOfDomainParameter = "out_of_domain";
+// The handling the parameters choose (exclude when not given); throws std::invalid_argument
+// naming out_of_domain for a value that is not "exclude" or "clamp".
+OutOfDomain out_of_domain_of(const nlohmann::json& parameters);
 
 // The parameters among `parameters` that the model's descriptor lists (the others dropped).
 nlohmann::json parameters_for_model(const ModelDescriptor& descriptor,

@@ -61,11 +61,21 @@ nlohmann::json parse_evaluation_parameters(const nlohmann::json& parameters,
   if (!parameters.is_object())
     throw invalid_parameter("parameters", "must be an object of parameter names and numbers");
   for (const auto& [name, value] : parameters.items()) {
+    if (name == kOutOfDomainParameter) {
+      // What is done with samples a model cannot answer: an evaluation's, no model's, parameter.
+      try {
+        out_of_domain_of(parameters);
+      } catch (const std::invalid_argument& e) {
+        throw from_invalid_argument(e);
+      }
+      continue;
+    }
     const bool grass = name == "albedo" && value.is_string() && value.get<std::string>() == "grass";
     if (!grass && !value.is_number()) throw invalid_parameter(name, "must be a number");
   }
   if (models.empty()) return parameters;
   for (const auto& [name, value] : parameters.items()) {
+    if (name == kOutOfDomainParameter) continue;
     std::vector<const ModelFactory*> takers;
     for (const ModelFactory* model : models)
       if (model->descriptor->find_parameter(name) != nullptr) takers.push_back(model);
@@ -209,6 +219,7 @@ ListPage list_evaluations(storage::Database& db, const EvaluationFilter& filter)
          {"started", run.started_utc},
          {"finished", optional_value(run.finished_utc)},
          {"rmse", optional_number(run.rmse)},
+         {"samples_compared", optional_value(run.samples_compared)},
          {"job", optional_value(run.job_id)}});
   }
   if (runs.more) out.next_cursor = id_cursor(runs.rows.back().id);
@@ -247,8 +258,11 @@ nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_i
         {"time", format_iso8601_time(c.capture_time_utc_s, c.utc_offset_minutes)},
         {"sun_zenith", c.sun_zenith_deg},
         {"sun_azimuth", c.sun_azimuth_deg},
-        {"rmse", c.rmse},
-        {"values_compared", c.values_compared}};
+        {"rmse", c.answered ? nlohmann::ordered_json(c.rmse) : nlohmann::ordered_json(nullptr)},
+        {"values_compared", c.values_compared},
+        {"samples_compared", optional_value(c.samples_compared)},
+        {"excluded", sample_handling_to_json(c.out_of_domain, "excluded")},
+        {"clamped", sample_handling_to_json(c.out_of_domain, "clamped")}};
     if (options.samples != SampleDetail::none)
       capture["samples"] = c.samples ? samples_to_json(*c.samples, options.samples)
                                      : nlohmann::ordered_json(nullptr);
@@ -277,6 +291,11 @@ nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_i
   out["started"] = run->started_utc;
   out["finished"] = optional_value(run->finished_utc);
   out["rmse"] = optional_number(run->rmse);
+  out["out_of_domain"] = run->out_of_domain;
+  out["samples_compared"] = optional_value(run->samples_compared);
+  out["samples_excluded"] = optional_value(run->samples_excluded);
+  out["samples_clamped"] = optional_value(run->samples_clamped);
+  out["captures_unanswered"] = optional_value(run->captures_unanswered);
   out["timings"] = {{"precompute_seconds", optional_number(run->precompute_seconds)},
                     {"evaluate_seconds", optional_number(run->evaluate_seconds)}};
   out["processing_steps"] = std::move(steps);

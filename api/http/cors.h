@@ -21,6 +21,8 @@ class CorsPolicy {
   explicit CorsPolicy(std::vector<std::string> allowed_origins = {});
 
   bool allows(std::string_view origin) const;
+  // Whether any origin is configured (without one, no answer carries CORS headers).
+  bool enabled() const { return !origins_.empty(); }
   // Adds the CORS headers of an answer to a request from origin (none when absent or not
   // allowed; Vary: Origin whenever origins are configured, since the answer depends on it).
   // Adds nothing to an answer that has them already.

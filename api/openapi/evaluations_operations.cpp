@@ -20,6 +20,9 @@ Json schemas() {
   "EvaluationParameters": {
     "type": "object",
     "description": "The shared atmosphere parameters (alpha, beta, g, turbidity, albedo as a number or \"grass\", ...) and any option of a requested model, each applied to the models whose descriptor lists it and range-checked before queueing (GET /v1/models lists them).",
+    "properties": {
+      "out_of_domain": {"type": "string", "enum": ["exclude", "clamp"], "default": "exclude", "description": "Samples a model cannot answer (outside its fit domain, below its horizon, outside its wavelengths): left out of the RMSE and counted (exclude), or answered at the nearest point of the model's domain and counted (clamp)."}
+    },
     "additionalProperties": {
       "oneOf": [{"type": "number"}, {"type": "string", "enum": ["grass"]}]
     },
@@ -68,7 +71,7 @@ Json schemas() {
   },
   "EvaluationSummary": {
     "type": "object",
-    "required": ["id", "dataset", "model", "status", "started", "finished", "rmse", "job"],
+    "required": ["id", "dataset", "model", "status", "started", "finished", "rmse", "samples_compared", "job"],
     "additionalProperties": false,
     "properties": {
       "id": {"type": "integer", "minimum": 1},
@@ -78,6 +81,7 @@ Json schemas() {
       "started": {"type": "string", "format": "date-time"},
       "finished": {"type": "string", "format": "date-time", "nullable": true},
       "rmse": {"type": "number", "nullable": true, "description": "mW/(m2.sr.nm) over the run's wavelength range."},
+      "samples_compared": {"type": "integer", "minimum": 0, "nullable": true, "description": "The samples the RMSE covers; null for runs stored before it was kept."},
       "job": {"type": "integer", "nullable": true, "description": "The scheduled job that ran it."}
     }
   },
@@ -98,23 +102,37 @@ Json schemas() {
       "errors": {"type": "array", "items": {"type": "number"}, "description": "samples=spectra: model - measured at each of the run's wavelengths_nm."}
     }
   },
+  "SampleHandling": {
+    "type": "object",
+    "description": "Samples of a capture the model could not answer for one reason, and what was done with them.",
+    "required": ["reason", "count", "samples"],
+    "additionalProperties": false,
+    "properties": {
+      "reason": {"type": "string", "description": "The refusal: the parameter the model refused (e.g. sun_zenith outside the fit domain) and why."},
+      "count": {"type": "integer", "minimum": 1},
+      "samples": {"type": "array", "items": {"type": "integer", "minimum": 0}, "description": "Scan indices."}
+    }
+  },
   "EvaluationCapture": {
     "type": "object",
-    "required": ["label", "time", "sun_zenith", "sun_azimuth", "rmse", "values_compared"],
+    "required": ["label", "time", "sun_zenith", "sun_azimuth", "rmse", "values_compared", "samples_compared", "excluded", "clamped"],
     "additionalProperties": false,
     "properties": {
       "label": {"type": "string"},
       "time": {"type": "string", "format": "date-time"},
       "sun_zenith": {"type": "number"},
       "sun_azimuth": {"type": "number"},
-      "rmse": {"type": "number", "minimum": 0},
+      "rmse": {"type": "number", "minimum": 0, "nullable": true, "description": "null when the model could answer no sample of the capture (unanswered)."},
       "values_compared": {"type": "integer", "minimum": 0},
+      "samples_compared": {"type": "integer", "minimum": 0, "nullable": true, "description": "null for runs stored before it was kept."},
+      "excluded": {"type": "array", "items": {"$ref": "#/components/schemas/SampleHandling"}},
+      "clamped": {"type": "array", "items": {"$ref": "#/components/schemas/SampleHandling"}},
       "samples": {"type": "array", "nullable": true, "items": {"$ref": "#/components/schemas/SampleError"}, "description": "With samples=true or spectra; null for runs stored before per-sample errors were kept."}
     }
   },
   "Evaluation": {
     "type": "object",
-    "required": ["id", "dataset", "model", "model_version", "parameters", "software_version", "wavelength_range_nm", "job", "status", "error", "started", "finished", "rmse", "timings", "processing_steps", "captures", "history"],
+    "required": ["id", "dataset", "model", "model_version", "parameters", "software_version", "wavelength_range_nm", "job", "status", "error", "started", "finished", "rmse", "out_of_domain", "samples_compared", "samples_excluded", "samples_clamped", "captures_unanswered", "timings", "processing_steps", "captures", "history"],
     "additionalProperties": false,
     "properties": {
       "id": {"type": "integer", "minimum": 1},
@@ -131,6 +149,11 @@ Json schemas() {
       "started": {"type": "string", "format": "date-time"},
       "finished": {"type": "string", "format": "date-time", "nullable": true},
       "rmse": {"type": "number", "nullable": true},
+      "out_of_domain": {"type": "string", "enum": ["exclude", "clamp"], "description": "What was done with samples the model could not answer."},
+      "samples_compared": {"type": "integer", "minimum": 0, "nullable": true, "description": "The samples the RMSE covers (null for runs stored before it was kept); the history compares runs over the same samples only."},
+      "samples_excluded": {"type": "integer", "minimum": 0, "nullable": true},
+      "samples_clamped": {"type": "integer", "minimum": 0, "nullable": true},
+      "captures_unanswered": {"type": "integer", "minimum": 0, "nullable": true, "description": "Captures of which the model could answer no sample."},
       "timings": {
         "type": "object",
         "required": ["precompute_seconds", "evaluate_seconds"],
@@ -213,7 +236,7 @@ Json schemas() {
 const char* kJobExample =
     R"json({"id": 1, "name": "nightly", "schedule": "0 3 * * *", "dataset": "synthetic", "models": ["preetham", "hosek"], "parameters": {"turbidity": 3}, "paused": false, "created": "2026-11-23T19:42:24.655Z", "last_run": null, "next_run": "2026-11-24T03:00:00Z", "last_result": []})json";
 const char* kRunExample =
-    R"json({"id": 1, "dataset": "synthetic", "model": "preetham", "model_version": "1", "parameters": {"turbidity": 3}, "software_version": "0.1.0", "wavelength_range_nm": [360.0, 720.0], "job": null, "status": "succeeded", "error": null, "started": "2026-11-23T19:42:21.655Z", "finished": "2026-11-23T19:42:21.656Z", "rmse": 123.0398240797635, "timings": {"precompute_seconds": 3.9713e-05, "evaluate_seconds": 0.000182782}, "processing_steps": ["2013-05-27___11.45.00: sample 0 (zenith 77.8849 deg, azimuth 0.0000 deg) replaced by the mean of its ring neighbours 1 and 31", "2013-05-27___11.45.00: sun azimuth estimated from mirror symmetry: 116.077 deg (computed 136.077 deg, 201 candidates, +-20.0 deg in 0.20 deg steps)"], "captures": [{"label": "2013-05-27___11.45.00", "time": "2013-05-27T11:45:00-04:00", "sun_zenith": 26.651259213110777, "sun_azimuth": 116.07696990085265, "rmse": 123.0398240797635, "values_compared": 2511}], "history": {"previous_run": null, "previous_rmse": null, "rmse_changed": null}})json";
+    R"json({"id": 1, "dataset": "synthetic", "model": "preetham", "model_version": "1", "parameters": {"turbidity": 3}, "software_version": "0.1.0", "wavelength_range_nm": [360.0, 720.0], "job": null, "status": "succeeded", "error": null, "started": "2026-11-23T19:42:21.655Z", "finished": "2026-11-23T19:42:21.656Z", "rmse": 123.0398240797635, "out_of_domain": "exclude", "samples_compared": 81, "samples_excluded": 0, "samples_clamped": 0, "captures_unanswered": 0, "timings": {"precompute_seconds": 3.9713e-05, "evaluate_seconds": 0.000182782}, "processing_steps": ["2013-05-27___11.45.00: sample 0 (zenith 77.8849 deg, azimuth 0.0000 deg) replaced by the mean of its ring neighbours 1 and 31", "2013-05-27___11.45.00: sun azimuth estimated from mirror symmetry: 116.077 deg (computed 136.077 deg, 201 candidates, +-20.0 deg in 0.20 deg steps)"], "captures": [{"label": "2013-05-27___11.45.00", "time": "2013-05-27T11:45:00-04:00", "sun_zenith": 26.651259213110777, "sun_azimuth": 116.07696990085265, "rmse": 123.0398240797635, "values_compared": 2511, "samples_compared": 81, "excluded": [], "clamped": []}], "history": {"previous_run": null, "previous_rmse": null, "rmse_changed": null}})json";
 
 Json job_path_parameter() {
   return parse(
@@ -244,7 +267,7 @@ Json operations() {
         "headers": {"Link": {"$ref": "#/components/headers/Link"}},
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/EvaluationList"},
-          "example": [{"id": 1, "dataset": "synthetic", "model": "preetham", "status": "succeeded", "started": "2026-11-23T19:42:21.655Z", "finished": "2026-11-23T19:42:21.656Z", "rmse": 123.0398240797635, "job": null}]
+          "example": [{"id": 1, "dataset": "synthetic", "model": "preetham", "status": "succeeded", "started": "2026-11-23T19:42:21.655Z", "finished": "2026-11-23T19:42:21.656Z", "rmse": 123.0398240797635, "samples_compared": 81, "job": null}]
         }}
       },
       "400": {"description": "An unknown parameter, an invalid time, status or job."},

@@ -19,9 +19,14 @@ bool is_parameter(std::string_view segment) {
   return segment.size() > 2 && segment.front() == '{' && segment.back() == '}';
 }
 
-// Whether path matches pattern; fills parameters when given.
+// Whether path matches pattern; fills parameters when given. Every request is matched against
+// every row, so most rows are rejected by comparing the literal text before the first
+// parameter (the whole pattern when it has none) before any segment is split.
 bool matches(std::string_view pattern, std::string_view path, NameValues* parameters) {
   if (path.empty() || path.front() != '/') return false;
+  const std::size_t literal = pattern.find('{');
+  if (literal == std::string_view::npos) return path == pattern;
+  if (path.substr(0, literal) != pattern.substr(0, literal)) return false;
   std::size_t p = 0;
   std::size_t q = 0;
   while (p < pattern.size() && q < path.size()) {

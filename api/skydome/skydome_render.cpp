@@ -80,7 +80,10 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
   ModelConfig config = parse_config(p, *factory.descriptor);
   s->projection_name = p.choice("projection", {"fisheye", "latlong", "cubemap"}, "fisheye");
   const auto size_text = p.text("size");
-  long long size = 512;
+  // 512 pixels unless the server's limit is lower: the limit bounds every image, the default
+  // one included (a request without size ran past it; found by fuzz/api_routes_fuzz.cpp).
+  const long long largest_even = context.limits.max_skydome_size / 2 * 2;
+  long long size = largest_even < 512 ? largest_even : 512;
   if (size_text) {
     const double x = number_value("size", *size_text);
     if (x != std::floor(x) || x < 8) throw invalid_parameter("size", "must be an integer >= 8");

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "models/core/numeric.h"
 
@@ -263,7 +264,15 @@ inline Axis mu_axis_4d(double r, double mu, const Resolution& res, const ShellGe
     u = 0.5 - 0.5 / res.mu + ratio * (0.5 - 1.0 / res.mu);
   } else {
     // Ray to the sky: the distance to the top over its maximum rho + H.
-    u = 0.5 + 0.5 / res.mu + (-rmu + safe_sqrt(delta + h * h)) / (rho + h) * (0.5 - 1.0 / res.mu);
+    // delta + H^2 = Rt^2 - r^2 (1 - mu^2) is summed from terms of order r^2 (4e13 m^2), so it
+    // carries a rounding error of order r^2 x 1e-16: a ray grazing the top of the atmosphere
+    // (r = Rt, mu = 0) may come out a few 1e-4 m^2 below zero, which is zero (found by
+    // fuzz/table_cache_fuzz.cpp; safe_sqrt's check is for values clearly below zero).
+    const double to_top = delta + h * h;
+    const double rounding = 8.0 * std::numeric_limits<double>::epsilon() * r * r;
+    u = 0.5 + 0.5 / res.mu +
+        (-rmu + safe_sqrt(to_top > -rounding ? std::max(to_top, 0.0) : to_top)) / (rho + h) *
+            (0.5 - 1.0 / res.mu);
   }
   return texture_axis(u, res.mu);
 }

@@ -80,7 +80,9 @@ class Reader {
     std::uint64_t n = 0;
     if (!value(n) || n != expected || (in_.size() - pos_) / sizeof(T) < n) return false;
     v.resize(n);
-    std::memcpy(v.data(), in_.data() + pos_, n * sizeof(T));
+    // An empty array (the multiple-scattering table of one order) has no data(): memcpy must
+    // not be given its null pointer, even for no bytes.
+    if (n > 0) std::memcpy(v.data(), in_.data() + pos_, n * sizeof(T));
     pos_ += n * sizeof(T);
     return true;
   }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #if defined(__x86_64__) || defined(__i386__)
+#include <cpuid.h>
 #include <immintrin.h>
 #define CLEARSKY_BRUNETON_X86 1
 #endif
@@ -150,8 +151,11 @@ __attribute__((target("avx2,fma,f16c"))) void floats_to_halves_avx2(const float*
 
 bool cpu_has_avx2_f16c() {
   __builtin_cpu_init();
-  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
-         __builtin_cpu_supports("f16c");
+  // F16C from CPUID leaf 1 (ECX bit 29, <cpuid.h>'s bit_F16C): clang before 16 does not take
+  // "f16c" in __builtin_cpu_supports, and the fuzz build (docs/fuzzing.md) is clang 14's.
+  unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
+  const bool f16c = __get_cpuid(1, &eax, &ebx, &ecx, &edx) != 0 && (ecx & bit_F16C) != 0;
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && f16c;
 }
 #else
 bool cpu_has_avx2_f16c() { return false; }

@@ -281,7 +281,8 @@ Spectrum SkyModel::sky_irradiance_by_quadrature(const SunState& sun, const Viewp
     }
   }
   SpectralBatch radiance;
-  sky_radiance(sun, viewpoint, views, radiance);
+  radiance.resize(views.size(), wavelengths().size());
+  radiance_to_integrate(sun, viewpoint, views, radiance);
   Spectrum irradiance(wavelengths().size(), 0.0);
   for (std::size_t i = 0; i < views.size(); ++i) {
     if (radiance.status[i] != SampleStatus::ok) continue;

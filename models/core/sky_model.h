@@ -143,9 +143,10 @@ class SkyModel {
   // override it.
   virtual Spectrum compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
                                           const PlaneOrientation& plane) const;
-  // The radiance the ground-view irradiance quadrature integrates, for views above the horizon
-  // (out already sized). Default: the checked answers of sky_radiance(). A model that refuses
-  // samples it can still integrate (fit_domain.h) overrides it.
+  // The radiance the irradiance quadratures integrate (out already sized): the sky's, without
+  // light reflected by the ground. Default: the checked answers of sky_radiance(). A model that
+  // refuses samples it can still integrate (fit_domain.h), or whose views meeting the ground
+  // carry the ground's light (lambertian_ground.h), overrides it.
   virtual void radiance_to_integrate(const SunState& sun, const Viewpoint& viewpoint,
                                      std::span<const ViewDirection> views,
                                      SpectralBatch& out) const;

@@ -7,6 +7,7 @@
 
 #include "models/atmosphere/atmosphere_parameter_table.h"
 #include "models/atmosphere/solar_spectrum.h"
+#include "models/core/ray_sphere.h"
 #include "models/nishita93/nishita93_functions.h"
 
 namespace clearsky {
@@ -17,7 +18,7 @@ ModelDescriptor make_descriptor() {
   return ModelDescriptor{
       .id = "nishita93",
       .name = "Nishita93",
-      .version = "1",
+      .version = "2",
       .citation =
           "T. Nishita, T. Sirai, K. Tadamura, E. Nakamae. Display of the Earth Taking into "
           "Account Atmospheric Scattering. Proceedings of SIGGRAPH 1993, pages 175-182.",
@@ -27,7 +28,8 @@ ModelDescriptor make_descriptor() {
           "transmittance accumulated on the way and the transmittance to the sun read bilinearly "
           "from 2D optical-length tables built at the intersections of these spheres with 64 "
           "sun-aligned cylinders. Rayleigh and Cornette-Shanks phase functions; no multiple "
-          "scattering, no ground reflection. As in the 2016 study: 64 spheres and cylinders, "
+          "scattering; views that meet the ground see a Lambertian ground lit by the sun and "
+          "the model's sky. As in the 2016 study: 64 spheres and cylinders, "
           "Rayleigh scattering plus Mie extinction as transmittance.",
       .min_wavelength_nm = kSolarSpectrumMinNm,
       .max_wavelength_nm = kSolarSpectrumMaxNm,
@@ -56,6 +58,7 @@ ModelDescriptor make_descriptor() {
               atmosphere_parameter_spec("alpha"),
               atmosphere_parameter_spec("beta"),
               atmosphere_parameter_spec("g"),
+              atmosphere_parameter_spec("albedo"),
           },
       .capabilities =
           {
@@ -98,23 +101,59 @@ Nishita93Model::Nishita93Model(const ValidatedConfig& config, const PrecomputeCo
     : SkyModel(config.config()),
       tables_(Nishita93Tables::build(config.config().atmosphere, config.integer_option("spheres"),
                                      config.integer_option("cylinders"), context)),
-      study_viewer_sample_(config.integer_option("study_viewer_sample") != 0) {}
+      study_viewer_sample_(config.integer_option("study_viewer_sample") != 0) {
+  // The ground's sky irradiance from the model's own sky (its quadrature integrates the sky
+  // without the ground: radiance_to_integrate).
+  ground_ = LambertianGround(atmosphere().ground_albedo, atmosphere().solar_irradiance_w_m2_nm,
+                             [this](double mu_s) {
+                               const SunState sun(SunPosition{std::acos(mu_s), 0.0});
+                               return compute_sky_irradiance(sun, Viewpoint{0.0}, {});
+                             });
+  context.report(1.0, "ground sky irradiance");
+}
+
+void Nishita93Model::scattered_radiance(const SunState& sun, const Viewpoint& viewpoint,
+                                        std::span<const ViewDirection> views, SpectralBatch& out,
+                                        bool with_ground) const {
+  const std::size_t n = wavelengths().size();
+  std::vector<double> scratch(5 * n);
+  const std::span<double> all(scratch);
+  const nishita93::RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n),
+                                          all.subspan(2 * n, n)};
+  const std::span<double> view_transmittance = all.subspan(3 * n, n);
+  const std::span<double> sun_transmittance = all.subspan(4 * n, n);
+  const auto& p = config().atmosphere;
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    const RaySunGeometry ray =
+        RaySunGeometry::from(p.earth_radius_m, viewpoint, views[i], sun.sun());
+    const AtmosphereSegment segment =
+        atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);
+    if (!with_ground || !segment.hits_ground) {
+      nishita93::single_scattering(tables_, atmosphere(), ray,
+                                   std::numeric_limits<double>::infinity(), out.spectrum(i), {},
+                                   workspace, study_viewer_sample_);
+      continue;
+    }
+    nishita93::single_scattering(tables_, atmosphere(), ray,
+                                 std::numeric_limits<double>::infinity(), out.spectrum(i),
+                                 view_transmittance, workspace, study_viewer_sample_);
+    const double mu_s = ray.mu_s_at(segment.end, p.earth_radius_m);
+    nishita93::sun_transmittance(tables_, atmosphere(), p.earth_radius_m, mu_s, sun_transmittance);
+    ground_.add_reflected(mu_s, sun_transmittance, view_transmittance, out.spectrum(i));
+  }
+}
 
 void Nishita93Model::compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
                                           std::span<const ViewDirection> views,
                                           SpectralBatch& out) const {
-  const std::size_t n = wavelengths().size();
-  std::vector<double> scratch(3 * n);
-  const std::span<double> all(scratch);
-  const nishita93::RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n),
-                                          all.subspan(2 * n, n)};
-  const double bottom = config().atmosphere.earth_radius_m;
-  for (std::size_t i = 0; i < views.size(); ++i) {
-    nishita93::single_scattering(tables_, atmosphere(),
-                                 RaySunGeometry::from(bottom, viewpoint, views[i], sun.sun()),
-                                 std::numeric_limits<double>::infinity(), out.spectrum(i), {},
-                                 workspace, study_viewer_sample_);
-  }
+  scattered_radiance(sun, viewpoint, views, out, true);
+}
+
+void Nishita93Model::radiance_to_integrate(const SunState& sun, const Viewpoint& viewpoint,
+                                           std::span<const ViewDirection> views,
+                                           SpectralBatch& out) const {
+  out.resize(views.size(), wavelengths().size());
+  scattered_radiance(sun, viewpoint, views, out, false);
 }
 
 Spectrum Nishita93Model::compute_sun_irradiance(const SunState& sun,

@@ -12,16 +12,18 @@
 // | alpha               | -    | 0.8     | [0, 4]          | Angstrom exponent of the aerosols (atmosphere)  |
 // | beta                | -    | 0.04    | [0, 2]          | aerosol optical depth at 1 um (atmosphere)      |
 // | g                   | -    | 0.7     | [-0.999, 0.999] | Cornette-Shanks asymmetry (atmosphere)          |
+// | albedo              | -    | grass   | [0, 1]          | ground albedo (atmosphere)                      |
 //
 // Capabilities: any observer altitude from the ground to far above the atmosphere, views in
-// every direction (the ground absorbs: rays that meet it carry only the light scattered
-// before it), aerial perspective (SkyModel::aerial_perspective()), the sun anywhere (Earth's shadow
-// included), single scattering only, no ground albedo. Tables do not depend on the sun: no
-// per-sun state. Immutable after creation; queries are const and thread-safe.
+// every direction (a view that meets the ground sees the Lambertian ground of the shared albedo
+// lit by the sun and the model's own sky, through the air before it: lambertian_ground.h),
+// aerial perspective (SkyModel::aerial_perspective()), the sun anywhere (Earth's shadow
+// included), single scattering only. Tables do not depend on the sun: no per-sun state. Immutable after creation; queries are const and thread-safe.
 #pragma once
 
 #include <memory>
 
+#include "models/core/lambertian_ground.h"
 #include "models/core/model_factory.h"
 #include "models/core/ray_scattering.h"
 #include "models/core/sky_model.h"
@@ -49,6 +51,10 @@ class Nishita93Model final : public SkyModel {
   void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
                             std::span<const ViewDirection> views,
                             SpectralBatch& out) const override;
+  // The sky's radiance without the ground's light, for the irradiance quadratures.
+  void radiance_to_integrate(const SunState& sun, const Viewpoint& viewpoint,
+                             std::span<const ViewDirection> views,
+                             SpectralBatch& out) const override;
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
   // The same integration as the sky radiance, stopped at distance_m.
   ScatteringAlongRay compute_aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
@@ -57,9 +63,15 @@ class Nishita93Model final : public SkyModel {
 
  private:
   Nishita93Model(const ValidatedConfig& config, const PrecomputeContext& context);
+  // Single scattering along each view, plus the ground's light for views that meet it when
+  // with_ground.
+  void scattered_radiance(const SunState& sun, const Viewpoint& viewpoint,
+                          std::span<const ViewDirection> views, SpectralBatch& out,
+                          bool with_ground) const;
 
   Nishita93Tables tables_;
   bool study_viewer_sample_ = false;
+  LambertianGround ground_;
 };
 
 }  // namespace clearsky

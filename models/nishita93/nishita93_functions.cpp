@@ -22,6 +22,12 @@ void for_each_sample(const Nishita93Tables& tables, double r, double mu, double 
   const std::vector<double>& radius = tables.sphere_radii_m();
   const int n = tables.sphere_count();
   emit(start, start_sphere);
+  // The sphere the segment starts on (the observer's, or the top for an observer above the
+  // atmosphere): its crossing next to the start is the start sample itself, computed again with
+  // rounding (a few 1e-10 m away, on either side); emitting it too would make a second sample
+  // at the observer.
+  const double start_radius =
+      start_sphere >= 0 ? radius[static_cast<std::size_t>(start_sphere)] : r;
   const double rmu = r * mu;
   const double c2 = r * r - rmu * rmu;  // squared distance of the ray's line to the centre
   const double tangent = -rmu;
@@ -44,7 +50,7 @@ void for_each_sample(const Nishita93Tables& tables, double r, double mu, double 
     for (; k >= lowest; --k) {
       const double d = crossing(k, -1.0);
       if (d >= end) break;
-      if (d > start) emit(d, k);
+      if (d > start && radius[static_cast<std::size_t>(k)] != start_radius) emit(d, k);
     }
     if (k >= lowest || lowest == 0) {  // the segment ended first, or the ray meets the ground
       emit(end, end_sphere);
@@ -56,7 +62,7 @@ void for_each_sample(const Nishita93Tables& tables, double r, double mu, double 
   for (int k = lowest; k < n; ++k) {
     const double d = crossing(k, 1.0);
     if (d >= end) break;
-    if (d > start && d > tangent) emit(d, k);
+    if (d > start && d > tangent && radius[static_cast<std::size_t>(k)] != start_radius) emit(d, k);
   }
   emit(end, end_sphere);
 }

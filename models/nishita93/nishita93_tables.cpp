@@ -122,15 +122,39 @@ Nishita93Tables Nishita93Tables::build(const AtmosphereParameters& atmosphere, i
   return t;
 }
 
-double Nishita93Tables::lookup(const std::vector<double>& table, double u, double v) const {
-  const int i = std::min(static_cast<int>(u), sphere_count_ - 2);
+double Nishita93Tables::row_lookup(const std::vector<double>& table, int k, double sin_s,
+                                   double abs_mu_s, bool against) const {
+  const double r_k = sphere_radius_m_[static_cast<std::size_t>(k)];
+  const double max_v = cylinder_count_ - 1.0;
+  const std::size_t row = static_cast<std::size_t>(k) * static_cast<std::size_t>(cylinder_count_);
+  const double v = std::clamp(max_v * r_k * sin_s / top_radius_m_, 0.0, max_v);
+  // The last cylinder inside this sphere: beyond it, up to the sphere itself (the sun on the
+  // horizon), the lengths change like the square root of the distance to the sphere, which a
+  // linear interpolation in the cylinder radius towards the next cylinder (outside the sphere,
+  // where the table holds the horizontal ray) cannot follow. There they are interpolated
+  // linearly in |mu_s| (the optical length of a ray is smooth in its zenith cosine through the
+  // horizon) between that cylinder and the horizontal ray, so that they reach the horizontal
+  // ray's at mu_s = 0, where the sun below the horizon (sun_optical_lengths) starts from.
+  const int last = std::max(0, static_cast<int>(std::ceil(max_v * r_k / top_radius_m_)) - 1);
+  if (v > last && !against) {
+    const double horizontal = table[row + static_cast<std::size_t>(cylinder_count_ - 1)];
+    const double c_last = top_radius_m_ * last / max_v;
+    const double mu_last = safe_sqrt(1.0 - (c_last / r_k) * (c_last / r_k));
+    const double t = mu_last > 0.0 ? std::min(abs_mu_s / mu_last, 1.0) : 0.0;
+    return t * table[row + static_cast<std::size_t>(last)] + (1.0 - t) * horizontal;
+  }
   const int j = std::min(static_cast<int>(v), cylinder_count_ - 2);
-  const double fu = u - i, fv = v - j;
-  const std::size_t row0 = static_cast<std::size_t>(i) * static_cast<std::size_t>(cylinder_count_);
-  const std::size_t row1 = row0 + static_cast<std::size_t>(cylinder_count_);
+  const double fv = v - j;
   const auto col = static_cast<std::size_t>(j);
-  return (1.0 - fu) * ((1.0 - fv) * table[row0 + col] + fv * table[row0 + col + 1]) +
-         fu * ((1.0 - fv) * table[row1 + col] + fv * table[row1 + col + 1]);
+  return (1.0 - fv) * table[row + col] + fv * table[row + col + 1];
+}
+
+double Nishita93Tables::lookup(const std::vector<double>& table, double u, double sin_s,
+                               double abs_mu_s, bool against) const {
+  const int i = std::min(static_cast<int>(u), sphere_count_ - 2);
+  const double fu = u - i;
+  return (1.0 - fu) * row_lookup(table, i, sin_s, abs_mu_s, against) +
+         fu * row_lookup(table, i + 1, sin_s, abs_mu_s, against);
 }
 
 std::optional<OpticalLengths> Nishita93Tables::sun_optical_lengths(double r_m, double mu_s,
@@ -147,17 +171,59 @@ std::optional<OpticalLengths> Nishita93Tables::sun_optical_lengths(double r_m, d
     sphere_index = sphere_count_ - 1;
   }
   if (mu_s < 0.0 && ray_hits_ground(r, mu_s, bottom_radius_m_)) return std::nullopt;
-  const double max_u = sphere_count_ - 1.0, max_v = cylinder_count_ - 1.0;
+  const double max_u = sphere_count_ - 1.0;
   const double u =
       sphere_index >= 0
           ? static_cast<double>(sphere_index)
           : std::clamp(max_u * std::expm1(-(r - bottom_radius_m_) / rayleigh_scale_height_m_) /
                            density_step_,
                        0.0, max_u);
-  const double v = std::clamp(max_v * r * safe_sqrt(1.0 - mu_s * mu_s) / top_radius_m_, 0.0, max_v);
-  if (mu_s >= 0.0)
-    return OpticalLengths{lookup(along_rayleigh_m_, u, v), lookup(along_mie_m_, u, v)};
-  return OpticalLengths{lookup(against_rayleigh_m_, u, v), lookup(against_mie_m_, u, v)};
+  // Each sphere of the bilinear lookup is read at the point's sun zenith angle (its cylinder
+  // radius on that sphere), so that both meet the horizontal ray at mu_s = 0.
+  const double sin_s = safe_sqrt(1.0 - mu_s * mu_s);
+  const double abs_mu_s = std::abs(mu_s);
+  const OpticalLengths along{lookup(along_rayleigh_m_, u, sin_s, abs_mu_s, false),
+                             lookup(along_mie_m_, u, sin_s, abs_mu_s, false)};
+  if (mu_s >= 0.0) return along;
+  // The sun below the horizon. The ray to the sun goes down to its tangent point, at radius
+  // c = r sin(theta_s), then up to the top; its other half from the tangent point passes through
+  // the point and on to the top, and is the point's ray towards the mirrored sun (zenith
+  // cosine -mu_s). Both halves from the tangent point are the horizontal ray there, so
+  //   L(r, mu_s) = 2 H(c) - L(r, -mu_s),
+  // exact geometry, equal to the horizontal ray's at mu_s = 0 (continuous through the horizon).
+  // Where the cylinders resolve the lit part below the sphere (a cylinder between the ground
+  // and the sphere, only with many cylinders) the against-axis table is read instead.
+  const double c = r * sin_s;
+  const double max_v = cylinder_count_ - 1.0;
+  const int i = std::min(static_cast<int>(u), sphere_count_ - 2);
+  const int last_below = std::max(
+      0, static_cast<int>(
+             std::ceil(max_v * sphere_radius_m_[static_cast<std::size_t>(i + 1)] / top_radius_m_)) -
+             1);
+  if (top_radius_m_ * last_below / max_v > std::max(c, bottom_radius_m_) &&
+      max_v * sphere_radius_m_[static_cast<std::size_t>(i)] * sin_s / top_radius_m_ <= last_below)
+    return OpticalLengths{lookup(against_rayleigh_m_, u, sin_s, abs_mu_s, true),
+                          lookup(against_mie_m_, u, sin_s, abs_mu_s, true)};
+  const OpticalLengths horizontal = horizontal_lengths(c);
+  return OpticalLengths{2.0 * horizontal.rayleigh_m - along.rayleigh_m,
+                        2.0 * horizontal.mie_m - along.mie_m};
+}
+
+OpticalLengths Nishita93Tables::horizontal_lengths(double r_m) const {
+  // The last cylinder is outside every sphere: its column holds each sphere's horizontal ray;
+  // between spheres, linear in the sphere coordinate (linear in Rayleigh density).
+  const double max_u = sphere_count_ - 1.0;
+  const double u = std::clamp(
+      max_u * std::expm1(-(r_m - bottom_radius_m_) / rayleigh_scale_height_m_) / density_step_, 0.0,
+      max_u);
+  const int i = std::min(static_cast<int>(u), sphere_count_ - 2);
+  const double fu = u - i;
+  const auto at = [&](const std::vector<double>& table, int k) {
+    return table[static_cast<std::size_t>(k) * static_cast<std::size_t>(cylinder_count_) +
+                 static_cast<std::size_t>(cylinder_count_ - 1)];
+  };
+  return OpticalLengths{(1.0 - fu) * at(along_rayleigh_m_, i) + fu * at(along_rayleigh_m_, i + 1),
+                        (1.0 - fu) * at(along_mie_m_, i) + fu * at(along_mie_m_, i + 1)};
 }
 
 OpticalLengths Nishita93Tables::node(int i, int j, bool against_axis) const {

@@ -61,7 +61,14 @@ class Nishita93Tables {
   std::size_t memory_bytes() const;
 
  private:
-  double lookup(const std::vector<double>& table, double u, double v) const;
+  // Bilinear lookup at sphere coordinate u, each sphere read at the sun zenith angle of sine
+  // sin_s (and |cos| abs_mu_s); against: the against-axis table.
+  double lookup(const std::vector<double>& table, double u, double sin_s, double abs_mu_s,
+                bool against) const;
+  // The horizontal ray's optical lengths at radius r_m (between the ground and the top).
+  OpticalLengths horizontal_lengths(double r_m) const;
+  double row_lookup(const std::vector<double>& table, int k, double sin_s, double abs_mu_s,
+                    bool against) const;
 
   int sphere_count_ = 0, cylinder_count_ = 0;
   double bottom_radius_m_ = 0, top_radius_m_ = 0, rayleigh_scale_height_m_ = 0;

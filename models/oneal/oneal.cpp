@@ -7,6 +7,7 @@
 
 #include "models/atmosphere/atmosphere_parameter_table.h"
 #include "models/atmosphere/solar_spectrum.h"
+#include "models/core/ray_sphere.h"
 #include "models/oneal/oneal_functions.h"
 
 namespace clearsky {
@@ -17,7 +18,7 @@ ModelDescriptor make_descriptor() {
   return ModelDescriptor{
       .id = "oneal",
       .name = "O'Neal",
-      .version = "1",
+      .version = "2",
       .citation =
           "S. O'Neil. Accurate Atmospheric Scattering. In GPU Gems 2, chapter 16, pages "
           "253-268. Addison-Wesley, 2005.",
@@ -27,8 +28,8 @@ ModelDescriptor make_descriptor() {
           "instead of a table. As in the 2016 study: 4 samples (2 in O'Neil's code), separate "
           "Rayleigh and Mie scale heights, the Rayleigh phase function, Cornette-Shanks for "
           "aerosols, and Schuler's (2012) approximation H c / (c mu + 1), c = sqrt(R / H), "
-          "instead of O'Neil's fit to his own atmosphere. No multiple scattering, no ground "
-          "reflection.",
+          "instead of O'Neil's fit to his own atmosphere. No multiple scattering; views that meet "
+          "the ground see a Lambertian ground lit by the sun and the model's sky.",
       .min_wavelength_nm = kSolarSpectrumMinNm,
       .max_wavelength_nm = kSolarSpectrumMaxNm,
       .parameters =
@@ -42,6 +43,7 @@ ModelDescriptor make_descriptor() {
               atmosphere_parameter_spec("alpha"),
               atmosphere_parameter_spec("beta"),
               atmosphere_parameter_spec("g"),
+              atmosphere_parameter_spec("albedo"),
           },
       .capabilities =
           {
@@ -79,21 +81,56 @@ std::shared_ptr<const ONealModel> ONealModel::build(const ValidatedConfig& confi
 }
 
 ONealModel::ONealModel(const ValidatedConfig& config)
-    : SkyModel(config.config()), samples_(config.integer_option("samples")) {}
+    : SkyModel(config.config()), samples_(config.integer_option("samples")) {
+  // The ground's sky irradiance from the model's own sky (its quadrature integrates the sky
+  // without the ground: radiance_to_integrate).
+  ground_ = LambertianGround(atmosphere().ground_albedo, atmosphere().solar_irradiance_w_m2_nm,
+                             [this](double mu_s) {
+                               const SunState sun(SunPosition{std::acos(mu_s), 0.0});
+                               return compute_sky_irradiance(sun, Viewpoint{0.0}, {});
+                             });
+}
+
+void ONealModel::scattered_radiance(const SunState& sun, const Viewpoint& viewpoint,
+                                    std::span<const ViewDirection> views, SpectralBatch& out,
+                                    bool with_ground) const {
+  const std::size_t n = wavelengths().size();
+  std::vector<double> scratch(4 * n);
+  const std::span<double> all(scratch);
+  const oneal::RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n), all.subspan(2 * n, n)};
+  const std::span<double> view_transmittance = all.subspan(3 * n, n);
+  const auto& p = config().atmosphere;
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    const RaySunGeometry ray =
+        RaySunGeometry::from(p.earth_radius_m, viewpoint, views[i], sun.sun());
+    const AtmosphereSegment segment =
+        atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);
+    if (!with_ground || !segment.hits_ground) {
+      oneal::single_scattering(atmosphere(), ray, samples_, std::numeric_limits<double>::infinity(),
+                               out.spectrum(i), {}, workspace);
+      continue;
+    }
+    oneal::single_scattering(atmosphere(), ray, samples_, std::numeric_limits<double>::infinity(),
+                             out.spectrum(i), view_transmittance, workspace);
+    const double mu_s = ray.mu_s_at(segment.end, p.earth_radius_m);
+    const auto lengths = oneal::optical_lengths_to_infinity(p, p.earth_radius_m, mu_s);
+    const Spectrum sun_transmittance =
+        lengths ? transmittance(atmosphere(), *lengths) : Spectrum(n, 0.0);
+    ground_.add_reflected(mu_s, {sun_transmittance.data(), n}, view_transmittance, out.spectrum(i));
+  }
+}
 
 void ONealModel::compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
                                       std::span<const ViewDirection> views,
                                       SpectralBatch& out) const {
-  const std::size_t n = wavelengths().size();
-  std::vector<double> scratch(3 * n);
-  const std::span<double> all(scratch);
-  const oneal::RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n), all.subspan(2 * n, n)};
-  const double bottom = config().atmosphere.earth_radius_m;
-  for (std::size_t i = 0; i < views.size(); ++i) {
-    oneal::single_scattering(
-        atmosphere(), RaySunGeometry::from(bottom, viewpoint, views[i], sun.sun()), samples_,
-        std::numeric_limits<double>::infinity(), out.spectrum(i), {}, workspace);
-  }
+  scattered_radiance(sun, viewpoint, views, out, true);
+}
+
+void ONealModel::radiance_to_integrate(const SunState& sun, const Viewpoint& viewpoint,
+                                       std::span<const ViewDirection> views,
+                                       SpectralBatch& out) const {
+  out.resize(views.size(), wavelengths().size());
+  scattered_radiance(sun, viewpoint, views, out, false);
 }
 
 Spectrum ONealModel::compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const {

@@ -9,15 +9,18 @@
 // | alpha     | -    | 0.8     | [0, 4]          | Angstrom exponent of the aerosols (atmosphere)   |
 // | beta      | -    | 0.04    | [0, 2]          | aerosol optical depth at 1 um (atmosphere)       |
 // | g         | -    | 0.7     | [-0.999, 0.999] | Cornette-Shanks asymmetry (atmosphere)           |
+// | albedo    | -    | grass   | [0, 1]          | ground albedo (atmosphere)                       |
 //
 // Capabilities: observers from the ground to far above the atmosphere, views in every
-// direction, aerial perspective (SkyModel::aerial_perspective()), the sun anywhere (Earth's
-// shadow included), single scattering only, no ground albedo. Immutable; queries are const
-// and thread-safe.
+// direction (a view that meets the ground sees the Lambertian ground of the shared albedo lit
+// by the sun and the model's own sky, through the air before it: lambertian_ground.h), aerial
+// perspective (SkyModel::aerial_perspective()), the sun anywhere (Earth's shadow included),
+// single scattering only. Immutable; queries are const and thread-safe.
 #pragma once
 
 #include <memory>
 
+#include "models/core/lambertian_ground.h"
 #include "models/core/model_factory.h"
 #include "models/core/ray_scattering.h"
 #include "models/core/sky_model.h"
@@ -42,6 +45,10 @@ class ONealModel final : public SkyModel {
   void compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
                             std::span<const ViewDirection> views,
                             SpectralBatch& out) const override;
+  // The sky's radiance without the ground's light, for the irradiance quadratures.
+  void radiance_to_integrate(const SunState& sun, const Viewpoint& viewpoint,
+                             std::span<const ViewDirection> views,
+                             SpectralBatch& out) const override;
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
   ScatteringAlongRay compute_aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
                                                 const ViewDirection& view,
@@ -49,8 +56,14 @@ class ONealModel final : public SkyModel {
 
  private:
   explicit ONealModel(const ValidatedConfig& config);
+  // Single scattering along each view, plus the ground's light for views that meet it when
+  // with_ground.
+  void scattered_radiance(const SunState& sun, const Viewpoint& viewpoint,
+                          std::span<const ViewDirection> views, SpectralBatch& out,
+                          bool with_ground) const;
 
   int samples_ = 4;
+  LambertianGround ground_;
 };
 
 }  // namespace clearsky

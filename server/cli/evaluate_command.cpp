@@ -1,11 +1,14 @@
-// `clearsky evaluate --dataset NAME [--models all|a,b] [--parameters JSON] [--json]
+// `clearsky evaluate --dataset NAME [--models all|a,b] [--parameters JSON] [--out-of-domain
+// exclude|clamp] [--json]
 // [--samples[=spectra]] [--db PATH]`: the paper's RMSE of models against a stored dataset; every run is stored with
 // its per-sample errors (api/evaluation/evaluation_runner.h). --samples adds each capture's
 // per-sample RMSE and bias (=spectra: and errors per wavelength) as GET
 // /v1/evaluations/{id}?samples=... does (api/encode/evaluation_json.h). --parameters is the
 // "parameters" object of POST /v1/evaluations (atmosphere parameters and model options), with
 // its rule: each applies to the requested models that list it, one that none lists is refused
-// (docs/data-api.md "Evaluation parameters").
+// (docs/data-api.md "Evaluation parameters"). --out-of-domain exclude|clamp is its
+// "out_of_domain" parameter: what is done with the samples a model cannot answer (docs/data-api.md
+// "Samples a model cannot answer"); it overrides the same key of --parameters.
 #include <iomanip>
 #include <iostream>
 
@@ -29,6 +32,7 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
     bool json = false;
     std::string samples = "false";
     std::string parameters;
+    std::string out_of_domain;
   };
   auto options = std::make_shared<Options>();
   command->add_option("--dataset", options->dataset, "Dataset name")->required();
@@ -40,6 +44,12 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
       "--parameters", options->parameters,
       "JSON object of atmosphere parameters and model options, as the \"parameters\" of "
       "POST /v1/evaluations, e.g. '{\"turbidity\": 3, \"scattering_orders\": 2}'");
+  command
+      ->add_option("--out-of-domain", options->out_of_domain,
+                   "Samples a model cannot answer (outside its fit domain, sun or view beyond "
+                   "its range): exclude them (default; counted per capture and reason) or clamp "
+                   "(the model at the nearest point of its domain)")
+      ->check(CLI::IsMember({"exclude", "clamp"}));
   command->add_flag("--json", options->json,
                     "Print the results as one JSON object (RMSE in mW/(m2.sr.nm))");
   command
@@ -70,6 +80,8 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
       }
       request.parameters = api::parse_evaluation_parameters(parameters, factories);
     }
+    if (!options->out_of_domain.empty())
+      request.parameters[api::kOutOfDomainParameter] = options->out_of_domain;
     const api::EvaluationReport report = api::run_evaluation(db, request);
     const api::SampleDetail samples = options->samples == "spectra" ? api::SampleDetail::spectra
                                       : options->samples == "true"  ? api::SampleDetail::summary
@@ -82,11 +94,26 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
     for (const api::ModelRun& run : report.models) {
       const EvaluationResult& r = run.result;
       std::cout << r.model_id << ": RMSE " << r.rmse << " mW/(m2.sr.nm) over " << r.captures.size()
-                << " captures (run " << run.run_id << ", precompute " << r.precompute_seconds
-                << " s, evaluate " << r.evaluate_seconds << " s)\n";
+                << " captures, " << r.samples_compared << " samples (run " << run.run_id
+                << ", precompute " << r.precompute_seconds << " s, evaluate " << r.evaluate_seconds
+                << " s)\n";
+      if (r.samples_excluded + r.samples_clamped + r.captures_unanswered > 0)
+        std::cout << "  out of domain (" << to_string(report.out_of_domain)
+                  << "): " << r.samples_excluded << " samples excluded, " << r.samples_clamped
+                  << " clamped, " << r.captures_unanswered << " captures unanswered\n";
       for (const CaptureEvaluation& c : r.captures) {
         std::cout << "  " << c.time_iso << "  sun " << c.sun_zenith_deg << " / "
-                  << c.sun_azimuth_deg << " deg  RMSE " << c.rmse << '\n';
+                  << c.sun_azimuth_deg << " deg  ";
+        if (c.answered())
+          std::cout << "RMSE " << c.rmse << " over " << c.samples.size() << " samples";
+        else
+          std::cout << "unanswered";
+        for (const auto& [lists, what] :
+             {std::pair{&c.excluded, "excluded"}, std::pair{&c.clamped, "clamped"}})
+          for (const OutOfDomainSamples& l : *lists)
+            std::cout << "; " << l.indices.size() << " " << what << " (" << to_string(l.reason)
+                      << ")";
+        std::cout << '\n';
         if (samples == api::SampleDetail::none) continue;
         for (const SampleEvaluation& s : c.samples)
           std::cout << "    sample " << std::setw(2) << s.index << "  view " << std::setw(6)

@@ -40,6 +40,8 @@ std::vector<ModelFactory> served_models(const std::vector<std::string>& ids) {
 }
 
 void run_server(const server::ServerConfig& config, const std::string& software_version) {
+  // Before anything starts: too many connection slots for cpp-httplib's select(2).
+  config.check_connection_slots();
   // Signals are taken by one thread with sigwait (a handler may not call into the server).
   sigset_t signals;
   sigemptyset(&signals);
@@ -126,9 +128,10 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   server::HttpServer http(config, tables, metrics);
   http.add_data_services(data, auth);
   const int port = http.bind();
-  spdlog::info("clearsky serving on http://{}:{} ({} workers, {} models, cache {}, database {})",
-               config.host, port, config.worker_threads(), registered.size(), config.cache_dir,
-               config.db_path);
+  spdlog::info(
+      "clearsky serving on http://{}:{} (at most {} workers, {} models, cache {}, database {})",
+      config.host, port, config.worker_threads(), registered.size(), config.cache_dir,
+      config.db_path);
 
   std::thread signal_thread([&] {
     int received = 0;
@@ -181,7 +184,8 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
       ->delimiter(',');
   command
       ->add_option("--threads", config->threads,
-                   "HTTP worker threads (0: 32 per core, at least 64)")
+                   "Most HTTP worker threads, started on demand, one per open connection (0: 512); "
+                   "threads + max-queued <= 896")
       ->capture_default_str();
   command->add_option("--max-queued", config->max_queued, "Connections waiting for a worker")
       ->capture_default_str();
@@ -200,6 +204,20 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
       ->capture_default_str();
   command->add_option("--write-timeout", config->write_timeout_s, "Socket write timeout, s")
       ->capture_default_str();
+  command
+      ->add_option("--request-head-timeout", config->request_head_timeout_s,
+                   "A request head (line and headers) must arrive whole within this, s")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--min-send-rate", config->min_send_rate_bytes,
+                   "Answers slower than this on average after the grace are cut, bytes/s (0: off)")
+      ->capture_default_str();
+  command
+      ->add_option("--send-rate-grace", config->send_rate_grace_s,
+                   "Time an answer has before --min-send-rate applies, s")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   command
       ->add_option("--keep-alive-max-count", config->keep_alive_max_count,
                    "Requests per connection")

@@ -8,11 +8,14 @@
 // | host, port           |       | 127.0.0.1, 8080 | where to listen (port 0: any free port)                                               |
 // | db                   | path  | var/clearsky.db | SQLite database (its parent directory is created)                                     |
 // | cache_dir            | path  | var/cache       | disk cache of model tables                                                            |
-// | threads              |       | 0               | HTTP worker threads; 0: 32 per core, at least 64 (a worker per keep-alive connection) |
+// | threads              |       | 0               | most HTTP workers (started on demand, a worker per open connection); 0: 512           |
 // | max_queued           |       | 256             | accepted connections waiting for a worker (the acceptor waits beyond)                 |
-// | listen_backlog       |       | 1024            | connections the kernel holds before accept (listen(2))                                |
+// | listen_backlog       |       | 4096            | connections the kernel holds before accept (listen(2), capped by net.core.somaxconn)  |
 // | payload_max_bytes    | byte  | 8 MiB           | request body limit (413 beyond)                                                       |
-// | read/write_timeout_s | s     | 10 / 30         | socket timeouts                                                                       |
+// | read/write_timeout_s | s     | 10 / 30         | longest wait for one read / one blocked write                                         |
+// | request_head_timeout_s | s   | 10              | a request head (line and headers) must arrive whole within this (slowloris)            |
+// | min_send_rate_bytes  | B/s   | 4096            | an answer slower than this on average (after the grace) is cut (slow readers); 0: off |
+// | send_rate_grace_s    | s     | 10              | time an answer has before min_send_rate_bytes applies                                 |
 // | keep_alive_max_count |       | 1000            | requests per keep-alive connection                                                    |
 // | keep_alive_timeout_s | s     | 5               | idle keep-alive connection lifetime                                                   |
 // | max_views            |       | 10000           | views per radiance/rgb batch (413 beyond)                                             |
@@ -32,6 +35,8 @@
 // | evaluation_queue     |       | 16              | evaluations waiting for a worker (503 beyond)                                         |
 // | cors_origins         |       | (none)          | origins browsers may call the API from ("*": any; docs/http-api.md)                   |
 // | prebuild_three       |       | true            | also build each model on the 3-wavelength grid of rgb method=three                    |
+// threads + max_queued is at most 896: cpp-httplib 0.11.4 as Debian builds it uses select(2)
+// and answers 500 on a connection whose descriptor is 1024 or more (docs/deployment.md).
 // clang-format on
 #pragma once
 
@@ -49,11 +54,14 @@ struct ServerConfig {
   std::vector<std::string> models;  // empty: every registered model
   unsigned threads = 0;
   std::size_t max_queued = 256;
-  int listen_backlog = 1024;
+  int listen_backlog = 4096;
   std::size_t payload_max_bytes = 8u << 20;
   std::size_t max_upload_bytes = std::size_t{1} << 30;
   int read_timeout_s = 10;
   int write_timeout_s = 30;
+  int request_head_timeout_s = 10;
+  std::size_t min_send_rate_bytes = 4096;
+  int send_rate_grace_s = 10;
   std::size_t keep_alive_max_count = 1000;
   int keep_alive_timeout_s = 5;
   std::size_t max_views = 10000;
@@ -72,8 +80,11 @@ struct ServerConfig {
   std::size_t import_queue = 8;
   std::vector<std::string> cors_origins;  // empty: no cross-origin access
 
-  // The worker count threads resolves to.
+  // The most workers threads resolves to.
   unsigned worker_threads() const;
+  // Throws std::invalid_argument when threads + max_queued could give a connection a descriptor
+  // cpp-httplib cannot serve (the connection slots must stay below FD_SETSIZE).
+  void check_connection_slots() const;
   // The largest body any route reads: cpp-httplib's (single) payload limit.
   std::size_t body_limit_bytes() const;
 };

@@ -12,7 +12,7 @@
 
 #include "api/http/cache_policy.h"
 #include "api/routes/route_match.h"
-#include "server/http/bounded_task_queue.h"
+#include "server/http/connection_server.h"
 #include "server/http/request_body.h"
 
 namespace clearsky::server {
@@ -175,6 +175,28 @@ std::shared_ptr<spdlog::logger> access_logger() {
   return logger;
 }
 
+// The time limits of a connection (docs/deployment.md "Limits in the server").
+ConnectionLimits connection_limits(const ServerConfig& config) {
+  using std::chrono::seconds;
+  ConnectionLimits limits;
+  limits.read_timeout = seconds(config.read_timeout_s);
+  limits.write_timeout = seconds(config.write_timeout_s);
+  limits.keep_alive_timeout = seconds(config.keep_alive_timeout_s);
+  limits.head_timeout = seconds(config.request_head_timeout_s);
+  limits.min_send_rate_bytes_per_s = config.min_send_rate_bytes;
+  limits.send_rate_grace = seconds(config.send_rate_grace_s);
+  return limits;
+}
+
+// Workers grow on demand up to the cap; connections beyond it wait in a bounded queue.
+ElasticTaskQueue::Options worker_pool(const ServerConfig& config) {
+  config.check_connection_slots();
+  ElasticTaskQueue::Options pool;
+  pool.max_workers = config.worker_threads();
+  pool.max_queued = config.max_queued;
+  return pool;
+}
+
 }  // namespace
 
 HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& metrics)
@@ -188,10 +210,7 @@ HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& 
                [this] { return metrics_.scrape(tables_.table_bytes()); },
                config.retry_after_s,
                [](const std::string& message) { spdlog::warn("{}", message); }},
-      http_(std::make_unique<httplib::Server>()) {
-  const unsigned workers = config_.worker_threads();
-  const std::size_t queued = config_.max_queued;
-  http_->new_task_queue = [workers, queued] { return new BoundedTaskQueue(workers, queued); };
+      http_(std::make_unique<ConnectionServer>(connection_limits(config), worker_pool(config))) {
   // The library's one limit is the largest body any route takes (an upload); the other routes
   // apply payload_max_bytes themselves (request_body.h and the pre-routing handler).
   http_->set_payload_max_length(config_.body_limit_bytes());
@@ -247,9 +266,12 @@ void HttpServer::send(const httplib::Request& req, httplib::Response& res,
                       api::ApiResponse response) {
   // Answers without a cache policy (errors, refusals) are never stored.
   if (!response.header("Cache-Control")) response.headers.emplace_back("Cache-Control", "no-store");
-  const std::string origin = req.get_header_value("Origin");
-  cors_.add_headers(
-      req.has_header("Origin") ? std::optional<std::string_view>(origin) : std::nullopt, response);
+  if (cors_.enabled()) {
+    const std::string origin = req.get_header_value("Origin");
+    cors_.add_headers(
+        req.has_header("Origin") ? std::optional<std::string_view>(origin) : std::nullopt,
+        response);
+  }
   res.status = response.status;
   for (const auto& [name, value] : response.headers) res.set_header(name, value);
   current_request.model = response.model_id;
@@ -312,8 +334,10 @@ void HttpServer::install() {
   s.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
     begin_request(req);
     const api::RouteMatch& match = current_request.match;
+    const bool is_chunked = chunked(req);
+    const bool pending = is_chunked || req.get_header_value<std::uint64_t>("Content-Length") > 0;
     const auto refuse = [&](api::ApiResponse response) {
-      current_request.unread_body = body_pending(req);
+      current_request.unread_body = pending;
       send(req, res, std::move(response));
       return HandlerResponse::Handled;
     };
@@ -322,8 +346,9 @@ void HttpServer::install() {
     // POST routes read (or drain) their body under their own limit; other bodies would be
     // buffered whole by cpp-httplib up to the upload limit: refused above the payload limit.
     const bool reads_body = match.route != nullptr && match.route->method == "POST";
-    if (!reads_body && (chunked(req) || req.get_header_value<std::uint64_t>("Content-Length") >
-                                            config_.payload_max_bytes)) {
+    if (!reads_body &&
+        (is_chunked || (pending && req.get_header_value<std::uint64_t>("Content-Length") >
+                                       config_.payload_max_bytes))) {
       api::ApiResponse response =
           api::error_response(body_too_large(config_.payload_max_bytes, "the request body"));
       response.headers.emplace_back("Connection", "close");
@@ -343,7 +368,7 @@ void HttpServer::install() {
     if (match.route->needs_token && !auth_->allows(req.get_header_value("Authorization")))
       return refuse(refuse_write(*auth_, req));
     // cpp-httplib reads no body of a GET (or HEAD): a small one left there ends the connection.
-    current_request.unread_body = match.route->method == "GET" && body_pending(req);
+    current_request.unread_body = match.route->method == "GET" && pending;
     return HandlerResponse::Unhandled;
   });
 

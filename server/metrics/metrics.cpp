@@ -31,13 +31,29 @@ Metrics::Metrics()
 
 void Metrics::observe_request(const std::string& endpoint, const std::string& model, int status,
                               double seconds) {
-  const std::string model_label = model.empty() ? "none" : model;
-  requests_
-      ->Add({{"endpoint", endpoint}, {"model", model_label}, {"status", std::to_string(status)}})
-      .Increment();
-  static const prometheus::Histogram::BucketBoundaries kBuckets = {
-      0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1.0, 2.5, 5.0, 10.0};
-  durations_->Add({{"endpoint", endpoint}, {"model", model_label}}, kBuckets).Observe(seconds);
+  std::string key = endpoint;
+  key += '\0';
+  key += model;
+  key += '\0';
+  key += std::to_string(status);
+  RequestSeries series{};
+  {
+    std::lock_guard lock(series_mutex_);
+    auto found = request_series_.find(key);
+    if (found == request_series_.end()) {
+      const std::string model_label = model.empty() ? "none" : model;
+      static const prometheus::Histogram::BucketBoundaries kBuckets = {
+          0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1.0, 2.5, 5.0, 10.0};
+      const RequestSeries created{
+          &requests_->Add(
+              {{"endpoint", endpoint}, {"model", model_label}, {"status", std::to_string(status)}}),
+          &durations_->Add({{"endpoint", endpoint}, {"model", model_label}}, kBuckets)};
+      found = request_series_.emplace(std::move(key), created).first;
+    }
+    series = found->second;
+  }
+  series.requests->Increment();
+  series.duration->Observe(seconds);
 }
 
 void Metrics::observe_cache_lookup(bool hit) {

@@ -15,7 +15,9 @@
 
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
+#include <unordered_map>
 
 namespace clearsky::server {
 
@@ -36,6 +38,16 @@ class Metrics {
   prometheus::Family<prometheus::Gauge>* table_bytes_;
   prometheus::Family<prometheus::Counter>* cache_lookups_;
   prometheus::Family<prometheus::Gauge>* build_seconds_;
+
+  // The series of each (endpoint, model, status) seen so far: prometheus-cpp's Family::Add
+  // builds and compares a label map on every call, which cost more than the rest of a cheap
+  // request's bookkeeping. The label set is bounded (see above), and so is this map.
+  struct RequestSeries {
+    prometheus::Counter* requests;
+    prometheus::Histogram* duration;
+  };
+  std::mutex series_mutex_;
+  std::unordered_map<std::string, RequestSeries> request_series_;
 };
 
 }  // namespace clearsky::server

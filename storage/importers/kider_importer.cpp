@@ -8,6 +8,7 @@
 #include "models/core/content_hash.h"
 #include "models/core/parallel.h"
 #include "models/evaluation/capture_preparation.h"
+#include "storage/importers/import_conflict.h"
 #include "storage/importers/kider_reader.h"
 #include "storage/repositories/capture_repository.h"
 #include "storage/repositories/dataset_repository.h"
@@ -134,10 +135,9 @@ ImportReport import_kider(Database& db, const KiderImportRequest& request) {
         continue;
       }
       if (const auto existing = captures.find_by_label(dataset_id, capture.label))
-        throw std::runtime_error(d.source + ": capture " + capture.label +
-                                 " is already in dataset '" + request.dataset_name +
-                                 "' with different content (hash " + existing->second + ", new " +
-                                 hash + ")");
+        throw ImportConflict(d.source + ": capture " + capture.label + " is already in dataset '" +
+                             request.dataset_name + "' with different content (hash " +
+                             existing->second + ", new " + hash + ")");
       compute_sun_position(capture);
       captures.insert(dataset_id, capture, hash, d.source);
       report.added.push_back(capture.label);

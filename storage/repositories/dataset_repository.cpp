@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "storage/importers/import_conflict.h"
 #include "storage/repositories/utc_clock.h"
 
 namespace clearsky::storage {
@@ -28,8 +29,8 @@ std::int64_t DatasetRepository::find_or_create(const std::string& name, const st
   query.bind(1, name);
   if (query.step()) {
     if (query.column_text(1) != format)
-      throw std::invalid_argument("dataset '" + name + "' exists with format " +
-                                  query.column_text(1) + ", not " + format);
+      throw ImportConflict("dataset '" + name + "' exists with format " + query.column_text(1) +
+                           ", not " + format);
     return query.column_int64(0);
   }
   auto insert = db_.prepare("INSERT INTO datasets (name, format, created_utc) VALUES (?, ?, ?)");

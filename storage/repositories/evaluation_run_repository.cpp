@@ -2,6 +2,9 @@
 // (evaluation_run_repository.h).
 #include "storage/repositories/evaluation_run_repository.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string_view>
 
@@ -15,8 +18,9 @@ namespace {
 constexpr const char* kRunSelect =
     "SELECT id, dataset_id, job_id, model_id, model_version, parameters, software_version,"
     " min_wavelength_nm, max_wavelength_nm, started_utc, finished_utc, status, error, rmse,"
-    " precompute_seconds, evaluate_seconds, processing_steps, wavelengths_nm, configuration"
-    " FROM evaluation_runs";
+    " precompute_seconds, evaluate_seconds, processing_steps, wavelengths_nm, configuration,"
+    " out_of_domain, samples_compared, samples_excluded, samples_clamped, captures_unanswered,"
+    " compared_samples FROM evaluation_runs";
 
 std::optional<double> optional_double(const Statement& row, int column) {
   if (row.is_null(column)) return std::nullopt;
@@ -26,6 +30,18 @@ std::optional<double> optional_double(const Statement& row, int column) {
 std::optional<std::string> optional_text(const Statement& row, int column) {
   if (row.is_null(column)) return std::nullopt;
   return row.column_text(column);
+}
+
+std::optional<std::int64_t> optional_int(const Statement& row, int column) {
+  if (row.is_null(column)) return std::nullopt;
+  return row.column_int64(column);
+}
+
+void bind_optional_int(Statement& statement, int index, std::optional<std::int64_t> value) {
+  if (value)
+    statement.bind(index, *value);
+  else
+    statement.bind_null(index);
 }
 
 RunRecord read_run(const Statement& row) {
@@ -49,6 +65,12 @@ RunRecord read_run(const Statement& row) {
   r.processing_steps = row.column_text(16);
   if (!row.is_null(17)) r.wavelengths_nm = decode_doubles(row.column_blob(17));
   r.configuration = row.column_text(18);
+  r.out_of_domain = row.column_text(19);
+  r.samples_compared = optional_int(row, 20);
+  r.samples_excluded = optional_int(row, 21);
+  r.samples_clamped = optional_int(row, 22);
+  r.captures_unanswered = optional_int(row, 23);
+  r.compared_samples = optional_text(row, 24);
   return r;
 }
 
@@ -74,7 +96,7 @@ std::int64_t EvaluationRunRepository::start(const NewRun& run) {
   auto statement = db_.prepare(
       "INSERT INTO evaluation_runs (dataset_id, job_id, model_id, model_version, parameters,"
       " software_version, min_wavelength_nm, max_wavelength_nm, started_utc, configuration,"
-      " status) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, 'running')");
+      " out_of_domain, status) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, 'running')");
   statement.bind(1, run.dataset_id);
   if (run.job_id)
     statement.bind(2, *run.job_id);
@@ -87,7 +109,8 @@ std::int64_t EvaluationRunRepository::start(const NewRun& run) {
       .bind(7, run.min_wavelength_nm)
       .bind(8, run.max_wavelength_nm)
       .bind(9, utc_now_iso8601())
-      .bind(10, run.configuration);
+      .bind(10, run.configuration)
+      .bind(11, run.out_of_domain);
   statement.run();
   return db_.last_insert_rowid();
 }
@@ -105,37 +128,73 @@ void EvaluationRunRepository::finish(std::int64_t run_id, double rmse, double pr
   auto insert = db_.prepare(
       "INSERT INTO evaluation_capture_results (run_id, capture_id, sun_zenith_deg, "
       "sun_azimuth_deg, rmse,"
-      " values_compared, sample_errors_id) VALUES (?, ?, ?, ?, ?, ?, ?)");
+      " values_compared, sample_errors_id, samples_compared, out_of_domain)"
+      " VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  auto label_of = db_.prepare("SELECT label FROM captures WHERE id = ?");
+  std::vector<std::pair<std::string, std::string>> key_lines;
+  std::optional<std::int64_t> samples_compared = 0;
+  std::int64_t samples_excluded = 0, samples_clamped = 0, captures_unanswered = 0;
   for (const RunCaptureResult& c : captures) {
+    const std::string handling = encode_sample_handling(c.out_of_domain);
+    label_of.reset();
+    label_of.bind(1, c.capture_id);
+    key_lines.emplace_back(label_of.step() ? label_of.column_text(0) : std::string(), handling);
+    if (samples_compared && c.samples_compared)
+      *samples_compared += *c.samples_compared;
+    else
+      samples_compared.reset();
+    std::vector<std::int32_t> clamped;
+    for (const SampleHandling& h : c.out_of_domain) {
+      if (h.handling == "excluded")
+        samples_excluded += static_cast<std::int64_t>(h.indices.size());
+      else
+        clamped.insert(clamped.end(), h.indices.begin(), h.indices.end());
+    }
+    std::sort(clamped.begin(), clamped.end());
+    samples_clamped += std::unique(clamped.begin(), clamped.end()) - clamped.begin();
+    if (!c.answered) ++captures_unanswered;
     const std::int64_t samples_id =
         c.samples ? store_sample_errors(db_, encode_sample_errors(*c.samples)) : 0;
     insert.reset();
     insert.bind(1, run_id)
         .bind(2, c.capture_id)
         .bind(3, c.sun_zenith_deg)
-        .bind(4, c.sun_azimuth_deg)
-        .bind(5, c.rmse)
-        .bind(6, c.values_compared);
+        .bind(4, c.sun_azimuth_deg);
+    if (c.answered)
+      insert.bind(5, c.rmse);
+    else
+      insert.bind_null(5);
+    insert.bind(6, c.values_compared);
     if (c.samples)
       insert.bind(7, samples_id);
     else
       insert.bind_null(7);
+    bind_optional_int(insert, 8, c.samples_compared);
+    insert.bind(9, handling);
     insert.run();
   }
   auto update = db_.prepare(
       "UPDATE evaluation_runs SET status = 'succeeded', finished_utc = ?, rmse = ?, "
       "precompute_seconds = ?,"
-      " evaluate_seconds = ?, processing_steps = ?, wavelengths_nm = ? WHERE id = ?");
-  update.bind(1, utc_now_iso8601())
-      .bind(2, rmse)
-      .bind(3, precompute_seconds)
-      .bind(4, evaluate_seconds)
-      .bind(5, processing_steps);
+      " evaluate_seconds = ?, processing_steps = ?, wavelengths_nm = ?, samples_compared = ?,"
+      " samples_excluded = ?, samples_clamped = ?, captures_unanswered = ?,"
+      " compared_samples = ? WHERE id = ?");
+  update.bind(1, utc_now_iso8601());
+  if (std::isfinite(rmse))
+    update.bind(2, rmse);
+  else
+    update.bind_null(2);
+  update.bind(3, precompute_seconds).bind(4, evaluate_seconds).bind(5, processing_steps);
   if (wavelengths_nm.empty())
     update.bind_null(6);
   else
     update.bind_blob(6, encode_doubles(wavelengths_nm));
-  update.bind(7, run_id);
+  bind_optional_int(update, 7, samples_compared);
+  update.bind(8, samples_excluded)
+      .bind(9, samples_clamped)
+      .bind(10, captures_unanswered)
+      .bind(11, compared_samples_key(std::move(key_lines)))
+      .bind(12, run_id);
   update.run();
   transaction.commit();
 }
@@ -163,7 +222,8 @@ std::optional<RunRecord> EvaluationRunRepository::get(std::int64_t run_id, bool 
   RunRecord run = read_run(query);
   auto results =
       db_.prepare(std::string("SELECT r.capture_id, c.label, c.time_utc_s, c.utc_offset_minutes, "
-                              "r.sun_zenith_deg, r.sun_azimuth_deg, r.rmse, r.values_compared, ") +
+                              "r.sun_zenith_deg, r.sun_azimuth_deg, r.rmse, r.values_compared, "
+                              "r.samples_compared, r.out_of_domain, ") +
                   (with_samples ? "e.data" : "NULL") +
                   " FROM evaluation_capture_results r JOIN captures c ON r.capture_id = c.id"
                   " LEFT JOIN evaluation_sample_errors e ON e.id = r.sample_errors_id"
@@ -177,9 +237,12 @@ std::optional<RunRecord> EvaluationRunRepository::get(std::int64_t run_id, bool 
     c.utc_offset_minutes = static_cast<int>(results.column_int64(3));
     c.sun_zenith_deg = results.column_double(4);
     c.sun_azimuth_deg = results.column_double(5);
-    c.rmse = results.column_double(6);
+    c.answered = !results.is_null(6);
+    c.rmse = c.answered ? results.column_double(6) : std::numeric_limits<double>::quiet_NaN();
     c.values_compared = results.column_int64(7);
-    if (!results.is_null(8)) c.samples = decode_sample_errors(results.column_blob(8));
+    c.samples_compared = optional_int(results, 8);
+    c.out_of_domain = decode_sample_handling(results.column_text(9));
+    if (!results.is_null(10)) c.samples = decode_sample_errors(results.column_blob(10));
     run.captures.push_back(std::move(c));
   }
   return run;
@@ -233,6 +296,7 @@ std::optional<RunRecord> EvaluationRunRepository::previous_like(const RunRecord&
   auto query = db_.prepare(std::string(kRunSelect) +
                            " WHERE dataset_id = ? AND model_id = ? AND configuration = ?"
                            " AND min_wavelength_nm = ? AND max_wavelength_nm = ?"
+                           " AND out_of_domain = ? AND compared_samples IS ?"
                            " AND status = 'succeeded' AND rmse IS NOT NULL AND id < ?"
                            " ORDER BY id DESC LIMIT 1");
   query.bind(1, run.dataset_id)
@@ -240,7 +304,12 @@ std::optional<RunRecord> EvaluationRunRepository::previous_like(const RunRecord&
       .bind(3, run.configuration)
       .bind(4, run.min_wavelength_nm)
       .bind(5, run.max_wavelength_nm)
-      .bind(6, run.id);
+      .bind(6, run.out_of_domain);
+  if (run.compared_samples)
+    query.bind(7, *run.compared_samples);
+  else
+    query.bind_null(7);
+  query.bind(8, run.id);
   if (!query.step()) return std::nullopt;
   return read_run(query);
 }

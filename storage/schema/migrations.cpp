@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "storage/repositories/compared_samples.h"
 #include "storage/schema/legacy_run_parameters.h"
 
 namespace clearsky::storage {
@@ -241,6 +242,66 @@ DROP TABLE imports;
 ALTER TABLE imports_v4 RENAME TO imports;
 CREATE INDEX imports_by_status ON imports(status);
 )sql",
+      // Version 5 (docs/data-api.md "Evaluations"): samples a model cannot answer are left out
+      // (or clamped) and counted instead of failing the run.
+      // - a capture result's rmse may be NULL (a capture of which the model answered no sample;
+      //   the table is rebuilt to drop NOT NULL), with the samples it compared and the
+      //   samples it left out or clamped (storage/repositories/compared_samples.h);
+      // - a run records its out-of-domain handling, the samples its RMSE covers, how many it
+      //   left out or clamped, its unanswered captures, and the key of its compared samples
+      //   that the history comparison matches. Runs stored before compared every sample of
+      //   their captures (they failed otherwise): their counts come from values_compared and
+      //   their key from their captures' labels.
+      R"sql(
+CREATE TABLE evaluation_capture_results_v5 (
+  run_id INTEGER NOT NULL REFERENCES evaluation_runs(id) ON DELETE CASCADE,
+  capture_id INTEGER NOT NULL REFERENCES captures(id) ON DELETE CASCADE,
+  sun_zenith_deg REAL NOT NULL,
+  sun_azimuth_deg REAL NOT NULL,
+  rmse REAL,
+  values_compared INTEGER NOT NULL,
+  sample_errors_id INTEGER REFERENCES evaluation_sample_errors(id),
+  samples_compared INTEGER,
+  out_of_domain TEXT NOT NULL DEFAULT '',
+  PRIMARY KEY (run_id, capture_id)
+);
+INSERT INTO evaluation_capture_results_v5 (run_id, capture_id, sun_zenith_deg, sun_azimuth_deg,
+                                           rmse, values_compared, sample_errors_id,
+                                           samples_compared)
+  SELECT r.run_id, r.capture_id, r.sun_zenith_deg, r.sun_azimuth_deg, r.rmse, r.values_compared,
+         r.sample_errors_id,
+         r.values_compared / (SELECT length(e.wavelengths_nm) / 8 FROM evaluation_runs e
+                              WHERE e.id = r.run_id)
+    FROM evaluation_capture_results r;
+DROP TABLE evaluation_capture_results;
+ALTER TABLE evaluation_capture_results_v5 RENAME TO evaluation_capture_results;
+CREATE INDEX capture_results_by_sample_errors ON evaluation_capture_results(sample_errors_id);
+CREATE TRIGGER sample_errors_follow_their_last_reference
+AFTER DELETE ON evaluation_capture_results
+WHEN OLD.sample_errors_id IS NOT NULL
+BEGIN
+  DELETE FROM evaluation_sample_errors WHERE id = OLD.sample_errors_id AND NOT EXISTS (
+    SELECT 1 FROM evaluation_capture_results WHERE sample_errors_id = OLD.sample_errors_id);
+END;
+
+ALTER TABLE evaluation_runs ADD COLUMN out_of_domain TEXT NOT NULL DEFAULT 'exclude';
+ALTER TABLE evaluation_runs ADD COLUMN samples_compared INTEGER;
+ALTER TABLE evaluation_runs ADD COLUMN samples_excluded INTEGER;
+ALTER TABLE evaluation_runs ADD COLUMN samples_clamped INTEGER;
+ALTER TABLE evaluation_runs ADD COLUMN captures_unanswered INTEGER;
+ALTER TABLE evaluation_runs ADD COLUMN compared_samples TEXT;
+UPDATE evaluation_runs SET
+  samples_compared = (SELECT CASE WHEN count(r.samples_compared) = count(*)
+                                  THEN total(r.samples_compared) END
+                        FROM evaluation_capture_results r WHERE r.run_id = evaluation_runs.id),
+  samples_excluded = 0, samples_clamped = 0, captures_unanswered = 0,
+  compared_samples = compared_samples_key((
+    SELECT group_concat(line, char(10)) FROM (
+      SELECT c.label || char(9) AS line FROM evaluation_capture_results r
+        JOIN captures c ON c.id = r.capture_id
+        WHERE r.run_id = evaluation_runs.id ORDER BY c.label)))
+  WHERE status = 'succeeded';
+)sql",
   };
   return migrations;
 }
@@ -274,6 +335,7 @@ int migrate(Database& db, const std::vector<std::string_view>& migrations) {
   const int latest = static_cast<int>(migrations.size());
   int applied = 0;
   register_legacy_run_parameters(db);
+  register_compared_samples_key(db);
   const ForeignKeysOff keys_off(db);
   for (;;) {
     Transaction transaction(db);

@@ -168,6 +168,18 @@ TEST(DatasetsApi, SameLabelWithOtherContentIs409) {
   EXPECT_EQ(list_datasets(db).items[0]["captures"], 1);
 }
 
+// The importer's conflicts are typed (storage::ImportConflict): a dataset name that another
+// format already uses is 409 as well, and its captures are untouched.
+TEST(DatasetsApi, DatasetOfAnotherFormatIs409) {
+  CLEARSKY_REQUIRE_SHARED_DATA(kArchive);
+  clearsky::testing::TempDir dir;
+  storage::Database db = storage::open_database(dir.path / "db.sqlite");
+  storage::DatasetRepository(db).find_or_create("uploaded", "another-format");
+  const std::string bytes = file_bytes(clearsky::testing::shared_data_dir() / kArchive);
+  EXPECT_EQ(status_of([&] { upload(db, dir.path / "u", bytes, 8u << 20); }), 409);
+  EXPECT_EQ(list_datasets(db).items[0]["captures"], 0);
+}
+
 TEST(UploadSpool, StaleFilesOfAKilledProcessAreRemovedAtStartUp) {
   clearsky::testing::TempDir dir;
   const auto folder = dir.path / "uploads";

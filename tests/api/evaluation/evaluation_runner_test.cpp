@@ -136,14 +136,23 @@ TEST(EvaluationRunner, JsonFollowsTheCliContract) {
   EXPECT_EQ(j.at("wavelength_range_nm").dump(), "[360,720]");
   ASSERT_EQ(j.at("models").size(), 1u);
   const auto& m = j.at("models")[0];
-  EXPECT_EQ(m.size(), 5u);
+  EXPECT_EQ(m.size(), 10u);
   EXPECT_EQ(m.at("model"), "offset");
+  // What the RMSE covers: every sample of both captures, none left out.
+  EXPECT_EQ(m.at("out_of_domain"), "exclude");
+  EXPECT_EQ(m.at("samples_compared"), 162);
+  EXPECT_EQ(m.at("samples_excluded"), 0);
+  EXPECT_EQ(m.at("samples_clamped"), 0);
+  EXPECT_EQ(m.at("captures_unanswered"), 0);
   EXPECT_NEAR(m.at("rmse").get<double>(), 3.0, 1e-9);
   EXPECT_TRUE(m.at("precompute_seconds").is_number());
   EXPECT_TRUE(m.at("evaluate_seconds").is_number());
   ASSERT_EQ(m.at("captures").size(), 2u);
   const auto& c = m.at("captures")[0];
-  EXPECT_EQ(c.size(), 4u);
+  EXPECT_EQ(c.size(), 7u);
+  EXPECT_EQ(c.at("samples_compared"), 81);
+  EXPECT_EQ(c.at("excluded").dump(), "[]");
+  EXPECT_EQ(c.at("clamped").dump(), "[]");
   EXPECT_EQ(c.at("time"), "2013-05-27T09:30:00-04:00");
   EXPECT_DOUBLE_EQ(c.at("sun_zenith").get<double>(), 40.0);
   EXPECT_TRUE(c.at("sun_azimuth").is_number());

@@ -284,6 +284,76 @@ TEST(EvaluationsApi, ParametersAreReturnedAsGivenAndHistoryComparesConfiguration
   EXPECT_TRUE(other["history"]["previous_run"].is_null());
 }
 
+// A capture whose sun the model cannot answer (95 degrees, the test models stop at 90) never
+// fails the run: it is unanswered and counted, the RMSE states the samples it covers, the
+// history compares only runs over the same samples with the same handling, and
+// "out_of_domain": "clamp" evaluates the model at its largest sun zenith instead.
+TEST(EvaluationsApi, SamplesTheModelCannotAnswerAreExcludedOrClampedAndCounted) {
+  Fixture f;
+  const auto run = [&](const std::string& body) {
+    const EvaluationReport report =
+        run_evaluation(f.db, parse_evaluation_request(f.db, body, factories(), "1"), factories());
+    return show_evaluation(f.db, report.models.at(0).run_id);
+  };
+  const std::string exclude = R"({"models": ["offset"], "dataset": "synthetic"})";
+  const auto before = run(exclude);
+  EXPECT_EQ(before["samples_compared"], 162);
+  {
+    MeasuredCapture low = testing::synthetic_capture(sky, 95.0, 125.0);
+    low.label = "capture low";
+    low.unix_time_utc_s += 1800.0;
+    storage::CaptureRepository(f.db).insert(storage::DatasetRepository(f.db).find("synthetic")->id,
+                                            low, "hash-low", "test");
+  }
+  const auto excluded = run(exclude);
+  EXPECT_EQ(excluded["status"], "succeeded");
+  EXPECT_EQ(excluded["out_of_domain"], "exclude");
+  EXPECT_EQ(excluded["parameters"].dump(), "{}");
+  EXPECT_EQ(excluded["samples_compared"], 162);
+  EXPECT_EQ(excluded["samples_excluded"], 81);
+  EXPECT_EQ(excluded["captures_unanswered"], 1);
+  EXPECT_NEAR(excluded["rmse"].get<double>(), before["rmse"].get<double>(), 1e-12);
+  ASSERT_EQ(excluded["captures"].size(), 3u);
+  const auto& low = excluded["captures"][2];
+  EXPECT_EQ(low["label"], "capture low");
+  EXPECT_TRUE(low["rmse"].is_null());
+  EXPECT_EQ(low["samples_compared"], 0);
+  ASSERT_EQ(low["excluded"].size(), 1u);
+  EXPECT_EQ(low["excluded"][0]["reason"], "sun_below_horizon_unsupported");
+  EXPECT_EQ(low["excluded"][0]["count"], 81);
+  EXPECT_EQ(low["excluded"][0]["samples"].size(), 81u);
+  // Not over the same samples as the run before the low capture (a capture more, unanswered).
+  EXPECT_TRUE(excluded["history"]["previous_run"].is_null());
+  EXPECT_EQ(run(exclude)["history"]["previous_run"], excluded["id"]);
+
+  const std::string clamp_body =
+      R"({"models": ["offset"], "dataset": "synthetic", "parameters": {"out_of_domain": "clamp"}})";
+  const auto clamped = run(clamp_body);
+  EXPECT_EQ(clamped["parameters"].dump(), R"({"out_of_domain":"clamp"})");
+  EXPECT_EQ(clamped["out_of_domain"], "clamp");
+  EXPECT_EQ(clamped["samples_compared"], 243);
+  EXPECT_EQ(clamped["samples_clamped"], 81);
+  EXPECT_EQ(clamped["captures_unanswered"], 0);
+  EXPECT_DOUBLE_EQ(clamped["captures"][2]["sun_zenith"].get<double>(), 90.0);
+  EXPECT_EQ(clamped["captures"][2]["clamped"][0]["reason"], "sun_below_horizon_unsupported");
+  EXPECT_TRUE(clamped["history"]["previous_run"].is_null());  // excluded runs are not alike
+  EXPECT_EQ(run(clamp_body)["history"]["previous_run"], clamped["id"]);
+
+  // Any other value is refused before queueing, naming the parameter.
+  try {
+    parse_evaluation_request(
+        f.db,
+        R"({"models": ["offset"], "dataset": "synthetic", "parameters": {"out_of_domain": "drop"}})",
+        factories(), "1");
+    ADD_FAILURE() << "accepted";
+  } catch (const ApiError& e) {
+    EXPECT_EQ(e.status(), 400);
+    EXPECT_EQ(e.parameter(), "out_of_domain");
+  }
+  // The list states what each run's RMSE covers.
+  EXPECT_EQ(list_evaluations(f.db, {}).items.at(0)["samples_compared"], 243);
+}
+
 // A list is filtered in SQL, then cut into pages of `limit` by id: every run once, newest
 // first, and the cursor of the last page absent.
 TEST(EvaluationsApi, ListsArePagedAfterFiltering) {

@@ -4,6 +4,11 @@
 #include "api/http/cache_policy.h"
 
 #include <gtest/gtest.h>
+#include <xxhash.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
 
 namespace clearsky::api {
 namespace {
@@ -28,6 +33,19 @@ TEST(CachePolicy, StrongTagIsAHashOfTheBody) {
   EXPECT_NE(strong_etag("abc"), strong_etag("abd"));
   EXPECT_EQ(strong_etag("").size(), 34u);  // 32 hex digits in quotes
   EXPECT_EQ(strong_etag("abc").front(), '"');
+}
+
+// The tag is XXH3-128 of the body, high then low 64 bits as 32 lowercase hex digits: the same
+// body keeps its tag across server versions, so clients' cached tags stay valid.
+TEST(CachePolicy, StrongTagIsTheHexOfXxh3_128) {
+  for (const std::string& body : std::vector<std::string>{"", "abc", std::string(1325, 'x')}) {
+    const XXH128_hash_t hash = XXH3_128bits(body.data(), body.size());
+    char expected[40];
+    std::snprintf(expected, sizeof expected, "\"%016llx%016llx\"",
+                  static_cast<unsigned long long>(hash.high64),
+                  static_cast<unsigned long long>(hash.low64));
+    EXPECT_EQ(strong_etag(body), expected) << body.size();
+  }
 }
 
 TEST(CachePolicy, IfNoneMatchUsesTheWeakComparison) {

@@ -65,5 +65,34 @@ TEST(ParseCoordinates, RangeAndMalformedInputNameTheParameter) {
   }
 }
 
+// A colon after a seconds component, or a fourth colon, made GeographicLib write past its
+// arrays and crash the server (found by fuzz/coordinates_fuzz.cpp): refused before it is read,
+// while the colon forms D:M and D:M:S stay accepted.
+TEST(ParseCoordinates, ColonAfterSecondsIsRefusedNotCrashing) {
+  const auto lat = [](const std::string& t) { return parse_latitude(t, "lat"); };
+  for (const char* bad : {"4\"1:1:d", "4\"1:1", "1:2:3:4", "1:2:3:4:5", "1d2:3:4", "1'2:3",
+                          "4\xe2\x80\xb3"
+                          "1:1"})
+    EXPECT_EQ(rejected_parameter(lat, bad), "lat") << bad;
+  EXPECT_NEAR(parse_latitude("42:26:36.4N"), 42.0 + 26.0 / 60 + 36.4 / 3600, 1e-12);
+  EXPECT_NEAR(parse_latitude("-42:30"), -42.5, 1e-12);
+  EXPECT_NEAR(parse_longitude("W76:28"), -(76.0 + 28.0 / 60), 1e-12);
+}
+
+// GeographicLib alone reads the 'e' of an exponent as East and its sign as a second term:
+// "1e-05" was -4 degrees, and a JSON body's 0.00001 reaches the parser as
+// "1.0000000000000001e-05" (found by fuzz/coordinates_fuzz.cpp).
+TEST(ParseCoordinates, ExponentsAreNumbersNotHemispheres) {
+  EXPECT_DOUBLE_EQ(parse_longitude("1e-05"), 1e-05);
+  EXPECT_DOUBLE_EQ(parse_longitude("1.0000000000000001e-05"), 1.0000000000000001e-05);
+  EXPECT_DOUBLE_EQ(parse_latitude("2.7777777777777779e-05"), 2.7777777777777779e-05);
+  EXPECT_DOUBLE_EQ(parse_latitude(" -1.5E+01 "), -15.0);
+  EXPECT_DOUBLE_EQ(parse_longitude("+1e2"), 100.0);
+  EXPECT_DOUBLE_EQ(parse_longitude("12E"), 12.0);  // a hemisphere letter still is one
+  const auto lon = [](const std::string& t) { return parse_longitude(t, "lon"); };
+  for (const char* bad : {"2e-3W", "1e-5d", "1e999", "1.5e+01'"})
+    EXPECT_EQ(rejected_parameter(lon, bad), "lon") << bad;
+}
+
 }  // namespace
 }  // namespace clearsky::api

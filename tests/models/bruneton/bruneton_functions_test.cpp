@@ -87,6 +87,17 @@ TEST(BrunetonFunctions, ViewCosinesLandOnTheirTexels) {
   }
 }
 
+// A horizontal view from the top of the atmosphere: Rt^2 - r^2 (1 - mu^2) is 0, but summed
+// from terms of order r^2 it rounded to -1.2e-4 m^2 for this shell, which safe_sqrt's
+// assertion took for a clearly negative value (found by fuzz/table_cache_fuzz.cpp). It maps
+// to the sky half's first row.
+TEST(BrunetonFunctions, GrazingViewFromTheTopIsTheSkyHalfsFirstRow) {
+  const ShellGeometry shell{6359999.90625, 6420000.0, 6421000.0};
+  const Axis a = mu_axis_4d(shell.top_m, 0.0, kRes, shell);
+  EXPECT_EQ(a.i0, kRes.mu / 2);
+  EXPECT_NEAR(a.f, 0.0, 1e-9);
+}
+
 TEST(BrunetonFunctions, SunAndViewSunCosinesLandOnTheirTexels) {
   for (int i = 1; i < kRes.mu_s; ++i) {
     const double mu_s = texel_mu_s(i, kRes.mu_s, kRes.sun);

@@ -452,6 +452,28 @@ TEST(BrunetonCache, RoundTripAndRejection) {
   EXPECT_NE(BrunetonModel::cache_key(other), key);
 }
 
+// Single scattering only: the multiple-scattering table is stored empty, and reads back empty
+// (its empty array was once copied from a null pointer, which UBSan reports; found by
+// fuzz/table_cache_fuzz.cpp).
+TEST(BrunetonCache, OneOrderRoundTrip) {
+  MemoryTableCache cache;
+  PrecomputeContext context;
+  context.cache = &cache;
+  ModelConfig config = small_bruneton_config(1);
+  config.wavelengths = WavelengthGrid::points({550.0});
+  config.options["table_r_size"] = 4;
+  config.options["table_mu_size"] = 8;
+  config.options["table_mu_s_size"] = 4;
+  config.options["table_nu_size"] = 2;
+  const auto built = make(config, context);
+  ASSERT_TRUE(built->tables().multiple.empty());
+  const auto loaded = make(config, context);
+  EXPECT_TRUE(loaded->loaded_from_cache());
+  EXPECT_TRUE(loaded->tables().multiple.empty());
+  EXPECT_TRUE(loaded->tables().multiple.row_scale.empty());
+  EXPECT_EQ(loaded->tables().single_rayleigh.values, built->tables().single_rayleigh.values);
+}
+
 TEST(BrunetonPrecomputation, ReportsProgressAndCancels) {
   std::vector<double> fractions;
   PrecomputeContext context;

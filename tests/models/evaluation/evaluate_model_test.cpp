@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include "models/core/fit_domain.h"
 #include "tests/models/evaluation/function_model.h"
 #include "tests/models/evaluation/synthetic_sky.h"
 
@@ -131,10 +133,114 @@ TEST(EvaluateModel, RefusesUnpreparedCaptures) {
   EXPECT_THROW(evaluate_sky_model(model, std::vector<MeasuredCapture>{}), std::invalid_argument);
 }
 
-TEST(EvaluateModel, ModelThatCannotAnswerTheSunIsAnError) {
+// A capture whose sun the model cannot answer is unanswered, counted, and left out of the
+// total; the other captures are evaluated as alone.
+TEST(EvaluateModel, CaptureWhoseSunTheModelCannotAnswerIsUnanswered) {
+  const FunctionModel model([](const ViewDirection& v, double nm) { return sky(v, nm) - 0.002; });
+  const std::vector<MeasuredCapture> captures = {testing::synthetic_capture(sky, 95.0, 120.0),
+                                                 testing::synthetic_capture(sky)};
+  const EvaluationResult r = evaluate_sky_model(model, captures);
+  ASSERT_EQ(r.captures.size(), 2u);
+  EXPECT_FALSE(r.captures[0].answered());
+  EXPECT_EQ(r.captures[0].values_compared, 0u);
+  ASSERT_EQ(r.captures[0].excluded.size(), 1u);
+  EXPECT_EQ(r.captures[0].excluded[0].reason, SampleStatus::sun_below_horizon_unsupported);
+  EXPECT_EQ(r.captures[0].excluded[0].indices.size(), 81u);
+  EXPECT_TRUE(r.captures[1].answered());
+  EXPECT_NEAR(r.rmse, 2.0, 1e-9);  // the answered capture only
+  EXPECT_EQ(r.samples_compared, 81u);
+  EXPECT_EQ(r.samples_excluded, 81u);
+  EXPECT_EQ(r.captures_unanswered, 1u);
+  // Clamped: the sun at the model's largest zenith (90), every sample listed as clamped.
+  EvaluationOptions clamp;
+  clamp.out_of_domain = OutOfDomain::clamp;
+  const EvaluationResult c = evaluate_sky_model(model, captures, clamp);
+  EXPECT_TRUE(c.captures[0].answered());
+  EXPECT_DOUBLE_EQ(c.captures[0].sun_zenith_deg, 90.0);
+  ASSERT_EQ(c.captures[0].clamped.size(), 1u);
+  EXPECT_EQ(c.captures[0].clamped[0].reason, SampleStatus::sun_below_horizon_unsupported);
+  EXPECT_EQ(c.samples_compared, 162u);
+  EXPECT_EQ(c.samples_clamped, 81u);
+  EXPECT_NEAR(c.rmse, 2.0, 1e-9);
+}
+
+// A model that answers no sample of any capture: every capture unanswered, no RMSE, no throw.
+TEST(EvaluateModel, NoAnsweredCaptureGivesNoRmse) {
   const FunctionModel model(sky);
   const std::vector<MeasuredCapture> captures = {testing::synthetic_capture(sky, 95.0, 120.0)};
-  EXPECT_THROW(evaluate_sky_model(model, captures), std::runtime_error);
+  const EvaluationResult r = evaluate_sky_model(model, captures);
+  EXPECT_TRUE(std::isnan(r.rmse));
+  EXPECT_EQ(r.samples_compared, 0u);
+  EXPECT_EQ(r.captures_unanswered, 1u);
+}
+
+// Samples outside a fitted model's domain: excluded (and the capture's RMSE over the others,
+// exactly as if those samples were not measured), or clamped to the fit's limit of no light by
+// the model's own clamp_negative_fit.
+TEST(EvaluateModel, SamplesOutsideTheFitDomainAreExcludedOrClamped) {
+  static const ModelDescriptor fit_descriptor = [] {
+    ModelDescriptor d = test_descriptor();
+    d.id = "fit";
+    d.parameters = {{.name = kClampNegativeFitOption,
+                     .description = "0 for negative",
+                     .default_value = 0,
+                     .min_value = 0,
+                     .max_value = 1,
+                     .integer = true}};
+    return d;
+  }();
+  // Negative (outside the fit) below 20 degrees of elevation, the measured sky elsewhere.
+  class FitModel : public SkyModel {
+   public:
+    explicit FitModel(ModelConfig config) : SkyModel(std::move(config)) {}
+    const ModelDescriptor& descriptor() const override { return fit_descriptor; }
+
+   protected:
+    void compute_sky_radiance(const SunState&, const Viewpoint&,
+                              std::span<const ViewDirection> views,
+                              SpectralBatch& out) const override {
+      const bool clamp = option_or_default(fit_descriptor, config(), kClampNegativeFitOption) != 0;
+      for (std::size_t v = 0; v < views.size(); ++v) {
+        auto spectrum = out.spectrum(v);
+        for (std::size_t i = 0; i < wavelengths().size(); ++i)
+          spectrum[i] =
+              views[v].zenith_rad > 70 * kDegree ? -0.01 : sky(views[v], wavelengths()[i]);
+        out.status[v] = apply_fit_domain(spectrum, clamp);
+      }
+    }
+    Spectrum compute_sun_irradiance(const SunState&, const Viewpoint&) const override {
+      return Spectrum(wavelengths().size(), 0.0);
+    }
+  };
+  const ModelFactory factory{&fit_descriptor,
+                             [](const ModelConfig& config, const PrecomputeContext&) {
+                               return std::shared_ptr<const SkyModel>(new FitModel(config));
+                             }};
+  const std::vector<MeasuredCapture> captures = {testing::synthetic_capture(sky)};
+  const EvaluationResult excluded = evaluate_model(factory, ModelConfig{}, captures);
+  const CaptureEvaluation& e = excluded.captures[0];
+  ASSERT_EQ(e.excluded.size(), 1u);
+  EXPECT_EQ(e.excluded[0].reason, SampleStatus::outside_fit_domain);
+  const std::size_t low = e.excluded[0].indices.size();  // the lowest ring
+  EXPECT_EQ(low + e.samples.size(), 81u);
+  EXPECT_GT(low, 0u);
+  EXPECT_NEAR(excluded.rmse, 0.0, 1e-9);  // the answered samples are the measured sky
+  EXPECT_EQ(e.values_compared, e.samples.size() * 31u);
+
+  EvaluationOptions clamp;
+  clamp.out_of_domain = OutOfDomain::clamp;
+  const EvaluationResult clamped = evaluate_model(factory, ModelConfig{}, captures, clamp);
+  const CaptureEvaluation& c = clamped.captures[0];
+  EXPECT_TRUE(c.excluded.empty());
+  ASSERT_EQ(c.clamped.size(), 1u);
+  EXPECT_EQ(c.clamped[0].indices, e.excluded[0].indices);
+  EXPECT_EQ(c.samples.size(), 81u);
+  // The clamped samples answer 0: their error is minus the measurement.
+  for (const SampleEvaluation& s : c.samples) {
+    const bool was_clamped = std::find(c.clamped[0].indices.begin(), c.clamped[0].indices.end(),
+                                       s.index) != c.clamped[0].indices.end();
+    EXPECT_EQ(was_clamped, s.bias < -1.0) << s.index;
+  }
 }
 
 std::shared_ptr<const SkyModel> create_offset_model(const ModelConfig& config,

@@ -15,12 +15,12 @@
 #include <vector>
 
 #include "tests/server/http/raw_request.h"
-#include "tests/server/http/serve_process.h"
+#include "tests/server/http/watched_serve_process.h"
 
 namespace clearsky::server {
 namespace {
 
-using testing::ServeProcess;
+using testing::WatchedServeProcess;
 
 constexpr const char* kToken = "t0ken";
 const std::string kSun = "model=oneal&sun_zenith=30&sun_azimuth=0";
@@ -57,14 +57,14 @@ nlohmann::json error_of(const httplib::Result& r, int status, const std::string&
 class RequestEdge : public ::testing::Test {
  protected:
   void SetUp() override {
-    server = std::make_unique<ServeProcess>(server_arguments());
+    server = std::make_unique<WatchedServeProcess>(server_arguments());
     ASSERT_GT(server->port(), 0) << "the server did not start:\n" << server->log();
   }
   void expect_served() {
     EXPECT_TRUE(server->alive()) << "the server ended with signal " << server->end_signal();
     if (server->alive()) EXPECT_TRUE(server->healthy_within_1s());
   }
-  std::unique_ptr<ServeProcess> server;
+  std::unique_ptr<WatchedServeProcess> server;
 };
 
 TEST_F(RequestEdge, BodiesNestedTooDeepAreRefusedNamingTheMemberAndTheLimit) {
@@ -135,7 +135,7 @@ TEST_F(RequestEdge, BytesThatAreNotUtf8AreAnsweredAndTheConnectionReleased) {
 }
 
 TEST(RequestEdgeFewFiles, ThreeHundredNonUtf8RequestsLeaveTheServerAnswering) {
-  ServeProcess server(server_arguments(), 256);
+  WatchedServeProcess server(server_arguments(), 256);
   ASSERT_GT(server.port(), 0) << "the server did not start:\n" << server.log();
   for (int i = 0; i < 300; ++i) {
     httplib::Client one("127.0.0.1", server.port());

@@ -10,15 +10,15 @@
 #include "api/colour/xyz_weights.h"
 #include "models/core/sky_model.h"
 #include "tests/server/http/decoded_exr.h"
-#include "tests/server/http/serve_process.h"
+#include "tests/server/http/watched_serve_process.h"
 
 namespace clearsky::server {
 namespace {
 
-using testing::ServeProcess;
+using testing::WatchedServeProcess;
 
 TEST(RgbGamut, NegativeComponentsAreClippedAndFlaggedExactly) {
-  ServeProcess server({"--models", "oneal", "--prebuild-three", "false"});
+  WatchedServeProcess server({"--models", "oneal", "--prebuild-three", "false"});
   ASSERT_GT(server.port(), 0) << server.log();
   auto c = server.client();
   nlohmann::json views = nlohmann::json::array();
