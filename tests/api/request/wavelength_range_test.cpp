@@ -16,6 +16,14 @@
 namespace clearsky::api {
 namespace {
 
+ApiRequest get(const std::string& path, const NameValues& query) {
+  ApiRequest r;
+  r.method = "GET";
+  r.path = path;
+  r.query = query;
+  return r;
+}
+
 // The real factories, counting the builds asked for (there must be none).
 class CountingProvider final : public ModelProvider {
  public:
@@ -61,12 +69,9 @@ TEST(WavelengthRange, OutsideEveryModelsDeclaredRangeIs422BeforeAnyBuild) {
       view.insert(view.end(), {{"view_zenith", "10"}, {"view_azimuth", "0"}});
       NameValues image = sky;
       image.insert(image.end(), {{"channels", "spectral"}, {"size", "8"}});
-      for (const auto& attempt : {std::function<void()>([&] {
-                                    radiance(context, {"GET", "/v1/radiance", view});
-                                  }),
-                                  std::function<void()>([&] {
-                                    prepare_skydome(context, {"GET", "/v1/skydome", image});
-                                  })}) {
+      for (const auto& attempt :
+           {std::function<void()>([&] { radiance(context, get("/v1/radiance", view)); }),
+            std::function<void()>([&] { prepare_skydome(context, get("/v1/skydome", image)); })}) {
         try {
           attempt();
           ADD_FAILURE() << "answered";

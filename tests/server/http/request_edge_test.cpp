@@ -62,7 +62,9 @@ class RequestEdge : public ::testing::Test {
   }
   void expect_served() {
     EXPECT_TRUE(server->alive()) << "the server ended with signal " << server->end_signal();
-    if (server->alive()) EXPECT_TRUE(server->healthy_within_1s());
+    if (server->alive()) {
+      EXPECT_TRUE(server->healthy_within_1s());
+    }
   }
   std::unique_ptr<WatchedServeProcess> server;
 };

@@ -5,7 +5,9 @@
 // skydome has no negative pixel and says how it maps the gamut.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "api/colour/xyz_weights.h"
 #include "models/core/sky_model.h"
@@ -21,6 +23,12 @@ TEST(RgbGamut, NegativeComponentsAreClippedAndFlaggedExactly) {
   WatchedServeProcess server({"--models", "oneal", "--prebuild-three", "false"});
   ASSERT_GT(server.port(), 0) << server.log();
   auto c = server.client();
+  // Answers wait for the model's tables (O'Neal's ground irradiance table is built at start).
+  for (int i = 0; i < 600; ++i) {
+    const auto ready = c.Get("/readyz");
+    if (ready && ready->status == 200) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
   nlohmann::json views = nlohmann::json::array();
   for (int zenith = 0; zenith <= 90; zenith += 10)
     for (int azimuth = -180; azimuth < 180; azimuth += 30) views.push_back({zenith, azimuth});
