@@ -3,12 +3,15 @@
 // it into {"error": {"code", "message", "parameter"}} (docs/http-api.md); the CLI prints the
 // message under the option's name (docs/request-parsing.md). Handlers throw it at the edge
 // (parsing, capability checks); models never see it: they throw clearsky::InvalidInput, which
-// from_invalid_input turns into an ApiError naming the request parameter.
+// from_invalid_input turns into an ApiError naming the request parameter. Messages and
+// parameter names often quote the client's text: both are kept valid UTF-8 and bounded here
+// (api/error/utf8_text.h), so that every error can be written as JSON.
 #pragma once
 
 #include <stdexcept>
 #include <string>
 
+#include "api/error/utf8_text.h"
 #include "models/core/invalid_input.h"
 
 namespace clearsky::api {
@@ -16,21 +19,28 @@ namespace clearsky::api {
 class ApiError : public std::runtime_error {
  public:
   // message is the whole text (what()); reason() is then the same text.
-  ApiError(int status, std::string code, std::string parameter, const std::string& message,
+  ApiError(int status, std::string code, const std::string& parameter, const std::string& message,
            int retry_after_s = 0)
-      : std::runtime_error(message),
+      : std::runtime_error(quoted_client_text(message, kMaxMessageBytes)),
         status_(status),
         code_(std::move(code)),
-        parameter_(std::move(parameter)),
-        reason_(message),
+        parameter_(quoted_client_text(parameter, kMaxParameterBytes)),
+        reason_(what()),
         retry_after_s_(retry_after_s) {}
 
   // An error about a parameter: what() is "<parameter>: <reason>".
-  static ApiError about(int status, std::string code, std::string parameter, std::string reason) {
-    ApiError error(status, std::move(code), parameter, parameter + ": " + reason);
-    error.reason_ = std::move(reason);
+  static ApiError about(int status, std::string code, const std::string& parameter,
+                        const std::string& reason) {
+    ApiError error(status, std::move(code), parameter,
+                   quoted_client_text(parameter, kMaxParameterBytes) + ": " + reason);
+    error.reason_ = quoted_client_text(reason, kMaxMessageBytes);
     return error;
   }
+
+  // Bounds of the client text an error quotes (a 8 MiB body member named in an error is not
+  // sent back whole).
+  static constexpr std::size_t kMaxMessageBytes = 1024;
+  static constexpr std::size_t kMaxParameterBytes = 256;
 
   int status() const { return status_; }
   const std::string& code() const { return code_; }

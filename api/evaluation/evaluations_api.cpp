@@ -9,6 +9,7 @@
 
 #include "api/encode/iso8601_time.h"
 #include "api/error/api_error.h"
+#include "api/http/json_body.h"
 #include "api/parse/iso8601_time.h"
 #include "api/request/sky_request.h"
 #include "storage/repositories/dataset_repository.h"
@@ -115,13 +116,8 @@ nlohmann::json parse_evaluation_parameters(const nlohmann::json& parameters,
 EvaluationRequest parse_evaluation_request(storage::Database& db, const std::string& body,
                                            std::span<const ModelFactory> available,
                                            const std::string& software_version) {
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(body);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw ApiError(400, "invalid_body", "", std::string("the body is not valid JSON: ") + e.what());
-  }
-  if (!j.is_object()) throw ApiError(400, "invalid_body", "", "the body must be a JSON object");
+  nlohmann::json j = parse_client_json(body);
+  if (!j.is_object()) throw ApiError::about(400, "invalid_body", "body", "must be a JSON object");
   for (const auto& [name, value] : j.items()) {
     if (name != "models" && name != "dataset" && name != "parameters")
       throw unknown_parameter(name, "POST /v1/evaluations");

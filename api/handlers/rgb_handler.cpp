@@ -3,11 +3,14 @@
 // integrated against the CIE 1931 matching functions (models/colour). method=three: the
 // paper's 3-wavelength method (section "Spectrum sampling"): the model built on the points
 // 440, 550, 680 nm and c = k_c L(lambda_c) (models/colour/three_wavelength_rgb.h).
-// RGB values are radiometric (XYZ with Y in W/(m2.sr)); luminance is 683 Y.
+// RGB values are radiometric (XYZ with Y in W/(m2.sr)); luminance is 683 Y. Negative
+// components (colours outside the sRGB gamut) are clipped to 0 and flagged per sample
+// (api/colour/srgb_gamut.h); the luminance is the colour's before clipping.
 #include <algorithm>
 #include <limits>
 #include <string>
 
+#include "api/colour/srgb_gamut.h"
 #include "api/colour/xyz_weights.h"
 #include "api/handlers/handlers.h"
 #include "api/handlers/sky_radiance_query.h"
@@ -48,6 +51,7 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
   const SpectralBatch batch = checked_sky_radiance(context.models, m.model, sun, viewpoint, views);
 
   nlohmann::json samples = nlohmann::json::array();
+  std::size_t clipped_samples = 0;
   const XyzWeights xyz(m.model->wavelengths());
   for (std::size_t v = 0; v < batch.size(); ++v) {
     const auto spectrum = batch.spectrum(v);
@@ -61,9 +65,12 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
       c = xyz_to_linear_srgb(x);
       luminance = kMaxLuminousEfficacy * x.y;
     }
+    const GamutMappedSrgb mapped = clip_to_srgb_gamut(c);
+    if (mapped.clipped) ++clipped_samples;
     samples.push_back({{"view_zenith_deg", views.zenith_deg[v]},
                        {"view_azimuth_deg", views.azimuth_deg[v]},
-                       {"rgb", {finite(c.r), finite(c.g), finite(c.b)}},
+                       {"rgb", {finite(mapped.rgb.r), finite(mapped.rgb.g), finite(mapped.rgb.b)}},
+                       {"gamut_clipped", mapped.clipped},
                        {"luminance_cd_m2", finite(luminance)}});
   }
   nlohmann::json body = {{"model", factory.descriptor->id},
@@ -72,6 +79,8 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
                          {"sun", sun_json(sun)},
                          {"altitude_m", viewpoint.altitude_m},
                          {"colour_space", "linear sRGB (D65), radiometric: Y in W/(m2.sr)"},
+                         {"gamut_mapping", "negative components clipped to 0"},
+                         {"gamut_clipped_samples", clipped_samples},
                          {"samples", std::move(samples)}};
   if (method == "spectral") {
     // A model with a narrower range than the grid (Hosek: 320..720 nm) contributes nothing

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "api/http/json_body.h"
+
 namespace clearsky::api {
 
 namespace {
@@ -41,14 +43,7 @@ std::optional<std::string_view> ApiResponse::header(std::string_view name) const
   return find_header(headers, name);
 }
 
-nlohmann::json request_body(const ApiRequest& request) {
-  try {
-    return nlohmann::json::parse(request.body);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw ApiError(400, "invalid_body", "",
-                   std::string("the request body is not valid JSON: ") + e.what());
-  }
-}
+nlohmann::json request_body(const ApiRequest& request) { return parse_client_json(request.body); }
 
 Parameters request_parameters(const ApiRequest& request,
                               std::initializer_list<std::string_view> structured) {
@@ -66,17 +61,20 @@ Parameters query_parameters(const ApiRequest& request) {
   return p;
 }
 
+// Answers may carry stored text that came from clients (dataset names, capture labels read
+// from archive entries): a byte that is not UTF-8 is written as U+FFFD rather than making the
+// serializer throw (type_error 316), which would turn every later read of it into a 500.
 ApiResponse json_response(const nlohmann::json& body, int status) {
   ApiResponse r;
   r.status = status;
-  r.body = body.dump();
+  r.body = body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   return r;
 }
 
 ApiResponse ordered_json_response(const nlohmann::ordered_json& body, int status) {
   ApiResponse r;
   r.status = status;
-  r.body = body.dump();
+  r.body = body.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
   return r;
 }
 

@@ -7,6 +7,7 @@
 #include "api/encode/iso8601_time.h"
 #include "api/error/api_error.h"
 #include "api/evaluation/evaluations_api.h"
+#include "api/http/json_body.h"
 #include "api/jobs/cron_schedule.h"
 #include "storage/repositories/dataset_repository.h"
 #include "storage/repositories/evaluation_run_repository.h"
@@ -91,13 +92,8 @@ std::string job_location(std::int64_t id) { return "/v1/jobs/" + std::to_string(
 
 CreatedResource create_job(storage::Database& db, const std::string& body,
                            std::span<const ModelFactory> available, double now_unix_s) {
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(body);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw ApiError(400, "invalid_body", "", std::string("the body is not valid JSON: ") + e.what());
-  }
-  if (!j.is_object()) throw ApiError(400, "invalid_body", "", "the body must be a JSON object");
+  nlohmann::json j = parse_client_json(body);
+  if (!j.is_object()) throw ApiError::about(400, "invalid_body", "body", "must be a JSON object");
   for (const auto& [name, value] : j.items())
     if (name != "name" && name != "schedule" && name != "dataset" && name != "models" &&
         name != "parameters")

@@ -91,18 +91,19 @@ Json schemas() {
   },
   "RgbSample": {
     "type": "object",
-    "required": ["view_zenith_deg", "view_azimuth_deg", "rgb", "luminance_cd_m2"],
+    "required": ["view_zenith_deg", "view_azimuth_deg", "rgb", "gamut_clipped", "luminance_cd_m2"],
     "additionalProperties": false,
     "properties": {
       "view_zenith_deg": {"type": "number"},
       "view_azimuth_deg": {"type": "number"},
-      "rgb": {"type": "array", "minItems": 3, "maxItems": 3, "items": {"type": "number"}, "description": "Linear sRGB (D65), radiometric: XYZ with Y in W/(m2.sr)."},
-      "luminance_cd_m2": {"type": "number", "minimum": 0}
+      "rgb": {"type": "array", "minItems": 3, "maxItems": 3, "items": {"type": "number", "minimum": 0}, "description": "Linear sRGB (D65), radiometric: XYZ with Y in W/(m2.sr). Never negative: a colour outside the sRGB gamut has its negative components clipped to 0 (gamut_clipped)."},
+      "gamut_clipped": {"type": "boolean", "description": "true when the colour was outside the sRGB gamut and a negative component of rgb was clipped to 0 (the other components and the luminance are the colour's own)."},
+      "luminance_cd_m2": {"type": "number", "minimum": 0, "description": "683 Y of the colour before any clipping."}
     }
   },
   "Rgb": {
     "type": "object",
-    "required": ["model", "model_version", "method", "sun", "altitude_m", "colour_space", "samples"],
+    "required": ["model", "model_version", "method", "sun", "altitude_m", "colour_space", "gamut_mapping", "gamut_clipped_samples", "samples"],
     "additionalProperties": false,
     "properties": {
       "model": {"type": "string"},
@@ -111,6 +112,8 @@ Json schemas() {
       "sun": {"$ref": "#/components/schemas/SunUsed"},
       "altitude_m": {"type": "number"},
       "colour_space": {"type": "string"},
+      "gamut_mapping": {"type": "string", "enum": ["negative components clipped to 0"], "description": "How colours outside the sRGB gamut are sent: each negative linear component is set to 0, the others are kept."},
+      "gamut_clipped_samples": {"type": "integer", "minimum": 0, "description": "How many samples have gamut_clipped true."},
       "integrated_range_nm": {"type": "array", "minItems": 2, "maxItems": 2, "items": {"type": "number"}, "description": "method=spectral: the wavelengths the CIE integral covers."},
       "warning": {"type": "string", "description": "When the model answers only part of the grid (e.g. Hosek up to 720 nm): the missing light counts as zero."},
       "samples": {"type": "array", "items": {"$ref": "#/components/schemas/RgbSample"}}
@@ -154,7 +157,7 @@ Json schemas() {
   "SkydomeImage": {
     "type": "string",
     "format": "binary",
-    "description": "An uncompressed scan-line OpenEXR file, streamed (chunked) as it is computed: channels R, G, B (rgb), Y (luminance) or S0.<nm>nm (spectral, Fichet et al. 2021), and A, 1 where the model answered and 0 where it did not."
+    "description": "An uncompressed scan-line OpenEXR file, streamed (chunked) as it is computed: channels R, G, B (rgb), Y (luminance) or S0.<nm>nm (spectral, Fichet et al. 2021), and A, 1 where the model answered and 0 where it did not. R, G and B are never negative: out of gamut colours have their negative components clipped to 0, as the header attribute clearskyGamutMapping says."
   }
 })json");
   const Json sky = sky_body_properties();
@@ -363,7 +366,7 @@ Json operations() {
     "operationId": "getRgb",
     "tags": ["sky"],
     "summary": "Colour and luminance for one view",
-    "description": "Linear sRGB (D65, radiometric: Y in W/(m2.sr)) and luminance (cd/m2): method=spectral integrates the model's 40-bin spectrum against the CIE 1931 functions; method=three is the paper's 3-wavelength method (the model built on 440, 550 and 680 nm).",
+    "description": "Linear sRGB (D65, radiometric: Y in W/(m2.sr)) and luminance (cd/m2): method=spectral integrates the model's 40-bin spectrum against the CIE 1931 functions; method=three is the paper's 3-wavelength method (the model built on 440, 550 and 680 nm). No component is negative: a colour outside the sRGB gamut (the saturated sky of a low sun) has its negative components clipped to 0, and its sample says so (gamut_clipped; gamut_clipped_samples counts them).",
     "parameters": [
       {"name": "method", "in": "query", "required": false, "description": "spectral (CIE 1931 over the 40 bins) or three (the paper's 3-wavelength method).", "schema": {"type": "string", "enum": ["spectral", "three"], "default": "spectral"}}
     ],
@@ -372,7 +375,7 @@ Json operations() {
         "description": "Colour.",
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/Rgb"},
-          "example": {"altitude_m": 0.0, "colour_space": "linear sRGB (D65), radiometric: Y in W/(m2.sr)", "integrated_range_nm": [360.0, 830.0], "method": "spectral", "model": "preetham", "model_version": "1", "samples": [{"luminance_cd_m2": 5404.272403652347, "rgb": [4.374940149346866, 8.14954111417067, 15.988335948967407], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}], "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}}
+          "example": {"altitude_m": 0.0, "colour_space": "linear sRGB (D65), radiometric: Y in W/(m2.sr)", "gamut_clipped_samples": 0, "gamut_mapping": "negative components clipped to 0", "integrated_range_nm": [360.0, 830.0], "method": "spectral", "model": "preetham", "model_version": "1", "samples": [{"gamut_clipped": false, "luminance_cd_m2": 5404.272403652347, "rgb": [4.374940149346866, 8.14954111417067, 15.988335948967407], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}], "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}}
         }}
       }
     }
@@ -394,7 +397,7 @@ Json operations() {
         "description": "Colour, one sample per view, in the order given.",
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/Rgb"},
-          "example": {"altitude_m": 0.0, "colour_space": "linear sRGB (D65), radiometric: Y in W/(m2.sr)", "integrated_range_nm": [360.0, 724.25], "method": "spectral", "model": "hosek", "model_version": "1", "samples": [{"luminance_cd_m2": 3125.214328653716, "rgb": [2.618930817129737, 4.657793717117717, 9.528364421411645], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}, {"luminance_cd_m2": 5483.929524803734, "rgb": [5.293662459038357, 8.191446310734195, 14.481891990482866], "view_azimuth_deg": 90.0, "view_zenith_deg": 60.0}], "sun": {"azimuth_deg": 136.0464246389158, "source": "spa", "zenith_deg": 26.652540765126872}, "warning": "the model answers only part of the grid; the CIE integral covers [360.000000, 724.250000] nm (missing light counts as zero)"}
+          "example": {"altitude_m": 0.0, "colour_space": "linear sRGB (D65), radiometric: Y in W/(m2.sr)", "gamut_clipped_samples": 0, "gamut_mapping": "negative components clipped to 0", "integrated_range_nm": [360.0, 724.25], "method": "spectral", "model": "hosek", "model_version": "1", "samples": [{"gamut_clipped": false, "luminance_cd_m2": 3125.214328653716, "rgb": [2.618930817129737, 4.657793717117717, 9.528364421411645], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}, {"gamut_clipped": false, "luminance_cd_m2": 5483.929524803734, "rgb": [5.293662459038357, 8.191446310734195, 14.481891990482866], "view_azimuth_deg": 90.0, "view_zenith_deg": 60.0}], "sun": {"azimuth_deg": 136.0464246389158, "source": "spa", "zenith_deg": 26.652540765126872}, "warning": "the model answers only part of the grid; the CIE integral covers [360.000000, 724.250000] nm (missing light counts as zero)"}
         }}
       }
     }

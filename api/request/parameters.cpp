@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "api/error/api_error.h"
+#include "api/error/utf8_text.h"
 
 namespace clearsky::api {
 
@@ -53,6 +54,13 @@ double number_value(const std::string& parameter, std::string_view text) {
 }
 
 void Parameters::add(const std::string& name, std::string value) {
+  // Every value a handler reads is text it may quote, store or send back: refused here unless
+  // it is UTF-8, so that no handler meets other bytes (docs/request-parsing.md).
+  if (!is_valid_utf8(name))
+    throw invalid_parameter(name,
+                            "a parameter name must be UTF-8 (percent-encoded bytes included)");
+  if (!is_valid_utf8(value))
+    throw invalid_parameter(name, "the value is not UTF-8 (percent-encoded bytes included)");
   if (!values_.emplace(name, std::move(value)).second) {
     throw ApiError::about(400, "duplicate_parameter", name, "given more than once");
   }
@@ -61,7 +69,7 @@ void Parameters::add(const std::string& name, std::string value) {
 Parameters Parameters::from_json_object(std::string endpoint, const nlohmann::json& object,
                                         std::initializer_list<std::string_view> structured) {
   if (!object.is_object())
-    throw ApiError(400, "invalid_body", "", "the request body must be a JSON object");
+    throw ApiError::about(400, "invalid_body", "body", "must be a JSON object");
   Parameters p(std::move(endpoint));
   for (const auto& [name, value] : object.items()) {
     bool skip = false;

@@ -22,7 +22,8 @@ class Parameters {
  public:
   explicit Parameters(std::string endpoint) : endpoint_(std::move(endpoint)) {}
 
-  // Adds a parameter; a name given twice is a 400 naming it.
+  // Adds a parameter; a name given twice, or a name or value that is not UTF-8, is a 400
+  // naming it.
   void add(const std::string& name, std::string value);
   // The scalar members of a JSON object (strings, numbers, booleans); members named in
   // structured are skipped (the caller reads them); arrays/objects elsewhere are 400s.

@@ -12,6 +12,7 @@
 
 #include <cstdio>
 
+#include "api/colour/srgb_gamut.h"
 #include "api/colour/xyz_weights.h"
 #include "api/handlers/sky_radiance_query.h"
 #include "api/skydome/exr_stream.h"
@@ -37,6 +38,20 @@ struct SkydomeRender::Settings {
 namespace {
 
 constexpr int kBandRows = 16;
+
+// The image is streamed, its header sent before any pixel: it states the rule, since it cannot
+// count the clipped pixels (GET/POST /v1/rgb flag each sample).
+constexpr const char* kGamutMapping =
+    "negative linear sRGB components clipped to 0 (out of gamut colours); other values as "
+    "computed";
+
+// R, G, B of a pixel, mapped into the sRGB gamut (api/colour/srgb_gamut.h).
+void write_rgb(float* pixel, const LinearSrgb& colour) {
+  const LinearSrgb c = clip_to_srgb_gamut(colour).rgb;
+  pixel[0] = static_cast<float>(c.r);
+  pixel[1] = static_cast<float>(c.g);
+  pixel[2] = static_cast<float>(c.b);
+}
 
 const ThreeWavelengthRgb& three_wavelength_method() {
   static const ThreeWavelengthRgb method;
@@ -155,6 +170,7 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
   if (s.channels == "rgb") {
     Imf::addChromaticities(header, Imf::Chromaticities());  // Rec. 709 primaries = sRGB, D65
     header.insert("clearskyColourMethod", Imf::StringAttribute(s.method));
+    header.insert("clearskyGamutMapping", Imf::StringAttribute(kGamutMapping));
   }
   if (s.channels == "luminance") header.insert("luminanceUnits", Imf::StringAttribute("cd.m^-2"));
   if (s.channels == "spectral") {
@@ -214,17 +230,14 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
                 const LinearSrgb c =
                     three.rgb(l[s.m.indices[2]], l[s.m.indices[1]], l[s.m.indices[0]]);
                 if (s.channels == "rgb") {
-                  px[0] = static_cast<float>(c.r), px[1] = static_cast<float>(c.g),
-                  px[2] = static_cast<float>(c.b);
+                  write_rgb(px, c);
                 } else {
                   px[0] = static_cast<float>(kMaxLuminousEfficacy * linear_srgb_to_xyz(c).y);
                 }
               } else {
                 const Xyz xyz = s.xyz->xyz(l);
                 if (s.channels == "rgb") {
-                  const LinearSrgb c = xyz_to_linear_srgb(xyz);
-                  px[0] = static_cast<float>(c.r), px[1] = static_cast<float>(c.g),
-                  px[2] = static_cast<float>(c.b);
+                  write_rgb(px, xyz_to_linear_srgb(xyz));
                 } else {
                   px[0] = static_cast<float>(kMaxLuminousEfficacy * xyz.y);
                 }

@@ -15,8 +15,9 @@
 // attributes spectralLayoutVersion = "1.0" and emissiveUnits = "W.m^-2.sr^-1". Files are
 // uncompressed scan lines (the only layout whose offset table is known before the pixels, which
 // streaming needs). Directions the model does not answer (below the horizon for ground-only models,
-// outside the fisheye circle) are 0. prepare_skydome() checks everything (errors are ApiError,
-// before any byte is sent).
+// outside the fisheye circle) are 0. RGB images have no negative component: out of gamut colours
+// are clipped (api/colour/srgb_gamut.h), as the attribute clearskyGamutMapping says.
+// prepare_skydome() checks everything (errors are ApiError, before any byte is sent).
 #pragma once
 
 #include <functional>

@@ -15,6 +15,7 @@
 #include "api/encode/evaluation_json.h"
 #include "api/evaluation/evaluation_runner.h"
 #include "api/evaluation/evaluations_api.h"
+#include "api/http/json_body.h"
 #include "models/registry.h"
 #include "server/cli/commands.h"
 #include "server/cli/database_option.h"
@@ -65,9 +66,11 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
     if (!options->parameters.empty()) {
       nlohmann::json parameters;
       try {
-        parameters = nlohmann::json::parse(options->parameters);
-      } catch (const nlohmann::json::parse_error& e) {
-        throw CLI::ValidationError("--parameters", std::string("not valid JSON: ") + e.what());
+        parameters = api::parse_client_json(options->parameters, "parameters");
+      } catch (const api::ApiError& e) {
+        // A member at fault is named ("alpha: ..."); the whole text is the option itself.
+        throw CLI::ValidationError("--parameters",
+                                   e.parameter() == "parameters" ? e.reason() : e.what());
       }
       std::vector<const ModelFactory*> factories;
       try {

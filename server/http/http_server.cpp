@@ -33,11 +33,14 @@ struct RequestInfo {
   std::string_view endpoint = "other";
   // The request's body is (partly) unread: the answer ends the connection.
   bool unread_body = false;
+  // The request line and headers were read whole (pre-routing ran).
+  bool head_read = false;
 };
 thread_local RequestInfo current_request;
 
 void begin_request(const httplib::Request& req) {
-  current_request = {Clock::now(), {}, api::match_route(req.method, req.path), "other", false};
+  current_request = {Clock::now(), {},    api::match_route(req.method, req.path),
+                     "other",      false, true};
   if (current_request.match.path_known()) current_request.endpoint = current_request.match.pattern;
 }
 
@@ -116,6 +119,49 @@ void close_after_answer(httplib::Response& res) {
                              sink.write(body->data() + offset, length);
                              return false;
                            });
+}
+
+// cpp-httplib's own refusals (it answers them before any handler runs, with an empty body), in
+// the API's format, naming the part of the request and the limit at fault.
+api::ApiError library_refusal(const httplib::Request& req, int status, std::size_t body_limit) {
+  if (status == 414)
+    return api::ApiError::about(414, "uri_too_long", "uri",
+                                "the request target is longer than " +
+                                    std::to_string(CPPHTTPLIB_REQUEST_URI_MAX_LENGTH) + " bytes");
+  if (status == 413) return body_too_large(body_limit, "the request body");
+  if (status == 404)
+    return api::ApiError(404, "not_found", "path",
+                         "no route " + req.method + " " + req.path + " (see /openapi.json)");
+  if (status == 416)
+    return api::ApiError::about(416, "range_not_satisfiable", "Range",
+                                "not a byte range of this answer");
+  if (status == 400) {
+    if (current_request.head_read)
+      return api::ApiError::about(400, "bad_request", "body",
+                                  "the body does not match its Content-Length or chunked coding");
+    if (!req.method.empty() && (req.version == "HTTP/1.1" || req.version == "HTTP/1.0"))
+      return api::ApiError::about(400, "bad_request", "headers",
+                                  "a header line is malformed, or longer than " +
+                                      std::to_string(CPPHTTPLIB_HEADER_MAX_LENGTH) + " bytes");
+    return api::ApiError::about(400, "bad_request", "request_line",
+                                "not METHOD TARGET HTTP/1.1 (RFC 9112 section 3)");
+  }
+  return api::ApiError::about(status, "http_error", "request",
+                              "HTTP error " + std::to_string(status));
+}
+
+// The answer when composing an error answer failed itself (nothing here depends on the
+// request), so that every request is answered and its connection released.
+void answer_last_resort(httplib::Response& res) noexcept {
+  static constexpr const char* kBody =
+      R"({"error":{"code":"internal_error","message":"internal error","parameter":"request"}})";
+  try {
+    res.status = 500;
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(kBody, "application/json");
+  } catch (...) {
+    res.status = 500;
+  }
 }
 
 std::shared_ptr<spdlog::logger> access_logger() {
@@ -310,11 +356,11 @@ void HttpServer::install() {
     }
     if (!match.path_known())
       return refuse(api::error_response(
-          api::ApiError(404, "not_found", "",
+          api::ApiError(404, "not_found", "path",
                         "no route " + req.method + " " + req.path + " (see /openapi.json)")));
     if (match.route == nullptr) {
       api::ApiResponse response = api::error_response(
-          api::ApiError(405, "method_not_allowed", "",
+          api::ApiError(405, "method_not_allowed", "method",
                         req.method + " is not served on " + req.path + " (see /openapi.json)"));
       response.headers.emplace_back("Allow", api::allow_header(match));
       return refuse(std::move(response));
@@ -353,40 +399,41 @@ void HttpServer::install() {
   });
 
   // The one exception handler: typed API errors keep their status; anything else is a 500
-  // whose details go to the log, not to the client.
+  // whose details go to the log, not to the client. It never throws: an exception leaving it
+  // would leave the request unanswered and its connection open (cpp-httplib 0.11.4).
   s.set_exception_handler(
       [this](const httplib::Request& req, httplib::Response& res, std::exception_ptr error) {
         try {
-          std::rethrow_exception(error);
-        } catch (const api::ApiError& e) {
-          send(req, res, api::error_response(e));
-        } catch (const std::exception& e) {
-          spdlog::error("{} {}: {}", req.method, req.path, e.what());
-          send(req, res,
-               api::error_response(api::ApiError(500, "internal_error", "", "internal error")));
+          try {
+            std::rethrow_exception(error);
+          } catch (const api::ApiError& e) {
+            send(req, res, api::error_response(e));
+          } catch (const std::exception& e) {
+            spdlog::error("{} {}: {}", req.method, req.path, e.what());
+            send(req, res,
+                 api::error_response(api::ApiError(500, "internal_error", "", "internal error")));
+          } catch (...) {
+            spdlog::error("{} {}: unknown exception", req.method, req.path);
+            send(req, res,
+                 api::error_response(api::ApiError(500, "internal_error", "", "internal error")));
+          }
         } catch (...) {
-          spdlog::error("{} {}: unknown exception", req.method, req.path);
-          send(req, res,
-               api::error_response(api::ApiError(500, "internal_error", "", "internal error")));
+          answer_last_resort(res);
         }
       });
 
-  // httplib's own errors (payload too large, bad request line) in the same format.
+  // httplib's own errors (URI too long, bad request line or header, payload too large) in the
+  // same format; never throws (as the exception handler).
   s.set_error_handler(httplib::Server::HandlerWithResponse(
       [this](const httplib::Request& req, httplib::Response& res) {
         // Answers of this server (send() gives each a Cache-Control) are left as they are.
         if (!res.body.empty() || res.has_header("Cache-Control")) return HandlerResponse::Unhandled;
-        std::string code = "http_error";
-        std::string message = "HTTP error " + std::to_string(res.status);
-        if (res.status == 404) {
-          code = "not_found";
-          message = "no route " + req.method + " " + req.path + " (see /openapi.json)";
-        } else if (res.status == 413) {
-          code = "too_large";
-          message = "the request body is above the configured limit";
+        try {
+          send(req, res,
+               api::error_response(library_refusal(req, res.status, config_.body_limit_bytes())));
+        } catch (...) {
+          answer_last_resort(res);
         }
-        const int status = res.status;
-        send(req, res, api::error_response(api::ApiError(status, code, "", message)));
         return HandlerResponse::Handled;
       }));
 
@@ -400,7 +447,7 @@ void HttpServer::install() {
         req.remote_addr, req.method, req.path, res.status, res.body.size(), seconds * 1e3,
         current_request.model, endpoint);
     // A request that never reaches pre-routing (a bad request line) must not inherit this one.
-    current_request = {Clock::now(), {}, {}, "other", false};
+    current_request = {Clock::now(), {}, {}, "other", false, false};
   });
 
   // The routes: pre-routing matched each request against the table, so each method the table

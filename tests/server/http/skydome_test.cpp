@@ -1,12 +1,6 @@
 // GET /v1/skydome over loopback: the streamed EXR decodes with OpenEXR, carries the header
 // attributes, and every pixel equals the direct evaluation; a client that disconnects
 // mid-stream leaves the server serving.
-#include <OpenEXR/ImfChannelList.h>
-#include <OpenEXR/ImfFrameBuffer.h>
-#include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfInputFile.h>
-#include <OpenEXR/ImfStdIO.h>
-#include <OpenEXR/ImfStringAttribute.h>
 #include <arpa/inet.h>
 #include <gtest/gtest.h>
 #include <sys/socket.h>
@@ -18,43 +12,15 @@
 #include "api/skydome/skydome_projection.h"
 #include "api/skydome/skydome_render.h"
 #include "models/core/numeric.h"
+#include "tests/server/http/decoded_exr.h"
 #include "tests/server/http/server_fixture.h"
 
 namespace clearsky::server {
 namespace {
 
 using clearsky::testing::TestSky;
-
-struct DecodedExr {
-  int width = 0, height = 0;
-  std::map<std::string, std::vector<float>> channels;
-  std::map<std::string, std::string> strings;
-};
-
-DecodedExr decode(const std::string& bytes) {
-  Imf::StdISStream stream;
-  stream.str(bytes);
-  Imf::InputFile file(stream);
-  DecodedExr out;
-  const auto dw = file.header().dataWindow();
-  out.width = dw.max.x - dw.min.x + 1;
-  out.height = dw.max.y - dw.min.y + 1;
-  Imf::FrameBuffer frame;
-  for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) {
-    auto& data = out.channels[it.name()];
-    data.resize(static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height));
-    frame.insert(it.name(),
-                 Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(data.data()), sizeof(float),
-                            sizeof(float) * static_cast<std::size_t>(out.width)));
-  }
-  for (auto it = file.header().begin(); it != file.header().end(); ++it) {
-    if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
-      out.strings[it.name()] = s->value();
-  }
-  file.setFrameBuffer(frame);
-  file.readPixels(dw.min.y, dw.max.y);
-  return out;
-}
+using testing::decode;
+using testing::DecodedExr;
 
 class SkydomeTest : public testing::ServerFixture {
  protected:
