@@ -50,7 +50,8 @@ void WriteAuthorizer::authorize(std::string_view method, std::string_view path,
                                 std::string_view remote) const {
   const auto refuse = [&](int status, const char* code, const std::string& message) {
     audit_logger()->warn("write refused: {} {} from {} ({})", method, path, remote, code);
-    throw api::ApiError(status, code, "", message);
+    // The refusal names the request header the client must give (or cannot give: 403).
+    throw api::ApiError(status, code, "Authorization", message);
   };
   if (!token_)
     refuse(403, "writes_disabled",

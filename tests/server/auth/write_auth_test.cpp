@@ -47,6 +47,19 @@ TEST(WriteAuth, BearerTokenIsRequiredAndCompared) {
   EXPECT_EQ(status_of(auth, "Bearer s3cret-token "), 401);
 }
 
+// A refusal names the header to give, as every error names its parameter.
+TEST(WriteAuth, RefusalsNameTheAuthorizationHeader) {
+  for (const WriteAuthorizer& auth :
+       {WriteAuthorizer(std::string("s3cret-token")), WriteAuthorizer(std::nullopt)}) {
+    try {
+      auth.authorize("POST", "/v1/jobs", "Bearer wrong", "127.0.0.1");
+      ADD_FAILURE() << "authorised";
+    } catch (const api::ApiError& e) {
+      EXPECT_EQ(e.parameter(), "Authorization") << e.status();
+    }
+  }
+}
+
 TEST(WriteAuth, OptionWinsOverEnvironment) {
   EXPECT_EQ(status_of(WriteAuthorizer::from_option_or_environment("a", "b"), "Bearer a"), 200);
   EXPECT_EQ(status_of(WriteAuthorizer::from_option_or_environment("", "b"), "Bearer b"), 200);
