@@ -178,9 +178,10 @@ def main():
                         findings_ticket = json.loads(body).get("ticket")
                         findings["tickets"].append(findings_ticket)
                 elif action == "build":
-                    albedo = round(rng.uniform(0.05, 0.9), 3)
+                    # A new aerosol amount: a new configuration, hence new tables.
+                    beta = round(rng.uniform(0.01, 0.5), 4)
                     pending_build = ("/v1/radiance?model=nishita96&sun_zenith=40&sun_azimuth=0"
-                                     "&view_zenith=50&view_azimuth=90&albedo=%s" % albedo)
+                                     "&view_zenith=50&view_azimuth=90&beta=%s" % beta)
                     server.request("GET", pending_build, timeout=2)
                 else:
                     zenith = round(rng.uniform(0, 85), 2)
