@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, checks the formatting, builds (warnings are errors), and runs the
 # whole test suite with CTest, then the unit tests again under AddressSanitizer +
-# UndefinedBehaviorSanitizer.
+# UndefinedBehaviorSanitizer (clang) and the fuzz programs' smoke run in that same build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 deploy/install-deps.sh
@@ -19,17 +19,15 @@ jobs=$(nproc)
 deploy/build.sh
 (cd build && ctest --output-on-failure -j "$jobs" --timeout 1200)
 
-# Sanitizer build of the unit tests (no benchmarks, no accuracy tests), kept apart from the
-# Release tree; -O1 with line tables keeps it quick to build and its reports readable.
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCLEARSKY_SANITIZE=ON \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
-  -DCLEARSKY_BUILD_BENCHMARKS=OFF -DCLEARSKY_BUILD_ACCURACY_TESTS=OFF
+# The sanitizer run: one clang tree (fuzz/run.sh configures it; ccache when present) with
+# AddressSanitizer + UndefinedBehaviorSanitizer (and libFuzzer's coverage hooks) builds the
+# unit tests and the fuzz programs (docs/fuzzing.md): the unit tests run there, then the fuzz
+# programs' smoke run (every committed seed, then a fixed number of mutations from a fixed
+# seed). -O1 with line tables keeps it quick to build and its reports readable. A second
+# compiler also checks the code: the Release build above is GCC's.
+export CLEARSKY_FUZZ_BUILD_DIR=build-asan
+fuzz/run.sh --build
 cmake --build build-asan -j "$jobs"
 (cd build-asan && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --output-on-failure -j "$jobs" -L unit --timeout 1200)
-
-# The fuzz programs' smoke run (fuzz/run.sh, docs/fuzzing.md), after the suite: a clang build
-# of their own (ccache), every committed seed, then 10 s of mutation per program.
-if command -v clang++ >/dev/null 2>&1; then
-  fuzz/run.sh --smoke
-fi
+fuzz/run.sh --smoke

@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Builds and runs the libFuzzer programs of fuzz/ (docs/fuzzing.md).
 #
-#   fuzz/run.sh --smoke [TARGET...]             every seed once, then 10 s of mutation each
+#   fuzz/run.sh --smoke [TARGET...]             every seed once, then a fixed number of
+#                                               mutations from a fixed seed (a few s each)
 #   fuzz/run.sh --campaign [MINUTES] [TARGET...]  MINUTES (default 10) of mutation each
 #   fuzz/run.sh --build                         build only
 #
 # TARGET is a program's name without _fuzz (api_routes, kider_archive, ...); all by default.
 # The build is build-fuzz/, or $CLEARSKY_FUZZ_BUILD_DIR (clang with ASan + UBSan + libFuzzer,
-# ccache when present). What the fuzzer learns goes to BUILD/fuzz-work/TARGET (the committed
+# ccache when present; deploy/test.sh shares it with its sanitizer run of the unit tests). What the fuzzer learns goes to BUILD/fuzz-work/TARGET (the committed
 # seeds in fuzz/corpus/ are only read), crashes to BUILD/fuzz-artifacts/, logs to
 # BUILD/fuzz-logs/. Exits non-zero when a program finds anything; the summary lists
 # executions, coverage (cov, ft) and findings per program.
@@ -49,7 +50,8 @@ command -v ccache >/dev/null 2>&1 && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=cca
 # ccache shares the objects between clones and build folders: paths relative to the root, and
 # the folder not hashed for the debug information.
 export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
-# -O1 with line tables: quick to build, fast enough to fuzz, readable reports.
+# -O1 with line tables: quick to build, fast enough to fuzz, readable reports. The unit tests
+# of this tree are configured too (built only when asked: deploy/test.sh runs them).
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
   -DCMAKE_CXX_COMPILER=clang++ -DCLEARSKY_FUZZ=ON -DCLEARSKY_PCH=OFF \
   -DCLEARSKY_BUILD_BENCHMARKS=OFF -DCLEARSKY_BUILD_ACCURACY_TESTS=OFF "${launcher[@]}" >/dev/null
@@ -68,12 +70,30 @@ max_len() {
   esac
 }
 
+# The smoke run's mutations per program: a fixed count from a fixed seed, so that the run does
+# not depend on the machine's speed or load (a timed run explores further on a fast machine and
+# may find there what a slow one did not), about 5 s each on the 2-core machine.
+smoke_runs() {
+  case "$1" in
+    api_routes) echo 8000 ;;
+    kider_archive) echo 15000 ;;
+    iso8601_time | cron_schedule | sample_blob) echo 100000 ;;
+    *) echo 25000 ;;
+  esac
+}
+
 # One program: its log, and its summary line and exit status next to the log.
 run_target() {
   local target=$1 work="$build/fuzz-work/$1" log="$build/fuzz-logs/$1.log" status=0
   mkdir -p "$work"
-  local options=(-max_total_time="$seconds" -max_len="$(max_len "$target")" -timeout=10
+  local options=(-max_len="$(max_len "$target")" -timeout=10
     -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$build/fuzz-artifacts/$target-")
+  if [ "$mode" = "--smoke" ]; then
+    # A guard of 120 s only stops a smoke run on a machine far slower than ours.
+    options+=(-seed=1 -runs="$(smoke_runs "$target")" -max_total_time=120)
+  else
+    options+=(-max_total_time="$seconds")
+  fi
   [ -f "fuzz/dictionaries/$target.dict" ] && options+=(-dict="fuzz/dictionaries/$target.dict")
   UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     "$build/fuzz/${target}_fuzz" "${options[@]}" "$work" "fuzz/corpus/$target" >"$log" 2>&1 ||
@@ -100,12 +120,20 @@ parallel=${CLEARSKY_FUZZ_JOBS:-1}
 mkdir -p "$build/fuzz-work" "$build/fuzz-artifacts" "$build/fuzz-logs"
 for target in "${targets[@]}"; do
   while [ "$(jobs -rp | wc -l)" -ge "$parallel" ]; do wait -n || true; done
-  echo "fuzz: $target for ${seconds} s (log $build/fuzz-logs/$target.log)"
+  if [ "$mode" = "--smoke" ]; then
+    echo "fuzz: $target, seeds then $(smoke_runs "$target") mutations (log $build/fuzz-logs/$target.log)"
+  else
+    echo "fuzz: $target for ${seconds} s (log $build/fuzz-logs/$target.log)"
+  fi
   run_target "$target" &
 done
 wait
 failed=0
-echo "fuzz summary (${seconds} s each, root $root):"
+if [ "$mode" = "--smoke" ]; then
+  echo "fuzz summary (smoke: seeds and fixed mutations, seed 1, root $root):"
+else
+  echo "fuzz summary (${seconds} s each, root $root):"
+fi
 for target in "${targets[@]}"; do
   log="$build/fuzz-logs/$target.log"
   printf '  %s' "$(cat "$log.summary")"

@@ -57,7 +57,9 @@ double TabulatedSpectrum::at(double wavelength_nm, OutOfRange policy) const {
       std::min<std::size_t>(static_cast<std::size_t>(it - nm_.begin()), nm_.size() - 1);
   const std::size_t i0 = i1 - 1;
   const double t = (wavelength_nm - nm_[i0]) / (nm_[i1] - nm_[i0]);
-  return v_[i0] + t * (v_[i1] - v_[i0]);
+  // The convex combination, not v0 + t (v1 - v0): the difference of two finite values of
+  // opposite sign near the largest double overflows, and 0 * inf would be NaN at a node.
+  return (1.0 - t) * v_[i0] + t * v_[i1];
 }
 
 double TabulatedSpectrum::integral_inside(double lo, double hi) const {

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace clearsky {
@@ -15,6 +17,18 @@ TEST(TabulatedSpectrum, InterpolatesLinearly) {
   EXPECT_DOUBLE_EQ(kRamp.at(400.0, OutOfRange::error), 1.0);
   EXPECT_DOUBLE_EQ(kRamp.at(600.0, OutOfRange::error), 2.0);
   EXPECT_DOUBLE_EQ(kRamp.at(575.0, OutOfRange::error), 2.25);
+}
+
+// Values near the largest double of opposite signs: their difference overflows, and the
+// interpolation must still give each node's value and a finite value between them.
+TEST(TabulatedSpectrum, InterpolatesValuesWhoseDifferenceOverflows) {
+  const double big = std::numeric_limits<double>::max();
+  const TabulatedSpectrum extreme({0.0, 1.0, 2.0}, {big, -0.5 * big, 1.0});
+  EXPECT_EQ(extreme.at(0.0, OutOfRange::error), big);
+  EXPECT_EQ(extreme.at(1.0, OutOfRange::error), -0.5 * big);
+  const double between = extreme.at(0.5, OutOfRange::error);
+  EXPECT_TRUE(std::isfinite(between));
+  EXPECT_DOUBLE_EQ(between, 0.25 * big);
 }
 
 TEST(TabulatedSpectrum, OutOfRangePolicyIsExplicit) {
