@@ -1,5 +1,9 @@
-// Background evaluations with their tickets (evaluation_pool.h).
+// Background evaluations with their stored tickets (evaluation_pool.h).
 #include "api/evaluation/evaluation_pool.h"
+
+#include <stdexcept>
+
+#include "storage/repositories/evaluation_ticket_repository.h"
 
 namespace clearsky::api {
 namespace {
@@ -13,11 +17,47 @@ void tell(const EvaluationPool::Finished& finished, const TicketState& done) {
   }
 }
 
+// The ids the ticket lists, in the order run_evaluation runs them; the request's own names
+// when they do not resolve (the run then fails, and the ticket says so).
+std::vector<std::string> ticket_model_ids(const std::vector<std::string>& requested,
+                                          std::span<const ModelFactory> available) {
+  try {
+    std::vector<std::string> ids;
+    for (const ModelFactory* factory : resolve_models(requested, available))
+      ids.push_back(factory->descriptor->id);
+    return ids;
+  } catch (const std::invalid_argument&) {
+    return requested;
+  }
+}
+
+TicketState to_state(const storage::TicketRecord& record) {
+  TicketState state;
+  state.id = record.id;
+  state.dataset = record.dataset;
+  state.status = record.status;
+  state.error = record.error.value_or("");
+  state.created_utc = record.created_utc;
+  state.finished_utc = record.finished_utc;
+  for (const storage::TicketModelRecord& m : record.models) {
+    state.models.push_back({m.model_id, m.run_id, m.status, m.error.value_or("")});
+    if (!m.run_id) continue;
+    state.runs.push_back({*m.run_id, m.model_id, m.status});
+    state.run_ids.push_back(*m.run_id);
+  }
+  return state;
+}
+
+constexpr const char* kNotRunAfterFailure = "not run: the ticket failed before this model ran";
+constexpr const char* kStoppedBeforeRun = "interrupted: the server stopped before this model ran";
+constexpr const char* kStoppedDuringRun = "interrupted: the server stopped during the run";
+
 }  // namespace
 
 EvaluationPool::EvaluationPool(OpenDatabase open_database, std::span<const ModelFactory> models,
                                const EvaluationPoolOptions& options)
-    : models_(models),
+    : open_database_(open_database),
+      models_(models),
       options_(options),
       workers_(std::move(open_database), {options.workers, options.max_queued, "evaluations", 30}) {
 }
@@ -28,73 +68,90 @@ std::int64_t EvaluationPool::submit(EvaluationRequest request, Finished on_finis
   WorkerPool::Reservation place = workers_.reserve();
   std::int64_t id = 0;
   {
-    std::lock_guard lock(mutex_);
-    id = next_ticket_++;
-    tickets_[id] = TicketState{id, "queued", {}, {}, {}};
+    storage::Database db = open_database_();
+    id = storage::EvaluationTicketRepository(db).create(request.dataset, request.job_id,
+                                                        ticket_model_ids(request.models, models_));
   }
   request.options.capture_threads = options_.capture_threads;
-  request.on_run_status = [this, id](std::int64_t run_id, const std::string& model,
-                                     const std::string& status) {
-    record_run(id, run_id, model, status);
-  };
   auto shared_request = std::make_shared<EvaluationRequest>(std::move(request));
   auto finished = std::make_shared<Finished>(std::move(on_finished));
   WorkerTask task;
   task.started = [this, id] {
-    std::lock_guard lock(mutex_);
-    tickets_[id].status = "running";
+    storage::Database db = open_database_();
+    storage::EvaluationTicketRepository(db).start(id);
   };
   task.run = [this, id, shared_request, finished](storage::Database& db) {
-    run_evaluation(db, *shared_request, models_);
+    // Each model's run is written to the ticket on the worker's connection as it changes.
+    EvaluationRequest recorded = *shared_request;
+    recorded.on_run_status = [&db, id](std::int64_t run_id, const std::string& model,
+                                       const std::string& status) {
+      storage::EvaluationTicketRepository(db).record_run(id, model, run_id, status);
+    };
+    run_evaluation(db, recorded, models_);
     tell(*finished, finish(id, "succeeded", ""));
   };
   task.failed = [this, id, finished](const std::string& error) {
     tell(*finished, finish(id, "failed", error));
   };
+  task.dropped = [this, id] {
+    // A clean stop before the ticket ran: recorded now rather than at the next start.
+    storage::Database db = open_database_();
+    storage::EvaluationTicketRepository(db).finish(id, "interrupted", kStoppedBeforeRun,
+                                                   kStoppedBeforeRun);
+  };
   workers_.submit(std::move(place), std::move(task));
   return id;
 }
 
-void EvaluationPool::record_run(std::int64_t ticket, std::int64_t run_id, const std::string& model,
-                                const std::string& status) {
-  std::lock_guard lock(mutex_);
-  TicketState& state = tickets_[ticket];
-  for (TicketRun& run : state.runs) {
-    if (run.id != run_id) continue;
-    run.status = status;
-    return;
-  }
-  state.runs.push_back({run_id, model, status});
-  state.run_ids.push_back(run_id);
-}
-
 TicketState EvaluationPool::finish(std::int64_t ticket, const std::string& status,
                                    const std::string& error) {
-  std::lock_guard lock(mutex_);
-  TicketState& state = tickets_[ticket];
-  state.status = status;
-  state.error = error;
-  return state;
+  storage::Database db = open_database_();
+  storage::EvaluationTicketRepository tickets(db);
+  tickets.finish(ticket, status, error, kNotRunAfterFailure);
+  const auto record = tickets.get(ticket);
+  if (!record) throw std::runtime_error("ticket " + std::to_string(ticket) + " disappeared");
+  return to_state(*record);
 }
 
 std::optional<TicketState> EvaluationPool::ticket(std::int64_t id) const {
-  std::lock_guard lock(mutex_);
-  const auto found = tickets_.find(id);
-  if (found == tickets_.end()) return std::nullopt;
-  return found->second;
+  storage::Database db = open_database_();
+  return load_ticket(db, id);
 }
 
 void EvaluationPool::wait_idle() { workers_.wait_idle(); }
 
+std::optional<TicketState> load_ticket(storage::Database& db, std::int64_t id) {
+  const auto record = storage::EvaluationTicketRepository(db).get(id);
+  if (!record) return std::nullopt;
+  return to_state(*record);
+}
+
+int interrupt_unfinished_tickets(storage::Database& db) {
+  return storage::EvaluationTicketRepository(db).interrupt_unfinished(kStoppedBeforeRun,
+                                                                      kStoppedDuringRun);
+}
+
 nlohmann::ordered_json ticket_to_json(const TicketState& ticket) {
   nlohmann::ordered_json ids = nlohmann::ordered_json::array();
-  nlohmann::ordered_json runs = nlohmann::ordered_json::array();
-  for (const TicketRun& run : ticket.runs) {
-    ids.push_back(run.id);
-    runs.push_back({{"model", run.model}, {"run", run.id}, {"status", run.status}});
+  for (const TicketRun& run : ticket.runs) ids.push_back(run.id);
+  nlohmann::ordered_json models = nlohmann::ordered_json::array();
+  for (const TicketModel& model : ticket.models) {
+    nlohmann::ordered_json entry{
+        {"model", model.model},
+        {"run", model.run ? nlohmann::ordered_json(*model.run) : nlohmann::ordered_json(nullptr)},
+        {"status", model.status}};
+    if (!model.error.empty()) entry["error"] = model.error;
+    models.push_back(std::move(entry));
   }
   nlohmann::ordered_json j{
-      {"ticket", ticket.id}, {"status", ticket.status}, {"runs", ids}, {"models", runs}};
+      {"ticket", ticket.id},
+      {"dataset", ticket.dataset},
+      {"status", ticket.status},
+      {"created", ticket.created_utc},
+      {"finished", ticket.finished_utc ? nlohmann::ordered_json(*ticket.finished_utc)
+                                       : nlohmann::ordered_json(nullptr)},
+      {"runs", ids},
+      {"models", models}};
   if (!ticket.error.empty()) j["error"] = ticket.error;
   return j;
 }

@@ -1,17 +1,17 @@
 // The evaluations run in the background (POST /v1/evaluations and scheduled jobs) on a
 // bounded WorkerPool (api/work/worker_pool.h: a full queue refuses with 503, each worker with
-// its own database connection, reset after a failure). Each submission gets a ticket whose
-// state (queued, running, succeeded, failed) is kept in memory, with each model's run listed
-// as soon as the run starts (its id and status: running, succeeded, failed); the runs
-// themselves are in the database. Tickets are not kept across a restart (docs/data-api.md
-// "Durability"); their runs are.
+// its own database connection, reset after a failure). Each submission gets a ticket, stored in
+// the database before it is queued (storage/repositories/evaluation_ticket_repository.h) with
+// every requested model `queued`; each model's entry gets its run id and status (running,
+// succeeded, failed) as soon as the run starts and as it ends, and models an earlier failure
+// left unrun become `skipped`. Tickets outlive the process and their ids are never reused; what
+// a crash left queued or running reads `interrupted` after the next start
+// (interrupt_unfinished_tickets; docs/data-api.md "Evaluation tickets" and "Durability").
 // Thread-safety: every member may be called from any thread.
 #pragma once
 
 #include <cstdint>
 #include <functional>
-#include <map>
-#include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
@@ -34,15 +34,27 @@ struct EvaluationPoolOptions {
 struct TicketRun {
   std::int64_t id = 0;
   std::string model;
-  std::string status;  // running, succeeded, failed
+  std::string status;  // running, succeeded, failed, interrupted
+};
+
+// One requested model of a ticket, whether or not its run started.
+struct TicketModel {
+  std::string model;
+  std::optional<std::int64_t> run;  // set when its run starts
+  std::string status;               // queued, running, succeeded, failed, skipped, interrupted
+  std::string error;                // why it was skipped or interrupted
 };
 
 struct TicketState {
   std::int64_t id = 0;
-  std::string status;  // queued, running, succeeded, failed
+  std::string dataset;
+  std::string status;  // queued, running, succeeded, failed, interrupted
   std::vector<std::int64_t> run_ids;
   std::string error;
-  std::vector<TicketRun> runs;  // in the order they started
+  std::vector<TicketRun> runs;      // the runs started, in the order they started
+  std::vector<TicketModel> models;  // every requested model, in the order they run
+  std::string created_utc;
+  std::optional<std::string> finished_utc;
 };
 
 class EvaluationPool {
@@ -59,28 +71,35 @@ class EvaluationPool {
   EvaluationPool(const EvaluationPool&) = delete;
   EvaluationPool& operator=(const EvaluationPool&) = delete;
 
-  // Queues a run; returns its ticket. Throws ApiError 503 (busy) when the queue is full.
+  // Records the ticket and queues it; returns its id. Throws ApiError 503 (busy) when the queue
+  // is full (nothing recorded), storage::SqliteError when the ticket cannot be written.
   std::int64_t submit(EvaluationRequest request, Finished on_finished = {});
+  // The stored ticket (of this process or an earlier one).
   std::optional<TicketState> ticket(std::int64_t id) const;
   // Blocks until nothing is queued or running.
   void wait_idle();
   std::span<const ModelFactory> models() const { return models_; }
 
  private:
-  void record_run(std::int64_t ticket, std::int64_t run_id, const std::string& model,
-                  const std::string& status);
+  // The ticket's final state, after recording how it ended on a connection of its own.
   TicketState finish(std::int64_t ticket, const std::string& status, const std::string& error);
 
+  OpenDatabase open_database_;
   std::span<const ModelFactory> models_;
   EvaluationPoolOptions options_;
-  mutable std::mutex mutex_;
-  std::map<std::int64_t, TicketState> tickets_;
-  std::int64_t next_ticket_ = 1;
-  WorkerPool workers_;  // last: stopped and joined before the tickets go
+  WorkerPool workers_;  // last: stopped and joined before the rest goes
 };
 
-// {"ticket", "status", "runs": [ids], "models": [{"model", "run", "status"}], "error" (when
-// failed)}; "runs" and "models" grow as each model's run starts.
+// The ticket as stored (std::nullopt when there is none).
+std::optional<TicketState> load_ticket(storage::Database& db, std::int64_t id);
+// At start-up, before the pool runs: tickets and ticket models a stopped process left queued or
+// running become `interrupted` with the reason; returns the number of tickets.
+int interrupt_unfinished_tickets(storage::Database& db);
+
+// {"ticket", "dataset", "status", "created", "finished", "runs": [ids], "models": [{"model",
+// "run", "status", "error" (when skipped or interrupted)}], "error" (when failed or
+// interrupted)}; "models" lists every requested model from the start ("run" null until its run
+// starts); "runs" grows as each model's run starts.
 nlohmann::ordered_json ticket_to_json(const TicketState& ticket);
 // The path of a ticket.
 std::string ticket_location(std::int64_t id);

@@ -40,28 +40,32 @@ Json schemas() {
   },
   "EvaluationTicket": {
     "type": "object",
-    "description": "A started evaluation (kept in memory): its state and the ids of its runs once they start.",
-    "required": ["ticket", "status", "runs", "models"],
+    "description": "A started evaluation, stored in the database when it is accepted (ids are never reused; it outlives a restart): its state and every requested model, with the id of its run once it starts.",
+    "required": ["ticket", "dataset", "status", "created", "finished", "runs", "models"],
     "additionalProperties": false,
     "properties": {
       "ticket": {"type": "integer", "minimum": 1},
-      "status": {"type": "string", "enum": ["queued", "running", "succeeded", "failed"]},
-      "runs": {"type": "array", "items": {"type": "integer", "minimum": 1}},
+      "dataset": {"type": "string"},
+      "status": {"type": "string", "enum": ["queued", "running", "succeeded", "failed", "interrupted"], "description": "interrupted: the server stopped (was killed or shut down) before the ticket ended."},
+      "created": {"type": "string", "format": "date-time"},
+      "finished": {"type": "string", "format": "date-time", "nullable": true},
+      "runs": {"type": "array", "items": {"type": "integer", "minimum": 1}, "description": "The ids of the runs started, in the order they started."},
       "models": {
         "type": "array",
-        "description": "Each model's run as soon as it starts, in the order they started.",
+        "description": "Every requested model from the start, in the order they run: queued until its run starts (run null), then its run's id and status; skipped when the ticket failed before it ran; interrupted when the server stopped first.",
         "items": {
           "type": "object",
           "required": ["model", "run", "status"],
           "additionalProperties": false,
           "properties": {
             "model": {"type": "string"},
-            "run": {"type": "integer", "minimum": 1},
-            "status": {"type": "string", "enum": ["running", "succeeded", "failed"]}
+            "run": {"type": "integer", "minimum": 1, "nullable": true},
+            "status": {"type": "string", "enum": ["queued", "running", "succeeded", "failed", "skipped", "interrupted"]},
+            "error": {"type": "string", "description": "Why the model was skipped or interrupted."}
           }
         }
       },
-      "error": {"type": "string", "description": "When failed."},
+      "error": {"type": "string", "description": "When failed or interrupted."},
       "location": {"type": "string", "description": "In the answer of POST: /v1/evaluations/tickets/{ticket}."}
     }
   },
@@ -292,7 +296,7 @@ Json operations() {
         "headers": {"Location": {"description": "/v1/evaluations/tickets/{ticket}", "required": true, "schema": {"type": "string"}}},
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/EvaluationTicket"},
-          "example": {"ticket": 1, "status": "queued", "runs": [], "models": [], "location": "/v1/evaluations/tickets/1"}
+          "example": {"ticket": 1, "dataset": "synthetic", "status": "queued", "created": "2026-11-25T09:30:00.000Z", "finished": null, "runs": [], "models": [{"model": "preetham", "run": null, "status": "queued"}], "location": "/v1/evaluations/tickets/1"}
         }}
       },
       "400": {"description": "A body that is not a JSON object, an unknown member, no dataset, or an invalid model list or parameter."},
@@ -323,7 +327,7 @@ Json operations() {
     "operationId": "getEvaluationTicket",
     "tags": ["evaluations"],
     "summary": "State of a started evaluation",
-    "description": "queued, running, succeeded or failed, with the ids of its runs.",
+    "description": "queued, running, succeeded, failed or interrupted (the server stopped first), with every requested model and the ids of its runs. Tickets are stored: they answer after a restart.",
     "parameters": [
       {"name": "ticket", "in": "path", "required": true, "description": "The ticket of POST /v1/evaluations.", "schema": {"type": "integer", "minimum": 1}, "example": 1}
     ],
@@ -332,11 +336,11 @@ Json operations() {
         "description": "The ticket.",
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/EvaluationTicket"},
-          "example": {"ticket": 1, "status": "succeeded", "runs": [1], "models": [{"model": "preetham", "run": 1, "status": "succeeded"}]}
+          "example": {"ticket": 1, "dataset": "synthetic", "status": "succeeded", "created": "2026-11-25T09:30:00.000Z", "finished": "2026-11-25T09:30:02.500Z", "runs": [1], "models": [{"model": "preetham", "run": 1, "status": "succeeded"}]}
         }}
       },
       "400": {"description": "A ticket that is not a positive integer."},
-      "404": {"description": "No such ticket (code unknown_ticket; tickets are kept in memory, so a restart forgets them)."}
+      "404": {"description": "No such ticket (code unknown_ticket)."}
     }
   },
   "listJobs": {

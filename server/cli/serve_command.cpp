@@ -82,14 +82,18 @@ void run_server(const server::ServerConfig& config, const std::string& software_
     }
   }
 
-  // The data endpoints: runs a crash interrupted are marked failed first, then evaluations go
-  // to their own workers and the scheduler resumes from the jobs table.
+  // The data endpoints: runs a crash interrupted are marked failed first, and their tickets
+  // interrupted with the models they had still queued; then evaluations go to their own
+  // workers and the scheduler resumes from the jobs table.
   {
     storage::Database db = storage::Database::open(config.db_path);
     const int interrupted = storage::EvaluationRunRepository(db).fail_unfinished(
         "interrupted: the server stopped during the run");
     if (interrupted > 0)
       spdlog::warn("{} evaluation runs were interrupted; marked failed", interrupted);
+    const int tickets = api::interrupt_unfinished_tickets(db);
+    if (tickets > 0)
+      spdlog::warn("{} evaluation tickets were interrupted; marked interrupted", tickets);
     const int imports = api::fail_interrupted_imports(db);
     if (imports > 0) spdlog::warn("{} imports were interrupted; marked failed", imports);
   }

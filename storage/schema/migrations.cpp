@@ -302,6 +302,37 @@ UPDATE evaluation_runs SET
         WHERE r.run_id = evaluation_runs.id ORDER BY c.label)))
   WHERE status = 'succeeded';
 )sql",
+      // Version 6 (docs/data-api.md "Evaluation tickets" and "Durability"): evaluation tickets
+      // are rows instead of server memory, so that they outlive the process and their ids are
+      // never reused (AUTOINCREMENT). A ticket lists every requested model from the moment it is
+      // accepted, in the order they run: `queued` until its run starts, then the run's id and
+      // `running`, `succeeded` or `failed`; `skipped` when an earlier model of the ticket failed;
+      // `interrupted` (with the reason) when the server stopped first. A model's run id has no
+      // foreign key: the run goes with its dataset, the ticket keeps the id (as a run keeps its
+      // job id). Tickets of earlier versions lived in memory: there are none to convert.
+      R"sql(
+CREATE TABLE evaluation_tickets (
+  id INTEGER PRIMARY KEY AUTOINCREMENT,
+  dataset TEXT NOT NULL,
+  job_id INTEGER,
+  status TEXT NOT NULL
+    CHECK (status IN ('queued', 'running', 'succeeded', 'failed', 'interrupted')),
+  created_utc TEXT NOT NULL,
+  finished_utc TEXT,
+  error TEXT
+);
+CREATE TABLE evaluation_ticket_models (
+  ticket_id INTEGER NOT NULL REFERENCES evaluation_tickets(id) ON DELETE CASCADE,
+  position INTEGER NOT NULL,
+  model_id TEXT NOT NULL,
+  run_id INTEGER,
+  status TEXT NOT NULL
+    CHECK (status IN ('queued', 'running', 'succeeded', 'failed', 'skipped', 'interrupted')),
+  error TEXT,
+  PRIMARY KEY (ticket_id, position)
+);
+CREATE INDEX tickets_by_status ON evaluation_tickets(status);
+)sql",
   };
   return migrations;
 }

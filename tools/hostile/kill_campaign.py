@@ -6,10 +6,12 @@ waits a random time, kills the process with SIGKILL, and checks what the next st
 
   - the SQLite database passes `PRAGMA integrity_check` right after the kill;
   - the server is ready again (its cached tables load or rebuild);
-  - no import or evaluation run is left `queued` or `running` by the killed process once the
-    new one has started (each is finished, resumed or marked failed with a reason);
+  - no import, evaluation run or evaluation ticket is left `queued` or `running` by the killed
+    process once the new one has started (each is finished, resumed or marked failed or
+    interrupted with a reason);
   - every stored capture has its 81 samples (an import is one transaction);
-  - every model an evaluation ticket asked for has a run (reported as missing otherwise);
+  - every evaluation ticket answers after the restarts and lists every model it asked for,
+    each with a run or `interrupted`/`skipped` with a reason (reported otherwise);
   - the killed build's configuration is answered afterwards with finite, non-negative radiance.
 
 Standard library only. Usage:
@@ -108,7 +110,7 @@ def incomplete_captures(db_path):
 
 
 def unfinished(db_path, before_utc):
-    """Imports and runs still queued or running that were created before before_utc."""
+    """Imports, runs and tickets still queued or running that were created before before_utc."""
     with sqlite3.connect(db_path, timeout=30) as db:
         imports = db.execute(
             "SELECT COUNT(*) FROM imports WHERE status IN ('queued','running') AND created_utc < ?",
@@ -116,7 +118,10 @@ def unfinished(db_path, before_utc):
         runs = db.execute(
             "SELECT COUNT(*) FROM evaluation_runs WHERE status = 'running' AND started_utc < ?",
             (before_utc,)).fetchone()[0]
-    return imports, runs
+        tickets = db.execute(
+            "SELECT COUNT(*) FROM evaluation_tickets WHERE status IN ('queued','running')"
+            " AND created_utc < ?", (before_utc,)).fetchone()[0]
+    return imports, runs, tickets
 
 
 def utc_now():
@@ -203,9 +208,9 @@ def main():
                 break
             ready_s.append(ready)
             time.sleep(2)
-            imports, runs = unfinished(db_path, restart_utc)
-            if imports or runs:
-                findings["left_unfinished"].append((round_index, action, imports, runs))
+            imports, runs, tickets = unfinished(db_path, restart_utc)
+            if imports or runs or tickets:
+                findings["left_unfinished"].append((round_index, action, imports, runs, tickets))
             missing = incomplete_captures(db_path)
             if missing:
                 findings["incomplete_captures"].append((round_index, action, missing))
@@ -218,17 +223,19 @@ def main():
                     time.sleep(1)
                 if status != 200 or not finite_radiance(body):
                     findings["build_after_kill"].append((round_index, pending_build, status))
-        # Tickets: every requested model has a run.
+        # Tickets: each answers after the restarts, and every requested model has a run or
+        # the reason it has none (interrupted by a kill, skipped after a failure).
         for ticket in findings.pop("tickets", []):
             status, body = server.request("GET", "/v1/evaluations/tickets/%s" % ticket)
             if status != 200:
                 findings["ticket_missing"].append((ticket, status))
                 continue
             answer = json.loads(body)
-            without_run = [m for m in answer.get("models", []) if not m.get("run")]
-            if len(answer.get("models", [])) < len(MODELS.split(",")) or without_run:
-                findings["ticket_models_without_run"].append((ticket, answer.get("status"),
-                                                              len(without_run)))
+            unaccounted = [m for m in answer.get("models", []) if not m.get("run") and not (
+                m.get("status") in ("interrupted", "skipped") and m.get("error"))]
+            if len(answer.get("models", [])) < len(MODELS.split(",")) or unaccounted:
+                findings["ticket_models_unaccounted"].append((ticket, answer.get("status"),
+                                                              len(unaccounted)))
         server.stop()
     report = {
         "rounds": args.rounds,

@@ -426,6 +426,13 @@ TEST(EvaluationPool, TicketListsEachRunAsItStarts) {
   const auto json = ticket_to_json(state);
   EXPECT_EQ(json["runs"], nlohmann::ordered_json::array({state.runs[0].id}));
   EXPECT_EQ(json["models"][0]["status"], "running");
+  // The model still to run is listed from the start, queued, without a run.
+  ASSERT_EQ(state.models.size(), 2u);
+  EXPECT_EQ(json["models"][1]["model"], "exact");
+  EXPECT_EQ(json["models"][1]["status"], "queued");
+  EXPECT_TRUE(json["models"][1]["run"].is_null());
+  EXPECT_EQ(json["dataset"], "synthetic");
+  EXPECT_TRUE(json["finished"].is_null());
   EXPECT_EQ(show_evaluation(f.db, state.runs[0].id)["status"], "running");
   release.set_value();
   pool.wait_idle();
@@ -651,6 +658,54 @@ TEST(EvaluationPool, FailedRunIsReportedOnTheTicket) {
   EXPECT_EQ(pool.ticket(t)->status, "failed");
   EXPECT_NE(pool.ticket(t)->error.find("no captures"), std::string::npos);
   EXPECT_EQ(ticket_to_json(*pool.ticket(t))["status"], "failed");
+}
+
+// A failure skips the models the ticket had still queued, with the reason.
+TEST(EvaluationPool, AFailedModelSkipsTheModelsAfterIt) {
+  static const ModelDescriptor broken_d = with_id("broken");
+  static const std::vector<ModelFactory> models = {
+      {&broken_d,
+       [](const ModelConfig&, const PrecomputeContext&) -> std::shared_ptr<const SkyModel> {
+         throw std::runtime_error("precomputation failed");
+       }},
+      factories()[0]};
+  Fixture f;
+  EvaluationPool pool(f.opener(), models, {1, 4, 1});
+  const std::int64_t t = pool.submit(parse_evaluation_request(
+      f.db, R"({"models": ["broken", "exact"], "dataset": "synthetic"})", models, "1"));
+  pool.wait_idle();
+  const auto json = ticket_to_json(*pool.ticket(t));
+  EXPECT_EQ(json["status"], "failed");
+  ASSERT_EQ(json["models"].size(), 2u) << json.dump();
+  EXPECT_EQ(json["models"][0]["status"], "failed");
+  EXPECT_FALSE(json["models"][0]["run"].is_null());
+  EXPECT_EQ(json["models"][1]["model"], "exact");
+  EXPECT_EQ(json["models"][1]["status"], "skipped");
+  EXPECT_TRUE(json["models"][1]["run"].is_null());
+  EXPECT_NE(json["models"][1]["error"].get<std::string>().find("not run"), std::string::npos);
+  EXPECT_FALSE(json["finished"].is_null());
+}
+
+// Tickets are stored: a pool of a later process reads them, and its ids go on.
+TEST(EvaluationPool, TicketsOutliveThePoolAndTheirIdsAreNotReused) {
+  Fixture f;
+  const std::string body = R"({"models": ["exact", "offset"], "dataset": "synthetic"})";
+  std::int64_t first = 0;
+  {
+    EvaluationPool pool(f.opener(), factories(), {1, 4, 1});
+    first = pool.submit(parse_evaluation_request(f.db, body, factories(), "1"));
+    pool.wait_idle();
+  }
+  EvaluationPool later(f.opener(), factories(), {1, 4, 1});
+  const auto kept = later.ticket(first);
+  ASSERT_TRUE(kept);
+  EXPECT_EQ(kept->status, "succeeded");
+  EXPECT_EQ(kept->run_ids.size(), 2u);
+  EXPECT_EQ(interrupt_unfinished_tickets(f.db), 0);
+  const std::int64_t second = later.submit(parse_evaluation_request(f.db, body, factories(), "1"));
+  EXPECT_GT(second, first);
+  later.wait_idle();
+  EXPECT_EQ(later.ticket(second)->status, "succeeded");
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // `clearsky serve` (the built executable) as a child process on a free loopback port, for tests
 // that need the real server with its command-line defaults: one analytic model (Preetham), no
-// 3-wavelength tables, a temporary database and cache; extra options are appended. The port is
-// read from the start-up line of its log; the process gets SIGTERM when the object goes.
+// 3-wavelength tables, a temporary database and cache; extra options are appended and `models`
+// replaces Preetham. The port is read from the start-up line of its log; the process gets
+// SIGTERM when the object goes (kill_now() for SIGKILL).
 #pragma once
 
 #include <fcntl.h>
@@ -21,7 +22,8 @@ namespace clearsky::server::testing {
 
 class ServeProcess {
  public:
-  ServeProcess(const std::filesystem::path& dir, const std::vector<std::string>& extra) {
+  ServeProcess(const std::filesystem::path& dir, const std::vector<std::string>& extra,
+               const std::string& models = "preetham") {
     log_ = dir / "serve.log";
     const std::string binary = std::string(CLEARSKY_BINARY_DIR) + "/clearsky";
     std::vector<std::string> args = {"clearsky",
@@ -37,7 +39,7 @@ class ServeProcess {
                                      "--prebuild-three",
                                      "false",
                                      "--models",
-                                     "preetham"};
+                                     models};
     args.insert(args.end(), extra.begin(), extra.end());
     pid_ = ::fork();
     if (pid_ == 0) {
@@ -72,6 +74,16 @@ class ServeProcess {
       pid_ = -1;
     }
     return std::chrono::steady_clock::now() - start;
+  }
+
+  // SIGKILL, then waits for the process to end; returns the signal that ended it (0 when none).
+  int kill_now() {
+    if (pid_ <= 0) return 0;
+    ::kill(pid_, SIGKILL);
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    pid_ = -1;
+    return WIFSIGNALED(status) ? WTERMSIG(status) : 0;
   }
 
   // 0 when the server did not start within 60 s.
