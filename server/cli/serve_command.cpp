@@ -20,6 +20,7 @@
 #include "server/cli/commands.h"
 #include "server/cli/database_option.h"
 #include "server/http/http_server.h"
+#include "server/memory/heap_bounds.h"
 #include "server/scheduler/scheduler.h"
 #include "storage/repositories/evaluation_run_repository.h"
 
@@ -48,6 +49,8 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   sigaddset(&signals, SIGINT);
   sigaddset(&signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  // Before any other thread: each thread gets a malloc arena (server/memory/heap_bounds.h).
+  spdlog::info("memory: {}", server::bound_heap_arenas());
 
   // The database is opened (created and migrated by the storage layer) at start, so that a
   // bad --db fails here rather than at the first request that needs it.

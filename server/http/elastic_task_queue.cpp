@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <thread>
 
+#include "server/memory/heap_bounds.h"
+
 namespace clearsky::server {
 
 ElasticTaskQueue::ElasticTaskQueue(const Options& options, WorkerLoad& load)
@@ -101,9 +103,14 @@ void ElasticTaskQueue::work() {
   --workers_;
   publish();
   not_full_.notify_one();
+  const bool retired = !shutting_down_;
   // Nothing of this object is touched after the lock is released: shutdown() may then return
   // and the queue be destroyed.
   if (workers_ == 0) all_ended_.notify_all();
+  lock.unlock();
+  // The load fell: what the finished connections freed goes back to the system instead of
+  // staying in malloc's arenas (server/memory/heap_bounds.h).
+  if (retired) release_free_heap_memory();
 }
 
 }  // namespace clearsky::server
