@@ -199,6 +199,9 @@ void run_server(const server::ServerConfig& config, const std::string& software_
                  received, config.drain_delay_s, config.drain_timeout_s);
     http.begin_drain();
     if (wait_for(listening_ended, std::chrono::seconds(config.drain_delay_s))) return;
+    // A signal during start-up: stop() acts only once the server listens.
+    while (!http.running() && !listening_ended)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
     spdlog::info("drain: no longer accepting connections");
     http.stop();
     if (!wait_for(listening_ended, std::chrono::seconds(config.drain_timeout_s))) {

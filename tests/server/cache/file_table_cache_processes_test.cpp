@@ -1,8 +1,10 @@
 // The disk table cache shared by several writers (docs/deploy.md "Shared table cache"): two
 // real processes (fork) storing the same entry over and over while a third reads it never leave
 // or read a torn file, and leave no temporary file behind; two writers with the same process id
-// (replicas in containers are often all process 1; here two caches of one process) never write
-// into one temporary file; temporary files of killed writers are removed once stale.
+// (replicas in containers are often all process 1; here two caches of one process) storing at
+// once leave a complete entry (the earlier temporary name, <entry>.tmp.<pid>.<counter>, was the
+// same for both, and whether that tore the entry depended on timing: a regression check, not a
+// reproduction); temporary files of killed writers are removed once stale.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -77,7 +79,7 @@ TEST(FileTableCacheProcesses, TwoWritersAndAReaderNeverSeeATornEntry) {
   EXPECT_EQ(files_in(temp.path), 1u);
 }
 
-TEST(FileTableCacheProcesses, WritersWithTheSameProcessIdUseDistinctTemporaryFiles) {
+TEST(FileTableCacheProcesses, WritersWithTheSameProcessIdLeaveACompleteEntry) {
   clearsky::testing::TempDir temp;
   const std::string a = payload_of('a'), b = payload_of('b');
   // Two caches of one process: the same process id, each with its own state, as two replicas
