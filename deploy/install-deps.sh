@@ -12,11 +12,19 @@ packages=(
   libhowardhinnant-date-dev tzdata libxxhash-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   wrk curl python3 haproxy
+  # systemd-analyze checks deploy/systemd/clearsky.service; graphviz renders the topology of
+  # docs/deploy.md (docs/figures/deploy-topology.dot).
+  systemd graphviz
   python3-jsonschema
   # The fuzz programs (fuzz/run.sh, docs/fuzzing.md): clang 14 with its sanitizer and libFuzzer
   # runtimes; ccache keeps their rebuilds short.
   clang libclang-rt-14-dev ccache
 )
+# kubectl renders deploy/kubernetes (`kubectl kustomize`, CTest KubernetesManifests): Debian's
+# kubernetes-client, unless the machine already has a kubectl.
+if ! command -v kubectl >/dev/null 2>&1; then
+  packages+=(kubernetes-client)
+fi
 # The OpenAPI linter (docs/openapi.md) runs on node and npm: Debian's, unless the machine
 # already has a node with its npm (another distribution's nodejs package ships both).
 if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then

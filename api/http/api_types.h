@@ -82,7 +82,8 @@ struct DataServices {
 struct ApiContext {
   const ModelProvider& models;
   Limits limits;
-  // Null on a server without a database: the data endpoints answer 503.
+  // Null on a server without a database (serve --role query): the data endpoints answer 503
+  // no_database naming the role.
   const DataServices* data = nullptr;
   // The Prometheus text of GET /metrics (empty function: 503).
   std::function<std::string()> metrics_text = {};
@@ -90,6 +91,9 @@ struct ApiContext {
   int retry_after_s = 5;
   // Where handlers report what the client cannot see (a streamed image's unanswered pixels).
   std::function<void(const std::string& message)> warn = {};
+  // True once the server drains before it stops (GET /readyz answers 503 draining); empty:
+  // never.
+  std::function<bool()> draining = {};
 };
 
 // The request's parameters: the query for GET; for POST, the JSON body's scalar members (the

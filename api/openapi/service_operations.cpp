@@ -165,7 +165,7 @@ Area service_area() {
     "operationId": "readyz",
     "tags": ["operations"],
     "summary": "Readiness",
-    "description": "200 when the default tables of every served model are ready; 503 while some are built (Bruneton's take minutes on a first start), with each model's state.",
+    "description": "200 when the default tables of every served model are ready; 503 while some are built (Bruneton's take minutes on a first start), with each model's state, and 503 (code draining) once the server drains before it stops (SIGTERM; docs/deploy.md).",
     "responses": {
       "200": {
         "description": "Every model is ready.",
@@ -175,7 +175,7 @@ Area service_area() {
         }}
       },
       "503": {
-        "description": "Some default tables are still being built (code not_ready).",
+        "description": "Some default tables are still being built (code not_ready), or the server is draining (code draining, without models).",
         "headers": {"Retry-After": {"$ref": "#/components/headers/Retry-After"}},
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/NotReady"},

@@ -5,9 +5,14 @@
 
 namespace clearsky::api {
 
+ApiError no_database() {
+  return ApiError(503, "no_database", "role",
+                  "this server has no database (serve --role query): datasets, imports, "
+                  "evaluations and jobs are served by the writer (serve --role writer)");
+}
+
 const DataServices& data_services(const ApiContext& context) {
-  if (context.data == nullptr)
-    throw ApiError(503, "no_database", "", "this server serves no datasets, evaluations or jobs");
+  if (context.data == nullptr) throw no_database();
   return *context.data;
 }
 

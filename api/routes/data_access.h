@@ -8,7 +8,10 @@
 
 namespace clearsky::api {
 
-// The context's data services; ApiError 503 (no_database) when the server has none.
+// The refusal of a data route by a server without a database (serve --role query): 503
+// no_database, naming the role (docs/deploy.md "Roles").
+ApiError no_database();
+// The context's data services; no_database() when the server has none.
 const DataServices& data_services(const ApiContext& context);
 // A new connection to the server's database.
 storage::Database open_database(const ApiContext& context);

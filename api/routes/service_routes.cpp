@@ -21,9 +21,14 @@ ApiResponse healthz(const ApiContext&, const ApiRequest& request) {
 }
 
 // 200 when the default tables of every model are ready, else 503 with Retry-After; both with
-// each model's state.
+// each model's state. A draining server (SIGTERM, docs/deploy.md "Graceful drain") is not
+// ready whatever its tables: load balancers stop sending it requests.
 ApiResponse readyz(const ApiContext& context, const ApiRequest& request) {
   no_parameters(request);
+  if (context.draining && context.draining())
+    return error_response(ApiError(503, "draining", "",
+                                   "the server is stopping: it finishes the requests in flight and "
+                                   "takes no new ones"));
   nlohmann::json models = nlohmann::json::object();
   bool ready = true;
   for (const ModelFactory& f : context.models.factories()) {

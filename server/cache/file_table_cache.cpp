@@ -2,8 +2,11 @@
 #include "server/cache/file_table_cache.h"
 
 #include <spdlog/spdlog.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -37,6 +40,10 @@ bool get(std::string_view& in, T& value) {
 
 FileTableCache::FileTableCache(std::filesystem::path directory) : directory_(std::move(directory)) {
   std::filesystem::create_directories(directory_);
+  // A writer killed between its temporary file and the rename leaves the file behind; one still
+  // being written (by another process sharing the folder) is younger than this.
+  if (const std::size_t stale = remove_stale_temporaries(kStaleTemporaryAge); stale > 0)
+    spdlog::info("table cache: removed {} temporary files left by killed writers", stale);
 }
 
 std::filesystem::path FileTableCache::path_of(const std::string& key) const {
@@ -79,33 +86,66 @@ std::optional<std::string> FileTableCache::load(const std::string& key) const {
 
 void FileTableCache::store(const std::string& key, std::string_view bytes) const {
   const std::filesystem::path target = path_of(key);
-  const std::filesystem::path temporary = target.string() + ".tmp." + std::to_string(::getpid()) +
-                                          "." + std::to_string(temp_counter_.fetch_add(1));
   std::string header(kMagic, sizeof kMagic);
   put(header, kFormatVersion);
   put(header, static_cast<std::uint32_t>(key.size()));
   header += key;
   put(header, static_cast<std::uint64_t>(bytes.size()));
   put(header, table_checksum(bytes));
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    file.write(header.data(), static_cast<std::streamsize>(header.size()));
-    file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    file.flush();
-    if (!file) {
-      spdlog::warn("table cache: cannot write {}", temporary.string());
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      return;
-    }
+  // mkstemp(3) creates the name with O_EXCL: unique even among processes of other hosts or
+  // containers sharing the folder, where process ids repeat (every container's server may be
+  // process 1), so two writers never write into one temporary file.
+  std::string temporary = target.string() + kTemporaryInfix + "XXXXXX";
+  const int fd = ::mkstemp(temporary.data());
+  if (fd < 0) {
+    spdlog::warn("table cache: cannot create a temporary file for {}: {}", target.string(),
+                 std::strerror(errno));
+    return;
   }
+  const auto write_all = [fd](std::string_view data) {
+    while (!data.empty()) {
+      const ssize_t n = ::write(fd, data.data(), data.size());
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) return false;
+      data.remove_prefix(static_cast<std::size_t>(n));
+    }
+    return true;
+  };
+  // fsync before the rename: after a power cut the entry is the old file or the whole new one
+  // (the rename reaches the disk after the data it names).
+  const bool written =
+      write_all(header) && write_all(bytes) && ::fchmod(fd, 0644) == 0 && ::fsync(fd) == 0;
+  const int write_error = errno;
+  const bool closed = ::close(fd) == 0;
   std::error_code error;
+  if (!written || !closed) {
+    spdlog::warn("table cache: cannot write {}: {}", temporary,
+                 std::strerror(written ? errno : write_error));
+    std::filesystem::remove(temporary, error);
+    return;
+  }
   std::filesystem::rename(temporary, target, error);
   if (error) {
-    spdlog::warn("table cache: cannot rename {} to {}: {}", temporary.string(), target.string(),
+    spdlog::warn("table cache: cannot rename {} to {}: {}", temporary, target.string(),
                  error.message());
     std::filesystem::remove(temporary, error);
   }
+}
+
+std::size_t FileTableCache::remove_stale_temporaries(std::chrono::seconds older_than) const {
+  std::size_t removed = 0;
+  std::error_code error;
+  const auto now = std::filesystem::file_time_type::clock::now();
+  for (auto it = std::filesystem::directory_iterator(directory_, error);
+       !error && it != std::filesystem::directory_iterator(); it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.find(kTemporaryInfix) == std::string::npos) continue;
+    std::error_code ignored;
+    const auto modified = std::filesystem::last_write_time(it->path(), ignored);
+    if (ignored || now - modified < older_than) continue;
+    if (std::filesystem::remove(it->path(), ignored)) ++removed;
+  }
+  return removed;
 }
 
 }  // namespace clearsky::server

@@ -14,13 +14,16 @@
 // Version 1 files carried an FNV-1a checksum: a file of another version is a miss, logged, and
 // rebuilt (its checksum is never read as this version's). A missing, truncated, stale or
 // corrupt file is a miss (the model rebuilds and stores again, replacing it). Writes go to a
-// unique temporary file in the same directory, then rename(2) replaces the entry atomically,
-// so readers never see a partial file. Store failures are logged and otherwise ignored (the
-// cache is an optimisation).
-// Thread-safety: load() and store() may be called concurrently from any thread.
+// temporary file in the same directory created by mkstemp(3) (unique among all the processes
+// sharing the directory, replicas in other containers included, docs/deploy.md "Shared table
+// cache"), fsync(2)ed, then rename(2) replaces the entry atomically, so readers never see a
+// partial file and the last complete write wins. Temporary files a killed writer left behind
+// are removed when a cache is opened, once older than kStaleTemporaryAge. Store failures are
+// logged and otherwise ignored (the cache is an optimisation).
+// Thread-safety: load() and store() may be called concurrently from any thread and process.
 #pragma once
 
-#include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <functional>
 
@@ -32,6 +35,10 @@ class FileTableCache final : public TableCache {
  public:
   // 2: the payload checksum is XXH3 64 (1: FNV-1a 64).
   static constexpr std::uint32_t kFormatVersion = 2;
+  // In the name of every temporary file: "<entry>.tmp.XXXXXX".
+  static constexpr const char* kTemporaryInfix = ".tmp.";
+  // A temporary file untouched for this long belongs to a writer that died.
+  static constexpr std::chrono::seconds kStaleTemporaryAge{3600};
 
   // Creates directory when missing (std::filesystem_error when it cannot).
   explicit FileTableCache(std::filesystem::path directory);
@@ -42,11 +49,12 @@ class FileTableCache final : public TableCache {
   std::filesystem::path path_of(const std::string& key) const;
   // Called after each load with whether it hit (for metrics); set before concurrent use.
   void set_observer(std::function<void(bool hit)> observer) { observer_ = std::move(observer); }
+  // Removes the temporary files not modified for older_than; returns how many.
+  std::size_t remove_stale_temporaries(std::chrono::seconds older_than) const;
 
  private:
   std::filesystem::path directory_;
   std::function<void(bool)> observer_;
-  mutable std::atomic<std::uint64_t> temp_counter_{0};
 };
 
 }  // namespace clearsky::server

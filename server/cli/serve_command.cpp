@@ -2,7 +2,9 @@
 // `clearsky --config FILE serve`, an INI/TOML file) fill ServerConfig
 // (server/config/server_config.h). At start the default tables of every registered model are loaded
 // from --cache-dir or built in the background, with progress in the log; /healthz answers at once,
-// /readyz once they are ready. SIGINT/SIGTERM stop the server gracefully.
+// /readyz once they are ready. `--role query` runs a replica without a database (the data
+// endpoints answer 503 no_database, no scheduler); SIGINT/SIGTERM drain the server: /readyz 503,
+// --drain-delay, then requests in flight get --drain-timeout (docs/deploy.md).
 #include <pthread.h>
 #include <spdlog/spdlog.h>
 
@@ -10,12 +12,15 @@
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
+#include <span>
 #include <thread>
 
 #include "api/datasets/upload_spool.h"
 #include "api/imports/imports_api.h"
 #include "models/colour/three_wavelength_rgb.h"
 #include "models/registry.h"
+#include "server/auth/token_file.h"
 #include "server/cache/file_table_cache.h"
 #include "server/cli/commands.h"
 #include "server/cli/database_option.h"
@@ -40,9 +45,102 @@ std::vector<ModelFactory> served_models(const std::vector<std::string>& ids) {
   return chosen;
 }
 
+// The writer's data services (docs/deploy.md "Roles"): the database opened (created and
+// migrated) at start, so that a bad --db fails here rather than at the first request; runs and
+// imports a crash interrupted marked failed; the evaluation and import pools; the scheduler.
+class WriterServices {
+ public:
+  WriterServices(const server::ServerConfig& config, std::span<const ModelFactory> models,
+                 const std::string& software_version)
+      : database_(open_and_recover(config.db_path)),
+        db_path_(config.db_path),
+        evaluations_(open_database(), models,
+                     {config.evaluation_workers, config.evaluation_queue, 1}),
+        imports_(open_database(), import_options(config)) {
+    data_.db_path = db_path_;
+    data_.upload_dir =
+        (db_path_.has_parent_path() ? db_path_.parent_path() : std::filesystem::path(".")) /
+        "uploads";
+    if (const int stale = api::remove_stale_uploads(data_.upload_dir); stale > 0)
+      spdlog::info("removed {} upload files left by an earlier process", stale);
+    data_.upload_max_bytes = config.max_upload_bytes;
+    data_.imports = &imports_;
+    data_.evaluations = &evaluations_;
+    data_.models = models;
+    data_.software_version = software_version;
+    scheduler_.emplace(open_database(), evaluations_, software_version);
+    scheduler_->start();
+  }
+  ~WriterServices() { scheduler_->stop(); }
+  WriterServices(const WriterServices&) = delete;
+  WriterServices& operator=(const WriterServices&) = delete;
+
+  const api::DataServices& data() const { return data_; }
+
+ private:
+  // Opens (creates, migrates) the database, then marks failed the runs and imports a crash
+  // interrupted, and interrupted their tickets with the models they had still queued, before
+  // any worker starts.
+  static storage::Database open_and_recover(const std::string& path) {
+    storage::Database database = open_cli_database(path);
+    storage::Database db = storage::Database::open(path);
+    const int interrupted = storage::EvaluationRunRepository(db).fail_unfinished(
+        "interrupted: the server stopped during the run");
+    if (interrupted > 0)
+      spdlog::warn("{} evaluation runs were interrupted; marked failed", interrupted);
+    const int tickets = api::interrupt_unfinished_tickets(db);
+    if (tickets > 0)
+      spdlog::warn("{} evaluation tickets were interrupted; marked interrupted", tickets);
+    const int imports = api::fail_interrupted_imports(db);
+    if (imports > 0) spdlog::warn("{} imports were interrupted; marked failed", imports);
+    return database;
+  }
+  api::EvaluationPool::OpenDatabase open_database() const {
+    return [path = db_path_] { return storage::Database::open(path); };
+  }
+  static api::ImportPoolOptions import_options(const server::ServerConfig& config) {
+    api::ImportPoolOptions options;
+    options.workers = config.import_workers;
+    options.max_queued = config.import_queue;
+    options.log = [](std::int64_t id, bool ok, const std::string& message) {
+      if (ok)
+        spdlog::info("import {} succeeded {}", id, message);
+      else
+        spdlog::warn("import {} failed {}", id, message);
+    };
+    return options;
+  }
+
+  storage::Database database_;
+  std::filesystem::path db_path_;
+  api::EvaluationPool evaluations_;
+  api::ImportPool imports_;
+  api::DataServices data_;
+  std::optional<server::Scheduler> scheduler_;
+};
+
+// The bearer token: --token-file (a credential file), else --token, else CLEARSKY_TOKEN.
+server::WriteAuthorizer write_authorizer(const server::ServerConfig& config) {
+  if (!config.token_file.empty())
+    return server::WriteAuthorizer(server::read_token_file(config.token_file));
+  return server::WriteAuthorizer::from_option_or_environment(config.token,
+                                                             std::getenv("CLEARSKY_TOKEN"));
+}
+
+// Waits until done is true or the time has passed; true when done.
+bool wait_for(const std::atomic<bool>& done, std::chrono::seconds time) {
+  const auto deadline = std::chrono::steady_clock::now() + time;
+  while (!done) {
+    if (std::chrono::steady_clock::now() >= deadline) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return true;
+}
+
 void run_server(const server::ServerConfig& config, const std::string& software_version) {
   // Before anything starts: too many connection slots for cpp-httplib's select(2).
   config.check_connection_slots();
+  const bool writer = config.role == server::ServerRole::writer;
   // Signals are taken by one thread with sigwait (a handler may not call into the server).
   sigset_t signals;
   sigemptyset(&signals);
@@ -52,9 +150,7 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   // Before any other thread: each thread gets a malloc arena (server/memory/heap_bounds.h).
   spdlog::info("memory: {}", server::bound_heap_arenas());
 
-  // The database is opened (created and migrated by the storage layer) at start, so that a
-  // bad --db fails here rather than at the first request that needs it.
-  const storage::Database database = open_cli_database(config.db_path);
+  const server::WriteAuthorizer auth = write_authorizer(config);
   server::FileTableCache cache(config.cache_dir);
   server::Metrics metrics;
   cache.set_observer([&metrics](bool hit) { metrics.observe_cache_lookup(hit); });
@@ -67,6 +163,9 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   options.builder_threads = config.builder_threads;
   options.cache = &cache;
   const std::vector<ModelFactory> registered = served_models(config.models);
+  // The writer's database is opened before the tables start, so that a bad --db fails at once.
+  std::optional<WriterServices> services;
+  if (writer) services.emplace(config, registered, software_version);
   server::TableStore tables(registered, options);
   tables.set_build_observer([&metrics](const std::string& id, double seconds, bool from_cache) {
     metrics.observe_build(id, seconds, from_cache);
@@ -85,66 +184,38 @@ void run_server(const server::ServerConfig& config, const std::string& software_
     }
   }
 
-  // The data endpoints: runs a crash interrupted are marked failed first, and their tickets
-  // interrupted with the models they had still queued; then evaluations go to their own
-  // workers and the scheduler resumes from the jobs table.
-  {
-    storage::Database db = storage::Database::open(config.db_path);
-    const int interrupted = storage::EvaluationRunRepository(db).fail_unfinished(
-        "interrupted: the server stopped during the run");
-    if (interrupted > 0)
-      spdlog::warn("{} evaluation runs were interrupted; marked failed", interrupted);
-    const int tickets = api::interrupt_unfinished_tickets(db);
-    if (tickets > 0)
-      spdlog::warn("{} evaluation tickets were interrupted; marked interrupted", tickets);
-    const int imports = api::fail_interrupted_imports(db);
-    if (imports > 0) spdlog::warn("{} imports were interrupted; marked failed", imports);
-  }
-  const std::filesystem::path db_path = config.db_path;
-  const auto open_database = [db_path] { return storage::Database::open(db_path); };
-  api::EvaluationPool evaluations(open_database, registered,
-                                  {config.evaluation_workers, config.evaluation_queue, 1});
-  const server::WriteAuthorizer auth = server::WriteAuthorizer::from_option_or_environment(
-      config.token, std::getenv("CLEARSKY_TOKEN"));
-  if (!auth.writes_enabled())
-    spdlog::warn("no token (--token or CLEARSKY_TOKEN): write endpoints are disabled");
-  api::DataServices data;
-  data.db_path = db_path;
-  data.upload_dir =
-      (db_path.has_parent_path() ? db_path.parent_path() : std::filesystem::path(".")) / "uploads";
-  if (const int stale = api::remove_stale_uploads(data.upload_dir); stale > 0)
-    spdlog::info("removed {} upload files left by an earlier process", stale);
-  data.upload_max_bytes = config.max_upload_bytes;
-  api::ImportPoolOptions import_options;
-  import_options.workers = config.import_workers;
-  import_options.max_queued = config.import_queue;
-  import_options.log = [](std::int64_t id, bool ok, const std::string& message) {
-    if (ok)
-      spdlog::info("import {} succeeded {}", id, message);
-    else
-      spdlog::warn("import {} failed {}", id, message);
-  };
-  api::ImportPool imports(open_database, import_options);
-  data.imports = &imports;
-  data.evaluations = &evaluations;
-  data.models = registered;
-  data.software_version = software_version;
-  server::Scheduler scheduler(open_database, evaluations, software_version);
-  scheduler.start();
-
+  if (writer && !auth.writes_enabled())
+    spdlog::warn(
+        "no token (--token-file, --token or CLEARSKY_TOKEN): write endpoints are disabled");
   server::HttpServer http(config, tables, metrics);
-  http.add_data_services(data, auth);
+  if (services) http.add_data_services(services->data(), auth);
   const int port = http.bind();
   spdlog::info(
-      "clearsky serving on http://{}:{} (at most {} workers, {} models, cache {}, database {})",
-      config.host, port, config.worker_threads(), registered.size(), config.cache_dir,
-      config.db_path);
+      "clearsky serving on http://{}:{} (role {}, at most {} workers, {} models, cache {}, "
+      "database {})",
+      config.host, port, writer ? "writer" : "query", config.worker_threads(), registered.size(),
+      config.cache_dir, writer ? config.db_path : std::string("none"));
 
+  // SIGTERM or SIGINT: the graceful drain of docs/deploy.md "Graceful drain".
+  std::atomic<bool> listening_ended{false};
   std::thread signal_thread([&] {
     int received = 0;
     sigwait(&signals, &received);
-    spdlog::info("signal {}: stopping", received);
+    if (listening_ended) return;
+    spdlog::info("signal {}: draining ({} s not ready, then up to {} s for requests in flight)",
+                 received, config.drain_delay_s, config.drain_timeout_s);
+    http.begin_drain();
+    if (wait_for(listening_ended, std::chrono::seconds(config.drain_delay_s))) return;
+    // A signal during start-up: stop() acts only once the server listens.
+    while (!http.running() && !listening_ended)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    spdlog::info("drain: no longer accepting connections");
     http.stop();
+    if (!wait_for(listening_ended, std::chrono::seconds(config.drain_timeout_s))) {
+      const std::size_t cut = http.cut_connections();
+      spdlog::warn("drain: {} connections still open after {} s were cut", cut,
+                   config.drain_timeout_s);
+    }
   });
   std::atomic<bool> done{false};
   std::thread progress_thread([&] {
@@ -162,12 +233,13 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   });
 
   http.listen();
+  listening_ended = true;
   done = true;
   progress_thread.join();
   // The signal thread waits for a signal; after a stop from elsewhere, send it one.
   pthread_kill(signal_thread.native_handle(), SIGTERM);
   signal_thread.join();
-  scheduler.stop();
+  spdlog::info("stopped: every connection has ended");
 }
 
 }  // namespace
@@ -184,6 +256,13 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
   command->add_option("--port", config->port, "Port (0: any free port)")
       ->capture_default_str()
       ->check(CLI::Range(0, 65535));
+  auto role = std::make_shared<std::string>("writer");
+  command
+      ->add_option("--role", *role,
+                   "writer: owns the database (data endpoints, scheduler); query: a replica "
+                   "without a database serving the sky endpoints")
+      ->check(CLI::IsMember({"writer", "query"}))
+      ->capture_default_str();
   add_database_option(*command, config->db_path);
   command->add_option("--cache-dir", config->cache_dir, "Disk cache of model tables")
       ->capture_default_str();
@@ -258,9 +337,26 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
       ->add_option("--prebuild-three", config->prebuild_three,
                    "Also build the 3-wavelength tables of rgb method=three at start")
       ->capture_default_str();
-  command->add_option("--token", config->token,
-                      "Bearer token of the write endpoints (default: CLEARSKY_TOKEN; none: writes "
-                      "disabled)");
+  auto* token = command->add_option(
+      "--token", config->token,
+      "Bearer token of the write endpoints (default: CLEARSKY_TOKEN; none: writes disabled); "
+      "prefer --token-file, which keeps it off the command line");
+  command
+      ->add_option("--token-file", config->token_file,
+                   "File holding the bearer token, e.g. a systemd credential (%d/token)")
+      ->excludes(token);
+  command
+      ->add_option("--drain-delay", config->drain_delay_s,
+                   "After SIGTERM: s during which /readyz answers 503 and answers close their "
+                   "connections, before the listening socket closes")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 3600));
+  command
+      ->add_option("--drain-timeout", config->drain_timeout_s,
+                   "Then: s requests in flight (streamed skydomes too) have to finish; the rest "
+                   "are cut")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 3600));
   command
       ->add_option("--evaluation-workers", config->evaluation_workers,
                    "Background evaluation threads")
@@ -282,7 +378,13 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
                    "An origin browsers may call the API from, e.g. https://example.org "
                    "(repeatable; * for any; default: none)")
       ->allow_extra_args(false);
-  command->callback([config, software_version] { run_server(*config, software_version); });
+  command->callback([command, config, role, software_version] {
+    config->role = *role == "query" ? server::ServerRole::query : server::ServerRole::writer;
+    // One writer owns the database; a query replica must not open (or create) one.
+    if (config->role == server::ServerRole::query && command->get_option("--db")->count() > 0)
+      throw CLI::ValidationError("--db", "a query replica (--role query) has no database");
+    run_server(*config, software_version);
+  });
 }
 
 }  // namespace clearsky::cli

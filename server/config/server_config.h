@@ -6,7 +6,8 @@
 // | option               | unit  | default         | meaning                                                                               |
 // |----------------------|-------|-----------------|---------------------------------------------------------------------------------------|
 // | host, port           |       | 127.0.0.1, 8080 | where to listen (port 0: any free port)                                               |
-// | db                   | path  | var/clearsky.db | SQLite database (its parent directory is created)                                     |
+// | role                 |       | writer          | writer: owns the database (data endpoints, scheduler); query: no database (sky only)  |
+// | db                   | path  | var/clearsky.db | SQLite database (its parent directory is created); not with role query                |
 // | cache_dir            | path  | var/cache       | disk cache of model tables                                                            |
 // | threads              |       | 0               | most HTTP workers (started on demand, a worker per open connection); 0: 512           |
 // | max_queued           |       | 256             | accepted connections waiting for a worker (the acceptor waits beyond)                 |
@@ -27,6 +28,10 @@
 // | table_memory_bytes   | byte  | 1 GiB           | tables kept or being built, defaults included (503 beyond)                            |
 // | builder_threads      |       | 1               | concurrent builds of the tables queued at start                                       |
 // | token                |       | (none)          | bearer token of the write endpoints; none: CLEARSKY_TOKEN, else writes off            |
+// | token_file           | path  | (none)          | file holding the token (systemd LoadCredential=); instead of token                    |
+// | drain_delay_s        | s     | 0               | after SIGTERM, /readyz answers 503 and every answer closes its connection this long    |
+// |                      |       |                 | before the listening socket closes (load balancers see the replica leave)             |
+// | drain_timeout_s      | s     | 30              | then requests in flight (streamed skydomes included) have this long; the rest are cut |
 // | models               |       | (all)           | serve only these model ids                                                            |
 // | max_upload_bytes     | byte  | 1 GiB           | dataset upload limit (413 beyond); other routes: payload_max_bytes                    |
 // | import_workers       |       | 1               | background import threads (never HTTP workers)                                        |
@@ -46,9 +51,14 @@
 
 namespace clearsky::server {
 
+// What a server instance is for (docs/deploy.md "Roles"): one writer owns the SQLite database;
+// query replicas serve the sky endpoints from the shared table cache and have no database.
+enum class ServerRole { writer, query };
+
 struct ServerConfig {
   std::string host = "127.0.0.1";
   int port = 8080;
+  ServerRole role = ServerRole::writer;
   std::string db_path = "var/clearsky.db";
   std::string cache_dir = "var/cache";
   std::vector<std::string> models;  // empty: every registered model
@@ -74,6 +84,9 @@ struct ServerConfig {
   unsigned builder_threads = 1;
   bool prebuild_three = true;
   std::string token;
+  std::string token_file;  // empty: none
+  int drain_delay_s = 0;
+  int drain_timeout_s = 30;
   unsigned evaluation_workers = 1;
   std::size_t evaluation_queue = 16;
   unsigned import_workers = 1;

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "api/http/cache_policy.h"
+#include "api/routes/data_access.h"
 #include "api/routes/route_match.h"
 #include "server/http/connection_server.h"
 #include "server/http/request_body.h"
@@ -209,7 +210,8 @@ HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& 
                nullptr,
                [this] { return metrics_.scrape(tables_.table_bytes()); },
                config.retry_after_s,
-               [](const std::string& message) { spdlog::warn("{}", message); }},
+               [](const std::string& message) { spdlog::warn("{}", message); },
+               [this] { return http_->draining(); }},
       http_(std::make_unique<ConnectionServer>(connection_limits(config), worker_pool(config))) {
   // The library's one limit is the largest body any route takes (an upload); the other routes
   // apply payload_max_bytes themselves (request_body.h and the pre-routing handler).
@@ -261,6 +263,10 @@ void HttpServer::stop() {
 }
 
 bool HttpServer::running() const { return http_->is_running(); }
+
+void HttpServer::begin_drain() { http_->begin_drain(); }
+
+std::size_t HttpServer::cut_connections() { return http_->cut_connections(); }
 
 void HttpServer::send(const httplib::Request& req, httplib::Response& res,
                       api::ApiResponse response) {
@@ -365,6 +371,10 @@ void HttpServer::install() {
       response.headers.emplace_back("Allow", api::allow_header(match));
       return refuse(std::move(response));
     }
+    // Every write route is a data route: a server without a database (a query replica) says
+    // so before it asks for a token it could not use.
+    if (match.route->needs_token && context_.data == nullptr)
+      return refuse(api::error_response(api::no_database()));
     if (match.route->needs_token && !auth_->allows(req.get_header_value("Authorization")))
       return refuse(refuse_write(*auth_, req));
     // cpp-httplib reads no body of a GET (or HEAD): a small one left there ends the connection.
@@ -383,6 +393,8 @@ void HttpServer::install() {
     if (req.get_header_value<std::uint64_t>("Content-Length") > limit) {
       refusal =
           api::error_response(body_too_large(limit, upload ? "the upload" : "the request body"));
+    } else if (match.route != nullptr && match.route->needs_token && context_.data == nullptr) {
+      refusal = api::error_response(api::no_database());
     } else if (match.route != nullptr && match.route->needs_token &&
                !auth_->allows(req.get_header_value("Authorization"))) {
       refusal = refuse_write(*auth_, req);

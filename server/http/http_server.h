@@ -35,6 +35,8 @@ struct Response;
 
 namespace clearsky::server {
 
+class ConnectionServer;
+
 class HttpServer {
  public:
   HttpServer(const ServerConfig& config, TableStore& tables, Metrics& metrics);
@@ -42,16 +44,24 @@ class HttpServer {
 
   // The services of the data endpoints (datasets, imports, evaluations, jobs) and the bearer
   // token of the write routes; both must outlive the server. Call before bind(). Without
-  // them the data endpoints answer 503 and writes 403.
+  // them (a query replica) the data endpoints, writes included, answer 503 no_database.
   void add_data_services(const api::DataServices& services, const WriteAuthorizer& auth);
 
   // Binds config.host:config.port (port 0: a free port); returns the bound port. Throws
   // std::runtime_error when it cannot bind.
   int bind();
-  // Serves until stop(); blocking.
+  // Serves until stop(); blocking. Returns once every connection has ended.
   void listen();
+  // Closes the listening socket: idle connections end, requests in flight finish.
   void stop();
   bool running() const;
+
+  // The first step of a graceful drain (docs/deploy.md "Graceful drain"): /readyz answers 503
+  // (code draining) and every answer closes its connection; the server still accepts until
+  // stop(). Thread-safe.
+  void begin_drain();
+  // Ends every connection still open (the drain's time is up); returns how many. Thread-safe.
+  std::size_t cut_connections();
 
  private:
   void install();
@@ -69,7 +79,7 @@ class HttpServer {
   api::ApiContext context_;
   WriteAuthorizer no_token_{std::nullopt};
   const WriteAuthorizer* auth_ = &no_token_;
-  std::unique_ptr<httplib::Server> http_;
+  std::unique_ptr<ConnectionServer> http_;
   int listen_socket_ = -1;
 };
 

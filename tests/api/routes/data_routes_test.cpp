@@ -165,6 +165,7 @@ TEST_F(DataRouteHandlers, WithoutADatabaseTheDataRoutesAnswer503) {
   const ApiResponse r = call("GET", "/v1/datasets", "", nullptr, false);
   EXPECT_EQ(r.status, 503);
   EXPECT_EQ(json_of(r)["error"]["code"], "no_database");
+  EXPECT_EQ(json_of(r)["error"]["parameter"], "role");
 }
 
 }  // namespace

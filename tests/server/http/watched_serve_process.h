@@ -26,16 +26,21 @@ namespace clearsky::server::testing {
 
 class WatchedServeProcess {
  public:
+  // Whether the process gets its own database (--db), or none (a query replica, --role query).
+  enum class Database { own, none };
+
   // arguments follow `clearsky serve --host 127.0.0.1 --port 0 --db ... --cache-dir ...`;
   // max_open_files > 0 sets the child's RLIMIT_NOFILE (as `ulimit -n`).
-  explicit WatchedServeProcess(const std::vector<std::string>& arguments,
-                               rlim_t max_open_files = 0) {
+  explicit WatchedServeProcess(const std::vector<std::string>& arguments, rlim_t max_open_files = 0,
+                               Database database = Database::own) {
     log_ = dir_.path / "serve.log";
-    std::vector<std::string> args = {"clearsky",    "serve",
-                                     "--host",      "127.0.0.1",
-                                     "--port",      "0",
-                                     "--db",        (dir_.path / "db.sqlite").string(),
-                                     "--cache-dir", (dir_.path / "cache").string()};
+    std::vector<std::string> args = {"clearsky", "serve", "--host", "127.0.0.1", "--port", "0"};
+    if (database == Database::own) {
+      args.push_back("--db");
+      args.push_back((dir_.path / "db.sqlite").string());
+    }
+    args.push_back("--cache-dir");
+    args.push_back((dir_.path / "cache").string());
     args.insert(args.end(), arguments.begin(), arguments.end());
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
@@ -43,6 +48,8 @@ class WatchedServeProcess {
     const std::string binary = std::string(CLEARSKY_BINARY_DIR) + "/clearsky";
     pid_ = ::fork();
     if (pid_ == 0) {
+      // In its own folder: a relative path the server opens (a default --db) lands there.
+      if (::chdir(dir_.path.c_str()) != 0) ::_exit(126);
       const int fd = ::open(log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       ::dup2(fd, 1);
       ::dup2(fd, 2);
@@ -85,12 +92,21 @@ class WatchedServeProcess {
     int status = 0;
     if (::waitpid(pid_, &status, WNOHANG) == pid_) {
       end_signal_ = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+      exit_status_ = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
       pid_ = -1;
       return false;
     }
     return true;
   }
   int end_signal() const { return end_signal_; }
+  // The exit status once the process has ended normally (-1: killed by a signal, or alive).
+  int exit_status() const { return exit_status_; }
+  // Sends a signal to the process (while it runs).
+  void signal(int number) const {
+    if (pid_ > 0) ::kill(pid_, number);
+  }
+  // The folder of its database, cache and log.
+  const std::filesystem::path& directory() const { return dir_.path; }
 
   httplib::Client client(int read_timeout_s = 30) const {
     httplib::Client c("127.0.0.1", port_);
@@ -145,6 +161,7 @@ class WatchedServeProcess {
   pid_t pid_ = -1;
   int port_ = 0;
   int end_signal_ = 0;
+  int exit_status_ = -1;
 };
 
 }  // namespace clearsky::server::testing
