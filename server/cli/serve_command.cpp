@@ -42,12 +42,17 @@ std::vector<ModelFactory> served_models(const std::vector<std::string>& ids) {
 void run_server(const server::ServerConfig& config, const std::string& software_version) {
   // Before anything starts: too many connection slots for cpp-httplib's select(2).
   config.check_connection_slots();
+  // A root that is not a folder is refused here, before anything starts.
+  const api::ImportRoots import_roots(config.import_roots);
   // Signals are taken by one thread with sigwait (a handler may not call into the server).
   sigset_t signals;
   sigemptyset(&signals);
   sigaddset(&signals, SIGINT);
   sigaddset(&signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  // A file size limit (RLIMIT_FSIZE) then fails a write with EFBIG, answered 507 like a full
+  // disk, instead of killing the process.
+  std::signal(SIGXFSZ, SIG_IGN);
 
   // The database is opened (created and migrated by the storage layer) at start, so that a
   // bad --db fails here rather than at the first request that needs it.
@@ -108,9 +113,14 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   if (const int stale = api::remove_stale_uploads(data.upload_dir); stale > 0)
     spdlog::info("removed {} upload files left by an earlier process", stale);
   data.upload_max_bytes = config.max_upload_bytes;
+  data.import_roots = import_roots;
+  for (const std::filesystem::path& root : data.import_roots.roots())
+    spdlog::info("path imports may read {}", root.string());
   api::ImportPoolOptions import_options;
   import_options.workers = config.import_workers;
   import_options.max_queued = config.import_queue;
+  import_options.limits.max_entry_bytes = config.max_entry_bytes;
+  import_options.limits.max_import_bytes = config.max_import_bytes;
   import_options.log = [](std::int64_t id, bool ok, const std::string& message) {
     if (ok)
       spdlog::info("import {} succeeded {}", id, message);
@@ -266,6 +276,21 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
       ->add_option("--import-queue", config->import_queue,
                    "Imports waiting for a worker (503 beyond)")
       ->capture_default_str();
+  command
+      ->add_option("--import-root", config->import_roots,
+                   "A folder POST /v1/datasets?path= may import from (repeatable; default: none, "
+                   "path imports refused)")
+      ->allow_extra_args(false);
+  command
+      ->add_option("--max-entry-bytes", config->max_entry_bytes,
+                   "Bytes an import may read from one archive entry or folder file")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--max-import-bytes", config->max_import_bytes,
+                   "Bytes an import may read from all its entries together")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   command
       ->add_option("--evaluation-queue", config->evaluation_queue,
                    "Evaluations waiting for a worker (503 beyond)")
