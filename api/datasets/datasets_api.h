@@ -44,7 +44,8 @@ nlohmann::ordered_json delete_dataset(storage::Database& db, const std::string& 
 // What an import reads and under which rules: an archive (.7z, zip, tar: anything libarchive
 // reads) or a folder of Kider .asd.rad.txt files; confine_to the import root a server-side path
 // resolved in (import_roots.h; empty for an upload's spool file); the byte limits.
-// shown_as names it in messages (a server-side path as requested; empty: the path itself).
+// shown_as names it in messages (a server-side path as requested, "upload" for an upload's spool
+// file, so that messages do not show where the server keeps it; empty: the path itself).
 struct ImportSource {
   std::filesystem::path archive_or_folder;
   std::filesystem::path confine_to;

@@ -85,7 +85,7 @@ void ImportPool::run(storage::Database& db, Task& task) {
   try {
     report = import_dataset(db, task.what.dataset, task.what.format,
                             {task.source, task.confine_to, options_.limits,
-                             task.what.source == "path" ? task.what.path : std::string()},
+                             task.what.source == "path" ? task.what.path : std::string("upload")},
                             record);
   } catch (const ApiError& e) {
     error_code = e.code();
