@@ -72,6 +72,8 @@ struct Service {
     data.db_path = db_path;
     data.upload_dir = scratch.path / "data" / "uploads";
     data.upload_max_bytes = 1 << 20;
+    std::filesystem::create_directories(scratch.path / "data" / "server_files");
+    data.import_roots = api::ImportRoots({(scratch.path / "data" / "server_files").string()});
     data.evaluations = evaluations.get();
     data.imports = imports.get();
     data.models = models;
@@ -144,7 +146,8 @@ int nesting_depth(std::string_view body) {
   return deepest;
 }
 
-// A server-side import path stays inside the scratch folder: the fuzzer must not import the
+// A server-side import path stays inside the scratch folder, the service's one import root (which
+// the route enforces as well, api/datasets/import_roots.h): the fuzzer must not import the
 // machine's file system.
 std::string sandboxed_path(const std::filesystem::path& root, std::string path) {
   for (std::size_t at = path.find(".."); at != std::string::npos; at = path.find("..", at))

@@ -10,6 +10,7 @@
 #include "storage/importers/kider_format.h"
 #include "storage/importers/kider_importer.h"
 #include "storage/repositories/capture_repository.h"
+#include "storage/repositories/dataset_name.h"
 #include "storage/repositories/dataset_repository.h"
 
 namespace clearsky::api {
@@ -107,6 +108,12 @@ void check_import_format(const std::string& format) {
     throw invalid_parameter("format", "'" + format + "' is not an import format (known: kider)");
 }
 
+void check_dataset_name(const std::string& name) {
+  if (name.empty()) throw missing_parameter("name", "the dataset to import into");
+  if (!storage::is_valid_dataset_name(name))
+    throw invalid_parameter("name", "a dataset name is " + std::string(storage::kDatasetNameRule));
+}
+
 nlohmann::ordered_json import_report_json(const storage::ImportReport& report) {
   return {{"dataset", report.dataset},
           {"added", report.added},
@@ -117,13 +124,16 @@ nlohmann::ordered_json import_report_json(const storage::ImportReport& report) {
 
 nlohmann::ordered_json import_dataset(
     storage::Database& db, const std::string& name, const std::string& format,
-    const std::filesystem::path& archive_or_folder,
+    const ImportSource& source,
     const std::function<void(const storage::ImportProgress&)>& progress) {
   check_import_format(format);
-  if (name.empty()) throw missing_parameter("name", "the dataset to import into");
+  check_dataset_name(name);
   storage::KiderImportRequest request;
   request.dataset_name = name;
-  request.paths = {archive_or_folder};
+  request.paths = {source.archive_or_folder};
+  request.confine_to = source.confine_to;
+  request.limits = source.limits;
+  if (!source.shown_as.empty()) request.path_names = {source.shown_as};
   request.progress = progress;
   storage::ImportReport report;
   try {
@@ -131,8 +141,13 @@ nlohmann::ordered_json import_dataset(
   } catch (const storage::ImportConflict& e) {
     // A label already held with other content, or the dataset's format differs.
     throw ApiError(409, "conflict", "", e.what());
-  } catch (const storage::SqliteError&) {
+  } catch (const storage::ImportLimitExceeded& e) {
+    throw ApiError(413, "too_large", e.limit(), e.what());
+  } catch (const storage::SqliteError& e) {
+    if (e.disk_full()) throw insufficient_storage("writing the database");
     throw;
+  } catch (const storage::InvalidDatasetName& e) {
+    throw invalid_parameter("name", e.what());
   } catch (const std::invalid_argument& e) {
     // An incomplete or mixed-up capture, no files.
     throw ApiError(400, "invalid_archive", "", e.what());

@@ -41,16 +41,30 @@ nlohmann::ordered_json show_dataset(storage::Database& db, const std::string& na
 // 404 when absent; returns {"deleted": NAME}.
 nlohmann::ordered_json delete_dataset(storage::Database& db, const std::string& name);
 
-// Imports an archive (.7z, zip, tar: anything libarchive reads) or a folder of Kider
-// .asd.rad.txt files into the named dataset. format must be "kider". progress is called as
-// storage::KiderImportRequest::progress (kider_importer.h).
+// What an import reads and under which rules: an archive (.7z, zip, tar: anything libarchive
+// reads) or a folder of Kider .asd.rad.txt files; confine_to the import root a server-side path
+// resolved in (import_roots.h; empty for an upload's spool file); the byte limits.
+// shown_as names it in messages (a server-side path as requested, "upload" for an upload's spool
+// file, so that messages do not show where the server keeps it; empty: the path itself).
+struct ImportSource {
+  std::filesystem::path archive_or_folder;
+  std::filesystem::path confine_to;
+  storage::ImportByteLimits limits;
+  std::string shown_as;
+};
+// Imports the source into the named dataset. format must be "kider". progress is called as
+// storage::KiderImportRequest::progress (kider_importer.h). Refusals: 400 invalid_archive,
+// 400 invalid_parameter (name), 409 conflict, 413 too_large naming max_entry_bytes or
+// max_import_bytes, 507 insufficient_storage (SQLITE_FULL).
 nlohmann::ordered_json import_dataset(
     storage::Database& db, const std::string& name, const std::string& format,
-    const std::filesystem::path& archive_or_folder,
+    const ImportSource& source,
     const std::function<void(const storage::ImportProgress&)>& progress = {});
 // The import report as JSON (the API's and `clearsky import --json`'s).
 nlohmann::ordered_json import_report_json(const storage::ImportReport& report);
 // Checks the format before an import is queued (400 naming "format").
 void check_import_format(const std::string& format);
+// Checks a new dataset's name (storage/repositories/dataset_name.h; 400 naming "name").
+void check_dataset_name(const std::string& name);
 
 }  // namespace clearsky::api

@@ -25,10 +25,12 @@ class UploadSpool {
   UploadSpool& operator=(const UploadSpool&) = delete;
   ~UploadSpool();
 
-  // Appends a chunk; throws ApiError 413 (too_large) beyond max_bytes, std::runtime_error on
-  // a write error.
+  // Appends a chunk; throws ApiError 413 (too_large) beyond max_bytes, ApiError 507
+  // (insufficient_storage, "disk") when the disk is full or the file size limit is reached,
+  // std::runtime_error on another write error.
   void append(std::string_view chunk);
-  // Flushes and closes; returns the file's path (valid until the spool is destroyed).
+  // Flushes and closes (the errors of append); returns the file's path (valid until the spool
+  // is destroyed).
   const std::filesystem::path& finish();
 
   std::size_t size_bytes() const { return size_; }

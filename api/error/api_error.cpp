@@ -35,6 +35,11 @@ ApiError unknown_parameter(const std::string& parameter, const std::string& endp
                          "not a parameter of " + endpoint + " (or not used by this request)");
 }
 
+ApiError insufficient_storage(const std::string& what) {
+  return ApiError::about(507, "insufficient_storage", "disk",
+                         "no space left on the server's disk while " + what);
+}
+
 ApiError missing_parameter(const std::string& parameter, const std::string& message) {
   return ApiError::about(400, "missing_parameter", parameter,
                          "required" + (message.empty() ? "" : " (" + message + ")"));

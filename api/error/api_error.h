@@ -70,6 +70,10 @@ ApiError conflicting_parameters(const std::string& parameter, const std::string&
 ApiError unknown_model(const std::string& id, const std::string& available);
 // 413: a request above a configured limit (image size, batch size, wavelength count).
 ApiError too_large(const std::string& parameter, const std::string& message);
+// 507 insufficient_storage naming "disk" (RFC 4918 section 11.5): the server's disk is full
+// (ENOSPC, or EFBIG under a file size limit, while spooling an upload; SQLITE_FULL while
+// writing the database); what says what was being written.
+ApiError insufficient_storage(const std::string& what);
 // 422: the model's capabilities exclude the request; message says why.
 ApiError cannot_answer(const std::string& parameter, const std::string& model_id,
                        const std::string& reason);

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "api/datasets/import_roots.h"
 #include "api/error/api_error.h"
 #include "api/http/body_reader.h"
 #include "api/request/sky_request.h"
@@ -71,6 +72,9 @@ struct DataServices {
   std::filesystem::path db_path;
   std::filesystem::path upload_dir;
   std::size_t upload_max_bytes = std::size_t{1} << 30;
+  // Where path= imports may read (none: refused); the byte limits of imports are the
+  // ImportPool's (api/imports/import_pool.h).
+  ImportRoots import_roots;
   EvaluationPool* evaluations = nullptr;
   ImportPool* imports = nullptr;
   std::span<const ModelFactory> models;

@@ -21,6 +21,7 @@
 
 #include "api/datasets/upload_spool.h"
 #include "api/work/worker_pool.h"
+#include "storage/importers/import_byte_budget.h"
 #include "storage/repositories/import_repository.h"
 #include "storage/sqlite/database.h"
 
@@ -32,6 +33,8 @@ struct ImportPoolOptions {
   // Told how each import ended (ok false: message is the error), on the worker thread; the
   // server logs it. Also told when an outcome cannot be recorded.
   std::function<void(std::int64_t id, bool ok, const std::string& message)> log;
+  // The bytes each import may read (storage/importers/import_byte_budget.h).
+  storage::ImportByteLimits limits;
 };
 
 class ImportPool {
@@ -47,10 +50,12 @@ class ImportPool {
 
   // Records the import (queued) through db, the caller's connection, and queues it; returns
   // its id. source is the archive or folder to read: the finished spool's file for an upload
-  // (the pool then owns the spool) or a server-side path. Throws ApiError 503 (busy) when the
-  // queue is full, before anything is recorded.
+  // (the pool then owns the spool) or a server-side path, canonical and read confined to
+  // confine_to, the import root it resolved in (api/datasets/import_roots.h). Throws ApiError
+  // 503 (busy) when the queue is full, before anything is recorded.
   std::int64_t submit(storage::Database& db, const storage::NewImport& what,
-                      const std::filesystem::path& source, std::unique_ptr<UploadSpool> spool = {});
+                      const std::filesystem::path& source, std::unique_ptr<UploadSpool> spool = {},
+                      const std::filesystem::path& confine_to = {});
   // The progress of an import running in this pool; nullopt when it is not running here.
   std::optional<storage::ImportProgress> live_progress(std::int64_t id) const;
   // Blocks until nothing is queued or running.
@@ -62,6 +67,7 @@ class ImportPool {
     storage::NewImport what;
     std::filesystem::path source;
     std::unique_ptr<UploadSpool> spool;
+    std::filesystem::path confine_to;
   };
   void run(storage::Database& db, Task& task);
   // The task is over, recorded or not: its upload removed, its live progress dropped.

@@ -124,7 +124,7 @@ Json schemas() {
     "required": ["code", "message"],
     "additionalProperties": false,
     "properties": {
-      "code": {"type": "string", "description": "invalid_archive, conflict, interrupted (the server stopped), cancelled (dropped at a graceful stop), ..."},
+      "code": {"type": "string", "description": "invalid_archive, conflict, too_large (the message names max_entry_bytes or max_import_bytes), insufficient_storage (the disk is full), interrupted (the server stopped), cancelled (dropped at a graceful stop), ..."},
       "message": {"type": "string"}
     }
   },
@@ -198,11 +198,11 @@ Json operations() {
     "operationId": "importDataset",
     "tags": ["datasets", "imports"],
     "summary": "Import captures into a dataset",
-    "description": "Imports Kider et al. 2014 captures as a background job: the body is an archive (streamed to disk under --max-upload-bytes, default 1 GiB), or no body and path= names an archive or folder on the server. The route checks the parameters, format and path, then answers 202 with the import's state; follow Location. The import is one transaction: a failure leaves nothing behind.",
+    "description": "Imports Kider et al. 2014 captures as a background job: the body is an archive (streamed to disk under --max-upload-bytes, default 1 GiB), or no body and path= names an archive or folder under one of the server's import roots (--import-root; none by default). The route checks the parameters, name, format and path, then answers 202 with the import's state; follow Location. The import reads at most --max-entry-bytes (default 16 MiB) from one archive entry or file and --max-import-bytes (default 256 MiB) in all, counted as it reads: beyond, it fails with code too_large naming the limit. The import is one transaction: a failure leaves nothing behind.",
     "parameters": [
-      {"name": "name", "in": "query", "required": true, "description": "The dataset to import into (created when absent).", "schema": {"type": "string", "minLength": 1}, "example": "synthetic"},
+      {"name": "name", "in": "query", "required": true, "description": "The dataset to import into (created when absent): 1 to 128 characters of A-Z a-z 0-9 . _ -, the first a letter or a digit.", "schema": {"type": "string", "pattern": "^[A-Za-z0-9][A-Za-z0-9._-]{0,127}$"}, "example": "synthetic"},
       {"name": "format", "in": "query", "required": false, "description": "The measurement format.", "schema": {"type": "string", "enum": ["kider"], "default": "kider"}},
-      {"name": "path", "in": "query", "required": false, "description": "An archive or folder on the server, instead of a body.", "schema": {"type": "string"}}
+      {"name": "path", "in": "query", "required": false, "description": "An archive or folder on the server, instead of a body: relative to an import root (tried in turn), or absolute inside one; links may not lead out of the root.", "schema": {"type": "string"}}
     ],
     "requestBody": {
       "required": false,
@@ -218,8 +218,10 @@ Json operations() {
           "example": {"id": 1, "dataset": "synthetic", "format": "kider", "source": "path", "path": "/tmp/oa/synth", "upload_bytes": null, "status": "running", "progress": {"phase": "reading", "bytes_read": 1073533, "bytes_total": 4830932, "entries_read": 18, "entries_total": 81, "files_read": 18, "captures_added": 0, "samples_added": 0}, "timings": {"created": "2026-11-23T19:42:13.347Z", "started": "2026-11-23T19:42:13.348Z", "finished": null}, "report": null, "error": null, "location": "/v1/imports/1"}
         }}
       },
-      "400": {"description": "A missing or unknown parameter, an unknown format, no body and no path, a body and a path, or no such path on the server."},
+      "400": {"description": "A missing or unknown parameter, a dataset name outside the rule (parameter name), an unknown format, no body and no path, or a body and a path."},
+      "404": {"description": "path= names nothing that can be imported (code path_not_importable, parameter path): the same answer whether the path is missing, outside the import roots, leads out of them through a link or is a device, fifo or socket."},
       "413": {"description": "The upload is above --max-upload-bytes (code too_large, parameter body)."},
+      "507": {"description": "The server's disk is full: the upload cannot be spooled or the import cannot be recorded (code insufficient_storage, parameter disk)."},
       "503": {"description": "Too many imports are queued (--import-queue; code busy), or the server runs no import workers."}
     }
   },
@@ -332,6 +334,10 @@ Area datasets_area() {
   for (auto& [id, operation] : area.operations.items()) {
     operation["security"] = Json::array();
     if (id == "importDataset" || id == "deleteDataset") make_write(operation);
+    if (id == "importDataset")
+      operation["responses"]["403"] = error_response(
+          "Writes are disabled (no token; code writes_disabled), or path= was given and the "
+          "server has no import roots (--import-root; code path_imports_disabled).");
     add_common_errors(operation, id == "importDataset");
   }
   return area;

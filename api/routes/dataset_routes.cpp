@@ -1,6 +1,7 @@
 // /v1/datasets in the route table (route_handlers.h): list, show, delete, and the import of
 // an uploaded archive (or a server-side path) as a background job.
 #include <memory>
+#include <optional>
 
 #include "api/datasets/datasets_api.h"
 #include "api/datasets/upload_spool.h"
@@ -59,9 +60,10 @@ ApiResponse delete_dataset_route(const ApiContext& context, const ApiRequest& re
   return ordered_json_response(delete_dataset(db, request.path_parameter("name")));
 }
 
-// The body is the archive; or no body and path=SERVER_PATH (an archive or folder on the
-// server: the token holder is the administrator). Checked here (parameters, format, path,
-// size), then imported on the ImportPool: 202 with the import's state and its Location.
+// The body is the archive; or no body and path=SERVER_PATH (an archive or folder under one of
+// the operator's import roots, api/datasets/import_roots.h). Checked here (parameters, name,
+// format, path, size), then imported on the ImportPool: 202 with the import's state and its
+// Location.
 ApiResponse import_dataset_route(const ApiContext& context, const ApiRequest& request) {
   const DataServices& data = data_services(context);
   Parameters p = query_parameters(request);
@@ -70,19 +72,21 @@ ApiResponse import_dataset_route(const ApiContext& context, const ApiRequest& re
   what.format = p.text("format").value_or("kider");
   const std::optional<std::string> path = p.text("path");
   p.reject_unused();
-  if (what.dataset.empty()) throw missing_parameter("name", "the dataset to import into");
+  check_dataset_name(what.dataset);
   check_import_format(what.format);
+  // Refused before a body is spooled: a path import takes none.
+  std::optional<ResolvedImportPath> resolved;
+  if (path) resolved = data.import_roots.resolve(*path);
   std::unique_ptr<UploadSpool> spool = spool_body(request, data);
   std::filesystem::path source;
-  if (path) {
+  std::filesystem::path confine_to;
+  if (resolved) {
     if (spool->size_bytes() > 0) throw conflicting_parameters("path", "an uploaded body");
     spool.reset();
     what.source = "path";
     what.path = *path;
-    std::error_code error;
-    if (!std::filesystem::exists(what.path, error))
-      throw invalid_parameter("path", "no file or folder " + what.path + " on the server");
-    source = what.path;
+    source = resolved->path;
+    confine_to = resolved->root;
   } else {
     if (spool->size_bytes() == 0)
       throw missing_parameter("body", "the archive (.7z, zip or tar), or path=");
@@ -93,7 +97,7 @@ ApiResponse import_dataset_route(const ApiContext& context, const ApiRequest& re
   if (data.imports == nullptr)
     throw ApiError(503, "imports_unavailable", "", "this server runs no import workers");
   storage::Database db = open_database(context);
-  const std::int64_t id = data.imports->submit(db, what, source, std::move(spool));
+  const std::int64_t id = data.imports->submit(db, what, source, std::move(spool), confine_to);
   ApiResponse response = ordered_json_response(show_import(db, data.imports, id), 202);
   response.headers.emplace_back("Location", import_location(id));
   return response;

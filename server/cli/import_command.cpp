@@ -11,6 +11,7 @@
 #include "server/cli/commands.h"
 #include "server/cli/database_option.h"
 #include "storage/importers/kider_importer.h"
+#include "storage/repositories/dataset_name.h"
 
 namespace clearsky::cli {
 
@@ -50,7 +51,15 @@ void add_import_command(CLI::App& app) {
   kider->add_option("paths", options->paths, "Archives (.7z, tar, zip) or folders")
       ->required()
       ->check(CLI::ExistingPath);
-  kider->add_option("--name", options->name, "Dataset name")->capture_default_str();
+  kider->add_option("--name", options->name, "Dataset name")
+      ->capture_default_str()
+      ->check(CLI::Validator(
+          [](const std::string& name) {
+            return storage::is_valid_dataset_name(name)
+                       ? std::string()
+                       : "a dataset name is " + std::string(storage::kDatasetNameRule);
+          },
+          "NAME"));
   add_database_option(*kider, options->db);
   kider->add_flag("--json", options->json, "Print the import report as JSON (no progress lines)");
   kider->callback([options] {

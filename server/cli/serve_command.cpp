@@ -50,8 +50,8 @@ std::vector<ModelFactory> served_models(const std::vector<std::string>& ids) {
 // imports a crash interrupted marked failed; the evaluation and import pools; the scheduler.
 class WriterServices {
  public:
-  WriterServices(const server::ServerConfig& config, std::span<const ModelFactory> models,
-                 const std::string& software_version)
+  WriterServices(const server::ServerConfig& config, const api::ImportRoots& import_roots,
+                 std::span<const ModelFactory> models, const std::string& software_version)
       : database_(open_and_recover(config.db_path)),
         db_path_(config.db_path),
         evaluations_(open_database(), models,
@@ -64,6 +64,9 @@ class WriterServices {
     if (const int stale = api::remove_stale_uploads(data_.upload_dir); stale > 0)
       spdlog::info("removed {} upload files left by an earlier process", stale);
     data_.upload_max_bytes = config.max_upload_bytes;
+    data_.import_roots = import_roots;
+    for (const std::filesystem::path& root : data_.import_roots.roots())
+      spdlog::info("path imports may read {}", root.string());
     data_.imports = &imports_;
     data_.evaluations = &evaluations_;
     data_.models = models;
@@ -102,6 +105,8 @@ class WriterServices {
     api::ImportPoolOptions options;
     options.workers = config.import_workers;
     options.max_queued = config.import_queue;
+    options.limits.max_entry_bytes = config.max_entry_bytes;
+    options.limits.max_import_bytes = config.max_import_bytes;
     options.log = [](std::int64_t id, bool ok, const std::string& message) {
       if (ok)
         spdlog::info("import {} succeeded {}", id, message);
@@ -141,6 +146,8 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   // Before anything starts: too many connection slots for cpp-httplib's select(2).
   config.check_connection_slots();
   const bool writer = config.role == server::ServerRole::writer;
+  // A root that is not a folder is refused here, before anything starts.
+  const api::ImportRoots import_roots(config.import_roots);
   // Signals are taken by one thread with sigwait (a handler may not call into the server).
   sigset_t signals;
   sigemptyset(&signals);
@@ -149,6 +156,9 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
   // Before any other thread: each thread gets a malloc arena (server/memory/heap_bounds.h).
   spdlog::info("memory: {}", server::bound_heap_arenas());
+  // A file size limit (RLIMIT_FSIZE) then fails a write with EFBIG, answered 507 like a full
+  // disk, instead of killing the process.
+  std::signal(SIGXFSZ, SIG_IGN);
 
   const server::WriteAuthorizer auth = write_authorizer(config);
   server::FileTableCache cache(config.cache_dir);
@@ -165,7 +175,7 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   const std::vector<ModelFactory> registered = served_models(config.models);
   // The writer's database is opened before the tables start, so that a bad --db fails at once.
   std::optional<WriterServices> services;
-  if (writer) services.emplace(config, registered, software_version);
+  if (writer) services.emplace(config, import_roots, registered, software_version);
   server::TableStore tables(registered, options);
   tables.set_build_observer([&metrics](const std::string& id, double seconds, bool from_cache) {
     metrics.observe_build(id, seconds, from_cache);
@@ -369,6 +379,21 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
       ->add_option("--import-queue", config->import_queue,
                    "Imports waiting for a worker (503 beyond)")
       ->capture_default_str();
+  command
+      ->add_option("--import-root", config->import_roots,
+                   "A folder POST /v1/datasets?path= may import from (repeatable; default: none, "
+                   "path imports refused)")
+      ->allow_extra_args(false);
+  command
+      ->add_option("--max-entry-bytes", config->max_entry_bytes,
+                   "Bytes an import may read from one archive entry or folder file")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--max-import-bytes", config->max_import_bytes,
+                   "Bytes an import may read from all its entries together")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   command
       ->add_option("--evaluation-queue", config->evaluation_queue,
                    "Evaluations waiting for a worker (503 beyond)")

@@ -36,6 +36,9 @@
 // | max_upload_bytes     | byte  | 1 GiB           | dataset upload limit (413 beyond); other routes: payload_max_bytes                    |
 // | import_workers       |       | 1               | background import threads (never HTTP workers)                                        |
 // | import_queue         |       | 8               | imports waiting for a worker (503 beyond)                                             |
+// | import_roots         | path  | (none)          | folders path= imports may read (repeatable --import-root); none: path imports refused |
+// | max_entry_bytes      | byte  | 16 MiB          | bytes read from one archive entry or folder file of an import (import fails, 413)     |
+// | max_import_bytes     | byte  | 256 MiB         | bytes read from all the entries of one import (import fails, 413)                     |
 // | evaluation_workers   |       | 1               | background evaluation threads (never HTTP workers)                                    |
 // | evaluation_queue     |       | 16              | evaluations waiting for a worker (503 beyond)                                         |
 // | cors_origins         |       | (none)          | origins browsers may call the API from ("*": any; docs/http-api.md)                   |
@@ -46,6 +49,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -91,6 +95,9 @@ struct ServerConfig {
   std::size_t evaluation_queue = 16;
   unsigned import_workers = 1;
   std::size_t import_queue = 8;
+  std::vector<std::string> import_roots;  // empty: path imports refused
+  std::int64_t max_entry_bytes = std::int64_t{16} << 20;
+  std::int64_t max_import_bytes = std::int64_t{256} << 20;
   std::vector<std::string> cors_origins;  // empty: no cross-origin access
 
   // The most workers threads resolves to.

@@ -15,6 +15,7 @@
 #include "api/routes/route_match.h"
 #include "server/http/connection_server.h"
 #include "server/http/request_body.h"
+#include "storage/sqlite/database.h"
 
 namespace clearsky::server {
 
@@ -149,6 +150,15 @@ api::ApiError library_refusal(const httplib::Request& req, int status, std::size
   }
   return api::ApiError::about(status, "http_error", "request",
                               "HTTP error " + std::to_string(status));
+}
+
+// What the client is told of an exception that is not an API error: a database write that found
+// the disk full is 507 naming the disk, anything else 500 (the details go to the log only).
+api::ApiError unexpected_error(const std::exception& e) {
+  const auto* sqlite = dynamic_cast<const storage::SqliteError*>(&e);
+  if (sqlite != nullptr && sqlite->disk_full())
+    return api::insufficient_storage("writing the database");
+  return api::ApiError(500, "internal_error", "", "internal error");
 }
 
 // The answer when composing an error answer failed itself (nothing here depends on the
@@ -411,7 +421,7 @@ void HttpServer::install() {
   });
 
   // The one exception handler: typed API errors keep their status; anything else is a 500
-  // whose details go to the log, not to the client. It never throws: an exception leaving it
+  // (507 for a full disk, unexpected_error) whose details go to the log, not to the client. It never throws: an exception leaving it
   // would leave the request unanswered and its connection open (cpp-httplib 0.11.4).
   s.set_exception_handler(
       [this](const httplib::Request& req, httplib::Response& res, std::exception_ptr error) {
@@ -422,8 +432,7 @@ void HttpServer::install() {
             send(req, res, api::error_response(e));
           } catch (const std::exception& e) {
             spdlog::error("{} {}: {}", req.method, req.path, e.what());
-            send(req, res,
-                 api::error_response(api::ApiError(500, "internal_error", "", "internal error")));
+            send(req, res, api::error_response(unexpected_error(e)));
           } catch (...) {
             spdlog::error("{} {}: unknown exception", req.method, req.path);
             send(req, res,

@@ -11,6 +11,7 @@
 #include "storage/importers/import_conflict.h"
 #include "storage/importers/kider_reader.h"
 #include "storage/repositories/capture_repository.h"
+#include "storage/repositories/dataset_name.h"
 #include "storage/repositories/dataset_repository.h"
 
 namespace clearsky::storage {
@@ -88,6 +89,11 @@ ImportReport import_kider(Database& db, const KiderImportRequest& request) {
   const auto start = std::chrono::steady_clock::now();
   if (request.paths.empty() && request.archives_in_memory.empty())
     throw std::invalid_argument("import: no archive or folder given");
+  if (!is_valid_dataset_name(request.dataset_name))
+    throw InvalidDatasetName("dataset name: " + std::string(kDatasetNameRule));
+  if (!request.path_names.empty() && request.path_names.size() != request.paths.size())
+    throw std::invalid_argument("import: one name per path");
+  ImportByteBudget budget(request.limits);
 
   // Read and decode everything first: a bad file is reported before any write.
   struct Decoded {
@@ -99,16 +105,20 @@ ImportReport import_kider(Database& db, const KiderImportRequest& request) {
   ProgressSum reading(decoded.size(), request.progress);
   parallel_for(decoded.size(), [&](std::size_t i) {
     if (i < path_count) {
-      decoded[i].source = request.paths[i].string();
+      KiderReadRules rules;
+      rules.budget = &budget;
+      rules.confine_to = request.confine_to;
+      if (!request.path_names.empty()) rules.shown_as = request.path_names[i];
+      decoded[i].source = request.path_names.empty() ? request.paths[i].string() : rules.shown_as;
       decoded[i].captures =
-          decode_kider_files(read_kider_raw_files(request.paths[i], reading.observer(i)),
+          decode_kider_files(read_kider_raw_files(request.paths[i], reading.observer(i), rules),
                              decoded[i].source, request.options);
     } else {
       const auto& upload = request.archives_in_memory[i - path_count];
       decoded[i].source = upload.name;
       decoded[i].captures = decode_kider_files(
-          read_kider_archive_bytes(upload.bytes, upload.name, reading.observer(i)), upload.name,
-          request.options);
+          read_kider_archive_bytes(upload.bytes, upload.name, reading.observer(i), &budget),
+          upload.name, request.options);
     }
   });
   std::size_t capture_count = 0;

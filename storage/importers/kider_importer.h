@@ -12,9 +12,11 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "storage/importers/import_byte_budget.h"
 #include "storage/importers/kider_format.h"
 #include "storage/sqlite/database.h"
 
@@ -34,8 +36,16 @@ struct ImportProgress {
 };
 
 struct KiderImportRequest {
-  std::string dataset_name = "kider2014";
+  std::string dataset_name = "kider2014";    // storage/repositories/dataset_name.h
   std::vector<std::filesystem::path> paths;  // .7z archives or folders
+  // The bytes the whole import may read, counted as it reads (import_byte_budget.h).
+  ImportByteLimits limits;
+  // Non-empty for server-side paths: the canonical import root the paths resolved in; the
+  // paths must then be canonical, and nothing outside the root is read (kider_reader.h).
+  std::filesystem::path confine_to;
+  // The paths' names in messages and reports, when not the paths themselves (a server-side
+  // import names the path as requested); empty, or one per path.
+  std::vector<std::string> path_names;
   // Archives held in memory (uploads): a name for messages and the archive's bytes.
   struct ArchiveBytes {
     std::string name;
@@ -60,7 +70,13 @@ struct ImportReport {
 };
 
 // Throws std::runtime_error naming the source when nothing holds a Kider capture (before any
-// write, so not even the dataset is created).
+// write, so not even the dataset is created), InvalidDatasetName for a name outside the rule,
+// ImportLimitExceeded past a byte limit.
+class InvalidDatasetName : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
 ImportReport import_kider(Database& db, const KiderImportRequest& request);
 
 // 16 hex digits identifying a capture's content: label, time, site and every sample's index,

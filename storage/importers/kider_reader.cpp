@@ -3,14 +3,21 @@
 
 #include <archive.h>
 #include <archive_entry.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
+#include <cerrno>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+
+#include "storage/importers/path_containment.h"
 
 namespace clearsky::storage {
 namespace {
@@ -36,6 +43,48 @@ bool is_radiance_file(const std::string& path) {
 
 using ArchivePointer = std::unique_ptr<archive, ArchiveDeleter>;
 
+// An open file descriptor (-1: none), closed when it goes.
+class FileDescriptor {
+ public:
+  explicit FileDescriptor(int fd = -1) : fd_(fd) {}
+  FileDescriptor(FileDescriptor&& other) noexcept : fd_(std::exchange(other.fd_, -1)) {}
+  FileDescriptor& operator=(FileDescriptor&&) = delete;
+  FileDescriptor(const FileDescriptor&) = delete;
+  FileDescriptor& operator=(const FileDescriptor&) = delete;
+  ~FileDescriptor() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  int get() const { return fd_; }
+  bool is_open() const { return fd_ >= 0; }
+
+ private:
+  int fd_;
+};
+
+// Opens path for reading if it is a regular file; a closed descriptor for a device, fifo or
+// socket (opened without blocking, so that a fifo with no writer cannot hold the reader) or,
+// when no_follow, a symbolic link. Throws when the file cannot be opened at all.
+// name is the file's name in messages.
+FileDescriptor open_regular_file(const std::filesystem::path& path, bool no_follow,
+                                 const std::string& name) {
+  const int flags = O_RDONLY | O_NONBLOCK | O_CLOEXEC | (no_follow ? O_NOFOLLOW : 0);
+  FileDescriptor fd(::open(path.c_str(), flags));
+  if (!fd.is_open()) {
+    if (no_follow && errno == ELOOP) return FileDescriptor();
+    throw std::runtime_error(name + ": cannot open: " + std::strerror(errno));
+  }
+  struct stat status {};
+  if (::fstat(fd.get(), &status) != 0)
+    throw std::runtime_error(name + ": cannot stat: " + std::strerror(errno));
+  if (!S_ISREG(status.st_mode)) return FileDescriptor();
+  return fd;
+}
+
+// The name of the path read in messages (KiderReadRules::shown_as).
+std::string shown(const KiderReadRules& rules, const std::filesystem::path& path) {
+  return rules.shown_as.empty() ? path.string() : rules.shown_as;
+}
+
 ArchivePointer new_reader() {
   ArchivePointer reader(archive_read_new());
   if (!reader) throw std::runtime_error("libarchive: out of memory");
@@ -59,6 +108,7 @@ bool is_nested_archive(const std::string& path) {
 
 // Progress of one archive read; bytes are counted on the outermost archive.
 struct ReadState {
+  ImportByteBudget* budget = nullptr;
   KiderReadProgress progress;
   const KiderReadObserver* observer = nullptr;
   archive* outer = nullptr;
@@ -77,11 +127,12 @@ void finish_reading(ReadState& state) {
   state.report();
 }
 
+// The entry's bytes, counted against the budget as they are read: the size the entry declares
+// is only compared at the end (a truncated entry), never used to reserve memory.
 std::string read_entry_bytes(archive* reader, archive_entry* entry, const std::string& name,
-                             const std::string& inner) {
+                             const std::string& inner, ImportByteBudget& budget) {
   std::string bytes;
-  if (archive_entry_size_is_set(entry))
-    bytes.reserve(static_cast<std::size_t>(archive_entry_size(entry)));
+  std::int64_t entry_bytes = 0;
   char buffer[1 << 16];
   for (;;) {
     const la_ssize_t n = archive_read_data(reader, buffer, sizeof buffer);
@@ -89,6 +140,7 @@ std::string read_entry_bytes(archive* reader, archive_entry* entry, const std::s
     if (n < 0)
       throw std::runtime_error(name + ": " + inner +
                                ": corrupt or truncated archive: " + error_text(reader));
+    budget.charge(entry_bytes, static_cast<std::size_t>(n), name + ": " + inner);
     bytes.append(buffer, static_cast<std::size_t>(n));
   }
   if (archive_entry_size_is_set(entry) &&
@@ -112,10 +164,11 @@ void read_entries(archive* reader, const std::string& name, const std::string& p
     const char* entry_path = archive_entry_pathname(entry);
     const std::string inner = entry_path ? entry_path : "";
     if (is_radiance_file(inner)) {
-      files.push_back({prefix + inner, read_entry_bytes(reader, entry, name, inner)});
+      files.push_back(
+          {prefix + inner, read_entry_bytes(reader, entry, name, inner, *state.budget)});
       ++state.progress.files_read;
     } else if (nested && is_nested_archive(inner)) {
-      const std::string bytes = read_entry_bytes(reader, entry, name, inner);
+      const std::string bytes = read_entry_bytes(reader, entry, name, inner, *state.budget);
       ArchivePointer inner_reader = new_reader();
       const std::string inner_name = name + ":" + inner;
       if (archive_read_open_memory(inner_reader.get(), bytes.data(), bytes.size()) != ARCHIVE_OK)
@@ -127,47 +180,99 @@ void read_entries(archive* reader, const std::string& name, const std::string& p
   }
 }
 
+// Confined reads open the canonical path without following a link (a link swapped in after the
+// path was resolved is refused).
 std::vector<KiderRawFile> read_archive_files(const std::filesystem::path& path,
-                                             const KiderReadObserver& observer) {
+                                             const KiderReadObserver& observer,
+                                             const KiderReadRules& rules,
+                                             ImportByteBudget& budget) {
+  const std::string name = shown(rules, path);
+  const bool confined = !rules.confine_to.empty();
+  if (confined && !lies_within(path, rules.confine_to))
+    throw std::runtime_error(name + ": not inside the import root");
+  const FileDescriptor fd = open_regular_file(path, confined, name);
+  if (!fd.is_open()) throw std::runtime_error(name + ": not a regular file or folder");
   ArchivePointer reader = new_reader();
-  const std::string name = path.string();
-  if (archive_read_open_filename(reader.get(), name.c_str(), 1 << 16) != ARCHIVE_OK)
+  if (archive_read_open_fd(reader.get(), fd.get(), 1 << 16) != ARCHIVE_OK)
     throw std::runtime_error(name + ": cannot open archive: " + error_text(reader.get()));
   ReadState state;
+  state.budget = &budget;
   state.observer = &observer;
   state.outer = reader.get();
-  std::error_code error;
-  const auto size = std::filesystem::file_size(path, error);
-  if (!error) state.progress.bytes_total = static_cast<std::int64_t>(size);
+  struct stat status {};
+  if (::fstat(fd.get(), &status) == 0) state.progress.bytes_total = status.st_size;
   std::vector<KiderRawFile> files;
   read_entries(reader.get(), name, "", true, state, files);
   finish_reading(state);
   return files;
 }
 
+// The bytes of an open regular file, counted against the budget as they are read.
+std::string read_file_bytes(const FileDescriptor& fd, const std::string& name,
+                            ImportByteBudget& budget) {
+  std::string bytes;
+  std::int64_t entry_bytes = 0;
+  char buffer[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(fd.get(), buffer, sizeof buffer);
+    if (n == 0) break;
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      throw std::runtime_error(name + ": read error: " + std::strerror(errno));
+    }
+    budget.charge(entry_bytes, static_cast<std::size_t>(n), name);
+    bytes.append(buffer, static_cast<std::size_t>(n));
+  }
+  return bytes;
+}
+
+// A radiance file of a folder: where it was listed, and what is opened (its canonical target
+// when a confined read follows a link that stays inside the folder).
+struct FolderFile {
+  std::filesystem::path listed;
+  std::filesystem::path target;
+};
+
+// Confined reads follow a link only when its canonical target lies inside rules.confine_to
+// (the recursive listing never follows links to folders), and open the target without
+// following a link.
 std::vector<KiderRawFile> read_folder_files(const std::filesystem::path& folder,
-                                            const KiderReadObserver& observer) {
+                                            const KiderReadObserver& observer,
+                                            const KiderReadRules& rules, ImportByteBudget& budget) {
+  const bool confined = !rules.confine_to.empty();
+  if (confined && !lies_within(folder, rules.confine_to))
+    throw std::runtime_error(shown(rules, folder) + ": not inside the import root");
   // Listed first so that progress has totals.
-  std::vector<std::filesystem::path> radiance;
+  std::vector<FolderFile> radiance;
   ReadState state;
+  state.budget = &budget;
   state.observer = &observer;
   state.progress.bytes_total = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
-    if (!entry.is_regular_file()) continue;
     if (!is_radiance_file(entry.path().filename().string())) continue;
-    radiance.push_back(entry.path());
-    state.progress.bytes_total += static_cast<std::int64_t>(entry.file_size());
+    FolderFile file{entry.path(), entry.path()};
+    if (confined && entry.is_symlink()) {
+      std::error_code error;
+      file.target = std::filesystem::canonical(entry.path(), error);
+      if (error || !lies_within(file.target, rules.confine_to)) continue;
+    }
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(file.target, error)) continue;
+    const auto size = std::filesystem::file_size(file.target, error);
+    if (error) continue;
+    state.progress.bytes_total += static_cast<std::int64_t>(size);
+    radiance.push_back(std::move(file));
   }
   state.progress.entries_total = static_cast<std::int64_t>(radiance.size());
   std::vector<KiderRawFile> files;
-  for (const std::filesystem::path& path : radiance) {
-    const std::string relative = std::filesystem::relative(path, folder).generic_string();
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error(path.string() + ": cannot open");
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    if (in.bad()) throw std::runtime_error(path.string() + ": read error");
-    files.push_back({relative, std::move(bytes).str()});
+  for (const FolderFile& file : radiance) {
+    // Lexically: std::filesystem::relative would resolve a link to its target's path.
+    const std::string relative = file.listed.lexically_relative(folder).generic_string();
+    const std::string name = shown(rules, folder) + "/" + relative;
+    const FileDescriptor fd = open_regular_file(file.target, confined, name);
+    // Replaced by a special file or a link since it was listed.
+    if (!fd.is_open()) throw std::runtime_error(name + ": not a regular file");
+    files.push_back({relative, read_file_bytes(fd, name, budget)});
     ++state.progress.entries_read;
     ++state.progress.files_read;
     state.progress.bytes_read += static_cast<std::int64_t>(files.back().bytes.size());
@@ -179,11 +284,14 @@ std::vector<KiderRawFile> read_folder_files(const std::filesystem::path& folder,
 }  // namespace
 
 std::vector<KiderRawFile> read_kider_archive_bytes(std::string_view bytes, const std::string& name,
-                                                   const KiderReadObserver& observer) {
+                                                   const KiderReadObserver& observer,
+                                                   ImportByteBudget* budget) {
   ArchivePointer reader = new_reader();
   if (archive_read_open_memory(reader.get(), bytes.data(), bytes.size()) != ARCHIVE_OK)
     throw std::runtime_error(name + ": cannot open archive: " + error_text(reader.get()));
+  ImportByteBudget own_budget;
   ReadState state;
+  state.budget = budget != nullptr ? budget : &own_budget;
   state.observer = &observer;
   state.outer = reader.get();
   state.progress.bytes_total = static_cast<std::int64_t>(bytes.size());
@@ -197,16 +305,23 @@ std::vector<KiderRawFile> read_kider_archive_bytes(std::string_view bytes, const
 }
 
 std::vector<KiderRawFile> read_kider_raw_files(const std::filesystem::path& path,
-                                               const KiderReadObserver& observer) {
-  if (!std::filesystem::exists(path))
-    throw std::runtime_error(path.string() + ": no such file or folder");
-  std::vector<KiderRawFile> files = std::filesystem::is_directory(path)
-                                        ? read_folder_files(path, observer)
-                                        : read_archive_files(path, observer);
+                                               const KiderReadObserver& observer,
+                                               const KiderReadRules& rules) {
+  ImportByteBudget own_budget;
+  ImportByteBudget& budget = rules.budget != nullptr ? *rules.budget : own_budget;
+  std::error_code error;
+  const std::filesystem::file_status status = rules.confine_to.empty()
+                                                  ? std::filesystem::status(path, error)
+                                                  : std::filesystem::symlink_status(path, error);
+  if (!std::filesystem::exists(status))
+    throw std::runtime_error(shown(rules, path) + ": no such file or folder");
+  std::vector<KiderRawFile> files = std::filesystem::is_directory(status)
+                                        ? read_folder_files(path, observer, rules, budget)
+                                        : read_archive_files(path, observer, rules, budget);
   std::sort(files.begin(), files.end(),
             [](const KiderRawFile& a, const KiderRawFile& b) { return a.path < b.path; });
   if (files.empty())
-    throw std::runtime_error(path.string() + ": no Kider .asd.rad.txt files found");
+    throw std::runtime_error(shown(rules, path) + ": no Kider .asd.rad.txt files found");
   return files;
 }
 
@@ -229,12 +344,15 @@ std::vector<MeasuredCapture> decode_kider_files(const std::vector<KiderRawFile>&
 
 std::vector<MeasuredCapture> read_kider_archive(const std::filesystem::path& archive_path,
                                                 const KiderImportOptions& options) {
-  return decode_kider_files(read_archive_files(archive_path, {}), archive_path.string(), options);
+  ImportByteBudget budget;
+  return decode_kider_files(read_archive_files(archive_path, {}, {}, budget), archive_path.string(),
+                            options);
 }
 
 std::vector<MeasuredCapture> read_kider_folder(const std::filesystem::path& folder,
                                                const KiderImportOptions& options) {
-  return decode_kider_files(read_folder_files(folder, {}), folder.string(), options);
+  ImportByteBudget budget;
+  return decode_kider_files(read_folder_files(folder, {}, {}, budget), folder.string(), options);
 }
 
 std::vector<MeasuredCapture> read_kider_path(const std::filesystem::path& path,

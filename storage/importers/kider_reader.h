@@ -5,6 +5,11 @@
 // also hold raw .asd.txt) are ignored. Any malformed file, truncated archive or incomplete
 // capture is an error naming it; nothing is returned partially. Reading can report its
 // progress (an import's job state, the CLI's progress lines).
+// Every byte kept is counted against a byte budget as it is read (import_byte_budget.h): the
+// sizes an archive declares are never trusted nor reserved. Only regular files are read: a
+// device, fifo or socket named like a radiance file is skipped, and an archive path that is
+// not a regular file is an error. Server-side imports are confined to a folder (the import root
+// they resolved in): links that lead out of it are not followed (docs/data-api.md).
 #pragma once
 
 #include <cstdint>
@@ -14,6 +19,7 @@
 #include <string_view>
 #include <vector>
 
+#include "storage/importers/import_byte_budget.h"
 #include "storage/importers/kider_format.h"
 
 namespace clearsky::storage {
@@ -42,6 +48,18 @@ struct KiderReadProgress {
 // Called on the reading thread after each entry (and once at the end).
 using KiderReadObserver = std::function<void(const KiderReadProgress&)>;
 
+// How an import reads: its byte budget (shared by the sources of one import; null: a budget of
+// the read's own with the default limits) and, for server-side imports, the canonical folder
+// the files must lie in (empty: anywhere; the path given must then be canonical, as
+// api/datasets/import_roots.h resolves it, and is opened without following a link).
+// shown_as names the path in messages (empty: the path itself), so that a server-side import's
+// errors name the path as requested rather than where it resolved.
+struct KiderReadRules {
+  ImportByteBudget* budget = nullptr;
+  std::filesystem::path confine_to;
+  std::string shown_as;
+};
+
 // The raw bytes of every .asd.rad.txt file of an archive or folder, by path inside it (a
 // nested archive's files as "inner.7z/path"), sorted by path (what an importer hashes to
 // recognise content it already holds).
@@ -50,12 +68,14 @@ struct KiderRawFile {
   std::string bytes;
 };
 std::vector<KiderRawFile> read_kider_raw_files(const std::filesystem::path& path,
-                                               const KiderReadObserver& observer = {});
+                                               const KiderReadObserver& observer = {},
+                                               const KiderReadRules& rules = {});
 
 // The .asd.rad.txt files of an archive held in memory (e.g. an HTTP upload); name is used
 // in messages.
 std::vector<KiderRawFile> read_kider_archive_bytes(std::string_view bytes, const std::string& name,
-                                                   const KiderReadObserver& observer = {});
+                                                   const KiderReadObserver& observer = {},
+                                                   ImportByteBudget* budget = nullptr);
 
 // Decodes raw files (as read_kider_raw_files returns them) into captures; source_prefix names
 // their container in messages.

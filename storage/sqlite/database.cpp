@@ -17,6 +17,8 @@ namespace {
 
 }  // namespace
 
+bool SqliteError::disk_full() const { return (code_ & 0xff) == SQLITE_FULL; }
+
 SqliteError::SqliteError(int code, const std::string& message)
     : std::runtime_error(message), code_(code) {}
 

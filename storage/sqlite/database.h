@@ -25,6 +25,8 @@ class SqliteError : public std::runtime_error {
  public:
   SqliteError(int code, const std::string& message);
   int code() const { return code_; }
+  // SQLITE_FULL: the disk (or the database's page limit) is full.
+  bool disk_full() const;
 
  private:
   int code_;

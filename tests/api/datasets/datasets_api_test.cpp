@@ -58,7 +58,7 @@ nlohmann::ordered_json upload(storage::Database& db, const std::filesystem::path
   UploadSpool spool(folder, limit, ".7z");
   for (std::size_t i = 0; i < bytes.size(); i += 65536)
     spool.append(std::string_view(bytes).substr(i, 65536));
-  return import_dataset(db, name, "kider", spool.finish());
+  return import_dataset(db, name, "kider", {spool.finish(), {}, {}, {}});
 }
 
 TEST(DatasetsApi, ListAndShowSyntheticCapture) {
@@ -151,7 +151,7 @@ TEST(DatasetsApi, TruncatedOrForeignUploadIs400AndLeavesNothing) {
   EXPECT_EQ(status_of([&] { upload(db, dir.path / "u", "this is not an archive", 8u << 20); }),
             400);
   EXPECT_TRUE(list_datasets(db).items.empty());
-  EXPECT_EQ(status_of([&] { import_dataset(db, "x", "csv", dir.path); }), 400);
+  EXPECT_EQ(status_of([&] { import_dataset(db, "x", "csv", {dir.path, {}, {}, {}}); }), 400);
 }
 
 TEST(DatasetsApi, SameLabelWithOtherContentIs409) {

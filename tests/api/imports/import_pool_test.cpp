@@ -130,7 +130,7 @@ TEST(ImportPool, FullQueueIs503) {
         released.wait();
         return storage::Database::open(f.db_path);
       },
-      ImportPoolOptions{1, 1, {}});
+      ImportPoolOptions{1, 1, {}, {}});
   storage::NewImport missing = upload_of("x", 0);
   missing.source = "path";
   missing.path = (f.dir.path / "absent.7z").string();

@@ -121,6 +121,7 @@ TEST_F(DataRoutes, UploadShowEvaluateAndDelete) {
 
 TEST_F(DataRoutes, ImportFromAServerSidePath) {
   CLEARSKY_REQUIRE_SHARED_DATA(kArchive);
+  import_roots = {(clearsky::testing::shared_data_dir() / "kider2014").string()};
   start(std::string("t0ken"));
   const std::string archive = (clearsky::testing::shared_data_dir() / kArchive).string();
   const httplib::Params params{{"name", "local"}, {"path", archive}};
@@ -133,14 +134,14 @@ TEST_F(DataRoutes, ImportFromAServerSidePath) {
   const nlohmann::json done = finished_import(r);
   ASSERT_EQ(done["status"], "succeeded") << done.dump();
   EXPECT_EQ(done["report"]["added"].size(), 1u);
-  // Both a path and a body: refused; a missing path: 400 and nothing created.
+  // Both a path and a body: refused; a missing path: 404 and nothing created.
   EXPECT_EQ(c.Post(("/v1/datasets?" + httplib::detail::params_to_query_str(params)).c_str(), "x",
                    "application/octet-stream")
                 ->status,
             400);
   EXPECT_EQ(c.Post("/v1/datasets?name=gone&path=/nonexistent/x.7z", "", "application/octet-stream")
                 ->status,
-            400);
+            404);
   EXPECT_EQ(body(c.Get("/v1/datasets")).size(), 1u);
 }
 

@@ -46,6 +46,7 @@ class DataServerFixture : public ::testing::Test {
     services.db_path = db_path;
     services.upload_dir = dir.path / "uploads";
     services.upload_max_bytes = max_upload_bytes;
+    services.import_roots = api::ImportRoots(import_roots);
     services.evaluations = pool.get();
     services.imports = imports.get();
     services.models = registered_models();
@@ -85,6 +86,8 @@ class DataServerFixture : public ::testing::Test {
   }
 
   clearsky::testing::TempDir dir;
+  // Where path= imports may read (set before start(); none: refused).
+  std::vector<std::string> import_roots;
   std::filesystem::path db_path;
   Metrics metrics;
   std::unique_ptr<TableStore> tables;

@@ -1,8 +1,9 @@
 // `clearsky serve` (the built executable) as a child process on a free loopback port, for tests
 // that need the real server with its command-line defaults: one analytic model (Preetham), no
-// 3-wavelength tables, a temporary database and cache; extra options are appended and `models`
-// replaces Preetham. The port is read from the start-up line of its log; the process gets
-// SIGTERM when the object goes (kill_now() for SIGKILL).
+// 3-wavelength tables, a temporary database and cache (the database elsewhere when db is given,
+// e.g. on a small file system); extra options are appended and `models` replaces Preetham. The
+// port is read from the start-up line of its log; the process gets SIGTERM when the object goes
+// (kill_now() for SIGKILL).
 #pragma once
 
 #include <fcntl.h>
@@ -23,7 +24,7 @@ namespace clearsky::server::testing {
 class ServeProcess {
  public:
   ServeProcess(const std::filesystem::path& dir, const std::vector<std::string>& extra,
-               const std::string& models = "preetham") {
+               const std::string& models = "preetham", const std::filesystem::path& db = {}) {
     log_ = dir / "serve.log";
     const std::string binary = std::string(CLEARSKY_BINARY_DIR) + "/clearsky";
     std::vector<std::string> args = {"clearsky",
@@ -33,7 +34,7 @@ class ServeProcess {
                                      "--port",
                                      "0",
                                      "--db",
-                                     (dir / "sky.db").string(),
+                                     (db.empty() ? dir / "sky.db" : db).string(),
                                      "--cache-dir",
                                      (dir / "cache").string(),
                                      "--prebuild-three",
@@ -88,6 +89,7 @@ class ServeProcess {
 
   // 0 when the server did not start within 60 s.
   int port() const { return port_; }
+  pid_t pid() const { return pid_; }
   std::string log() const {
     std::ifstream in(log_);
     std::ostringstream out;

@@ -52,7 +52,7 @@ class Server:
              "--models", "preetham,hosek",
              "--db", os.path.join(workdir, "sky.db"),
              "--cache-dir", os.path.join(workdir, "cache"),
-             "--token", TOKEN, "--threads", "8",
+             "--token", TOKEN, "--threads", "8", "--import-root", workdir,
              "--payload-max-bytes", str(PAYLOAD_MAX_BYTES)],
             stdout=self.log, stderr=subprocess.STDOUT)
         self.port = None
@@ -337,7 +337,9 @@ def run(checker, workdir):
     folder = synthetic_kider.write_capture(os.path.join(workdir, "capture"))
     name = c.example("importDataset", "name")
     c.call("importDataset", 401, query=f"name={name}&path={folder}")
-    c.call("importDataset", 400, query=f"name={name}&path={folder}/none", token=TOKEN)
+    c.call("importDataset", 404, query=f"name={name}&path={folder}/none", token=TOKEN)
+    c.call("importDataset", 404, query=f"name={name}&path=/etc/passwd", token=TOKEN)
+    c.call("importDataset", 400, query=f"name=../x&path={folder}", token=TOKEN)
     c.call("importDataset", 202, query=f"name={name}&path={folder}", token=TOKEN)
     import_id = c.example("getImport", "id")
     wait_for(c, "getImport", {"id": import_id},

@@ -9,6 +9,8 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "models/core/numeric.h"
 #include "storage/repositories/capture_repository.h"
@@ -201,6 +203,17 @@ TEST(KiderImporter, ProcessKilledDuringImportLeavesTheDatabaseAsBefore) {
   EXPECT_EQ(snapshot(db), before);
   // And the database still takes the import.
   EXPECT_EQ(import_kider(db, request({archive("09.45")})).added.size(), 1u);
+}
+
+TEST(KiderImporter, ANameOutsideTheRuleIsRefusedBeforeAnythingIsRead) {
+  clearsky::testing::TempDir dir;
+  Database db = open_database(dir.path / "sky.db");
+  for (const std::string& name : std::vector<std::string>{"a/b", "../x", std::string(5000, 'a')}) {
+    KiderImportRequest request;
+    request.dataset_name = name;
+    request.paths = {dir.path / "nothing-here"};
+    EXPECT_THROW(import_kider(db, request), InvalidDatasetName) << name.substr(0, 10);
+  }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "storage/importers/kider_reader.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
 #include <fstream>
@@ -92,6 +93,59 @@ TEST(KiderReader, FolderWithAMalformedFileIsRefusedNamingFileAndLine) {
 
 TEST(KiderReader, MissingPathIsAnError) {
   EXPECT_THROW(read_kider_path("/nonexistent/kider"), std::runtime_error);
+}
+
+// A folder of one regular radiance file, a link named like one leading out of the folder, and
+// a fifo named like one (opened without blocking, so a fifo with no writer cannot hold an import).
+struct FolderWithTraps {
+  clearsky::testing::TempDir dir;
+  std::filesystem::path root = dir.path / "root";
+  FolderWithTraps() {
+    std::filesystem::create_directories(root / "capture");
+    std::ofstream(dir.path / "secret.txt") << "root:secret\n";
+    std::ofstream(root / "capture" / "2013-05-27___12.00.00_-_0____0.0___12.1151.asd.rad.txt")
+        << "regular\n";
+    std::filesystem::create_symlink(
+        dir.path / "secret.txt",
+        root / "capture" / "2013-05-27___12.00.00_-_1____11.25___12.1151.asd.rad.txt");
+    const auto fifo = root / "capture" / "2013-05-27___12.00.00_-_2____22.5___12.1151.asd.rad.txt";
+    EXPECT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    root = std::filesystem::canonical(root);
+  }
+};
+
+TEST(KiderReader, AConfinedFolderReadFollowsNoLinkOutAndSkipsSpecialFiles) {
+  FolderWithTraps f;
+  KiderReadRules rules;
+  rules.confine_to = f.root;
+  const auto files = read_kider_raw_files(f.root / "capture", {}, rules);
+  ASSERT_EQ(files.size(), 1u);
+  EXPECT_EQ(files[0].bytes, "regular\n");
+}
+
+TEST(KiderReader, AnOperatorFolderReadFollowsLinksButSkipsSpecialFiles) {
+  // `clearsky import` (the operator's own command) reads what the operator names.
+  FolderWithTraps f;
+  const auto files = read_kider_raw_files(f.root / "capture");
+  ASSERT_EQ(files.size(), 2u);
+  EXPECT_EQ(files[1].bytes, "root:secret\n");
+}
+
+TEST(KiderReader, AConfinedArchivePathIsOpenedWithoutFollowingALink) {
+  FolderWithTraps f;
+  std::filesystem::create_symlink(f.dir.path / "secret.txt", f.root / "link.7z");
+  KiderReadRules rules;
+  rules.confine_to = f.root;
+  EXPECT_THROW(read_kider_raw_files(f.root / "link.7z", {}, rules), std::runtime_error);
+  // Outside the root: refused before it is opened.
+  EXPECT_THROW(read_kider_raw_files(f.dir.path / "secret.txt", {}, rules), std::runtime_error);
+}
+
+TEST(KiderReader, AnArchivePathThatIsAFifoIsRefusedWithoutWaiting) {
+  clearsky::testing::TempDir dir;
+  const auto fifo = dir.path / "x.7z";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_THROW(read_kider_raw_files(fifo), std::runtime_error);
 }
 
 }  // namespace

@@ -1,0 +1,64 @@
+// Test helper: writes a zip (libarchive, deflate) holding entries of zero bytes, streamed in
+// 1 MiB pieces so that the test itself never holds an entry in memory. An entry of hundreds of
+// MiB of zeros deflates to a few hundred KiB: the shape of a decompression bomb, used to check
+// that imports count the bytes they read (storage/importers/import_byte_budget.h).
+#pragma once
+
+#include <archive.h>
+#include <archive_entry.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace clearsky::testing {
+
+// entries: (path inside the zip, size in bytes).
+inline void write_zero_filled_zip(
+    const std::filesystem::path& path,
+    const std::vector<std::pair<std::string, std::int64_t>>& entries) {
+  archive* writer = archive_write_new();
+  archive_write_set_format_zip(writer);
+  archive_write_zip_set_compression_deflate(writer);
+  if (archive_write_open_filename(writer, path.c_str()) != ARCHIVE_OK) {
+    archive_write_free(writer);
+    throw std::runtime_error("cannot write " + path.string());
+  }
+  const std::string zeros(std::size_t{1} << 20, '\0');
+  for (const auto& [name, size] : entries) {
+    archive_entry* entry = archive_entry_new();
+    archive_entry_set_pathname(entry, name.c_str());
+    archive_entry_set_size(entry, size);
+    archive_entry_set_filetype(entry, AE_IFREG);
+    archive_entry_set_perm(entry, 0644);
+    if (archive_write_header(writer, entry) != ARCHIVE_OK) {
+      archive_entry_free(entry);
+      archive_write_free(writer);
+      throw std::runtime_error("cannot write a zip entry header");
+    }
+    for (std::int64_t left = size; left > 0;) {
+      const auto n = static_cast<std::size_t>(std::min<std::int64_t>(left, zeros.size()));
+      if (archive_write_data(writer, zeros.data(), n) != static_cast<la_ssize_t>(n)) {
+        archive_entry_free(entry);
+        archive_write_free(writer);
+        throw std::runtime_error("cannot write zip data");
+      }
+      left -= static_cast<std::int64_t>(n);
+    }
+    archive_entry_free(entry);
+  }
+  archive_write_close(writer);
+  archive_write_free(writer);
+}
+
+// A file name the Kider reader takes for a radiance file (kider_format.h), for index i.
+inline std::string kider_radiance_name(int i) {
+  return "2013-05-27___12.00.00/2013-05-27___12.00.00_-_" + std::to_string(i) +
+         "____0.0___12.1151.asd.rad.txt";
+}
+
+}  // namespace clearsky::testing
