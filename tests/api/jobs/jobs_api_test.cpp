@@ -66,7 +66,7 @@ TEST(JobsApi, CreateComputesTheNextRunAndListShowsIt) {
   EXPECT_EQ(created.location, "/v1/jobs/" + std::to_string(job["id"].get<std::int64_t>()));
   EXPECT_EQ(job["name"], "nightly");
   EXPECT_EQ(job["dataset"], "synthetic");
-  EXPECT_EQ(job["models"], nlohmann::json::array({"test-model"}));
+  EXPECT_EQ(job["models"], nlohmann::ordered_json::array({"test-model"}));
   EXPECT_EQ(job["parameters"]["turbidity"], 3);
   EXPECT_EQ(job["paused"], false);
   EXPECT_EQ(job["next_run"], "2026-11-22T02:30:00Z");
