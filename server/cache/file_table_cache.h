@@ -13,7 +13,8 @@
 //
 // Version 1 files carried an FNV-1a checksum: a file of another version is a miss, logged, and
 // rebuilt (its checksum is never read as this version's). A missing, truncated, stale or
-// corrupt file is a miss (the model rebuilds and stores again, replacing it). Writes go to a
+// corrupt file is a miss (the model rebuilds and stores again, replacing it); every one but a
+// missing file is logged with the reason (truncated, bad magic, checksum mismatch, another key). Writes go to a
 // unique temporary file in the same directory, then rename(2) replaces the entry atomically,
 // so readers never see a partial file. Store failures are logged and otherwise ignored (the
 // cache is an optimisation).
