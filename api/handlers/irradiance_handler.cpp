@@ -60,8 +60,8 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
   if (want_diffuse && !d.capabilities.sky_irradiance) {
     throw cannot_answer("component", d.id, "it does not compute the sky irradiance");
   }
-  const ModelOnGrid m =
-      model_on_wavelengths(context.models, factory, std::move(config), std::nullopt);
+  const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config),
+                                             std::nullopt, request.requester());
   const SkyModel& model = *m.model;
   const auto state = prepare_sun(context.models, m.model, sun);
   const PlaneOrientation plane{degrees_to_radians(tilt_deg),

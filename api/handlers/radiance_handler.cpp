@@ -34,8 +34,8 @@ ApiResponse radiance(const ApiContext& context, const ApiRequest& request) {
           : parse_single_view(p);
   p.reject_unused();
 
-  const ModelOnGrid m =
-      model_on_wavelengths(context.models, factory, std::move(config), wavelengths);
+  const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config),
+                                             wavelengths, request.requester());
   const SpectralBatch batch = checked_sky_radiance(context.models, m.model, sun, viewpoint, views);
 
   ApiResponse response;

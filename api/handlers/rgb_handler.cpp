@@ -46,8 +46,8 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
     wavelengths = three.grid().nanometres();
     config.wavelengths = three.grid();
   }
-  const ModelOnGrid m =
-      model_on_wavelengths(context.models, factory, std::move(config), wavelengths);
+  const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config),
+                                             wavelengths, request.requester());
   const SpectralBatch batch = checked_sky_radiance(context.models, m.model, sun, viewpoint, views);
 
   nlohmann::json samples = nlohmann::json::array();

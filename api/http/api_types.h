@@ -40,6 +40,9 @@ struct ApiRequest {
   NameValues headers = {};
   // Routes that stream their body (BodyPolicy::upload) read it here; body is then empty.
   BodyReader* body_reader = nullptr;
+  // The client's network address as the transport saw it (the peer of the connection; behind
+  // HAProxy, the proxy's); empty when not a network request. Builds are limited per address.
+  std::string client_address = {};
 
   // The path parameter of that name (std::logic_error when the route has none: a table bug).
   const std::string& path_parameter(std::string_view name) const;
@@ -47,6 +50,8 @@ struct ApiRequest {
   std::optional<std::string_view> header(std::string_view name) const;
   // "GET /v1/jobs/{id}": the endpoint as error messages name it.
   std::string endpoint() const;
+  // The requester of the models this request needs (ModelProvider::model).
+  ModelRequester requester() const { return ModelRequester{client_address}; }
 };
 
 // Writes bytes to the client as they are produced; false when the client is gone.

@@ -245,9 +245,17 @@ void add_sky_errors(Json& operation, bool get) {
       "error.parameter names the parameter or the view (views[3]).");
   r["422"]["content"]["application/json"]["example"] = parse(
       R"json({"error": {"code": "model_cannot_answer", "message": "model preetham cannot answer: the model does not answer for a sun this far below the zenith (see its max_sun_zenith_deg)", "parameter": "sun_zenith"}})json");
+  r["429"] = retry_later_response(
+      "This client (by network address) started more table builds within the server's window "
+      "than it may (--build-rate per --build-rate-window-s; code too_many_builds, parameter "
+      "build_rate): nothing was built; configurations already built are still answered. "
+      "Retry after Retry-After seconds.");
+  r["429"]["content"]["application/json"]["example"] = parse(
+      R"json({"error": {"code": "too_many_builds", "message": "build_rate: 127.0.0.1 started 30 table builds within 60 s, the most one client may; ask for a configuration already built (the defaults) or try again later", "parameter": "build_rate"}})json");
   r["503"] = retry_later_response(
-      "The tables this request needs are being built (code model_not_ready): retry after "
-      "Retry-After seconds.");
+      "The tables this request needs are being built (code model_not_ready), or a new "
+      "configuration's tables would not fit the server's table memory (code busy, parameter "
+      "table_memory): retry after Retry-After seconds.");
   r["503"]["content"]["application/json"]["example"] = parse(
       R"json({"error": {"code": "model_not_ready", "message": "model bruneton: its tables for this configuration are being built (in progress, 0% done)", "parameter": "model"}})json");
   if (get && operation["operationId"] == "getSkydome") {

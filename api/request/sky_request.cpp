@@ -146,7 +146,8 @@ std::optional<std::vector<double>> parse_wavelengths(Parameters& p, const Limits
 
 ModelOnGrid model_on_wavelengths(const ModelProvider& provider, const ModelFactory& factory,
                                  ModelConfig config,
-                                 const std::optional<std::vector<double>>& wavelengths) {
+                                 const std::optional<std::vector<double>>& wavelengths,
+                                 const ModelRequester& requester) {
   ModelOnGrid out;
   const ModelDescriptor& d = *factory.descriptor;
   if (wavelengths) {
@@ -163,7 +164,7 @@ ModelOnGrid model_on_wavelengths(const ModelProvider& provider, const ModelFacto
       on_grid = on_grid && config.wavelengths.index_of(w) < config.wavelengths.size();
     if (!on_grid) config.wavelengths = WavelengthGrid::points(*wavelengths);
   }
-  out.model = provider.model(factory, config);
+  out.model = provider.model(factory, config, requester);
   const WavelengthGrid& grid = out.model->wavelengths();
   if (wavelengths) {
     for (double w : *wavelengths) out.indices.push_back(grid.index_of(w));

@@ -64,10 +64,12 @@ struct ModelOnGrid {
 
 // Wavelengths all on the configured grid are read from its tables; any other list selects a
 // model built on exactly those wavelengths (a point grid), through the provider. Throws 422
-// for a wavelength outside the model's spectral range.
+// for a wavelength outside the model's spectral range. requester: who asks (the server limits
+// the builds a client triggers).
 ModelOnGrid model_on_wavelengths(const ModelProvider& provider, const ModelFactory& factory,
                                  ModelConfig config,
-                                 const std::optional<std::vector<double>>& wavelengths);
+                                 const std::optional<std::vector<double>>& wavelengths,
+                                 const ModelRequester& requester);
 
 // 422 (or 500 for numerical_failure) naming parameter, when status is not ok.
 void require_answer(SampleStatus status, const std::string& parameter, const std::string& model_id);

@@ -26,14 +26,30 @@ struct ModelState {
 
 std::string_view to_string(ModelState::Status status);
 
+// Who asks for a model: the network address of the HTTP client (the server limits the table
+// builds each client may trigger), or empty for the server's own work (evaluations, jobs,
+// prebuilt tables), which is not limited.
+struct ModelRequester {
+  std::string client_address;
+};
+
 class ModelProvider {
  public:
   virtual ~ModelProvider() = default;
   virtual std::span<const ModelFactory> factories() const = 0;
   // The model built with config. Throws ApiError: 400 for a configuration the descriptor
-  // rejects, 503 (with Retry-After) while its tables are being built, 500 when the build failed.
+  // rejects, 503 (with Retry-After) while its tables are being built or when they do not fit
+  // the server's table memory, 429 (with Retry-After) when the requester triggered too many
+  // builds lately, 500 when the build failed.
   virtual std::shared_ptr<const SkyModel> model(const ModelFactory& factory,
-                                                const ModelConfig& config) const = 0;
+                                                const ModelConfig& config,
+                                                const ModelRequester& requester) const = 0;
+  // The same for the server's own work (no requester). Implementations that override the
+  // other overload bring this one into scope with `using api::ModelProvider::model;`.
+  std::shared_ptr<const SkyModel> model(const ModelFactory& factory,
+                                        const ModelConfig& config) const {
+    return model(factory, config, ModelRequester{});
+  }
   virtual ModelState default_state(const ModelFactory& factory) const = 0;
   // The model's per-sun state (SkyModel::prepare_sun; sun already checked). Providers may
   // share it between requests for the same model and sun: it is immutable.

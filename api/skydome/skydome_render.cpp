@@ -112,7 +112,8 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
                                 : s->projection_name == "latlong" ? Projection::latlong
                                                                   : Projection::cubemap;
   s->projection = SkydomeProjection(projection, static_cast<int>(size));
-  s->m = model_on_wavelengths(context.models, factory, std::move(config), wavelengths);
+  s->m = model_on_wavelengths(context.models, factory, std::move(config), wavelengths,
+                              request.requester());
   // The sun and the viewpoint are checked now, so that a sky the model cannot answer is an
   // error rather than a black image: one view at the zenith goes through the checked path.
   ViewList zenith;

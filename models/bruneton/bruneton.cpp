@@ -139,7 +139,8 @@ const ModelDescriptor& bruneton_descriptor() {
 }
 
 ModelFactory bruneton_factory() {
-  return make_model_factory<&bruneton_descriptor, &BrunetonModel::build>();
+  return make_model_factory<&bruneton_descriptor, &BrunetonModel::build,
+                            &BrunetonModel::estimated_table_bytes>();
 }
 
 bruneton::Resolution BrunetonModel::resolution(const ModelDescriptor& descriptor,
@@ -190,6 +191,11 @@ std::shared_ptr<const BrunetonModel> BrunetonModel::build(const ValidatedConfig&
                                                           const PrecomputeContext& context) {
   return std::shared_ptr<const BrunetonModel>(
       new BrunetonModel(config.descriptor(), config.config(), context));
+}
+
+std::size_t BrunetonModel::estimated_table_bytes(const ValidatedConfig& config) {
+  return bruneton::Tables::bytes_for(resolution(config.descriptor(), config.config()),
+                                     static_cast<int>(config.config().wavelengths.size()));
 }
 
 BrunetonModel::BrunetonModel(const ModelDescriptor& descriptor, ModelConfig config,

@@ -48,6 +48,9 @@ class BrunetonModel : public SkyModel {
   // stores them in the cache). Throws PrecomputeCancelled when cancelled.
   static std::shared_ptr<const BrunetonModel> build(const ValidatedConfig& config,
                                                     const PrecomputeContext& context);
+  // table_bytes() of the model build(config) makes, from the resolution and the wavelength
+  // count alone (ModelFactory::estimate_table_bytes).
+  static std::size_t estimated_table_bytes(const ValidatedConfig& config);
 
   // The descriptor it was created with, its capabilities.max_sun_zenith_deg set to what the
   // tables cover (option max_sun_zenith_deg).

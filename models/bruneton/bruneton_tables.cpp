@@ -89,6 +89,19 @@ void lookup_2d(const FloatTable2D& t, double u, double v, float* out) {
 
 }  // namespace
 
+std::size_t Tables::bytes_for(const Resolution& resolution, int wavelengths) {
+  const auto stride = static_cast<std::size_t>(padded_stride(wavelengths));
+  const std::size_t table_2d =
+      (static_cast<std::size_t>(resolution.transmittance_mu) * resolution.transmittance_r +
+       static_cast<std::size_t>(resolution.irradiance_mu_s) * resolution.irradiance_r) *
+      stride * sizeof(float);
+  const std::size_t table_4d =
+      static_cast<std::size_t>(resolution.texels_4d()) * stride * sizeof(std::uint16_t) +
+      static_cast<std::size_t>(resolution.r) * resolution.mu * sizeof(float);
+  // Single Rayleigh and Mie always; the sum of the later orders when there are any.
+  return table_2d + (resolution.orders > 1 ? 3 : 2) * table_4d;
+}
+
 std::size_t Tables::bytes() const {
   return (transmittance.values.size() + sky_irradiance.values.size()) * sizeof(float) +
          single_rayleigh.bytes() + single_mie.bytes() + multiple.bytes();

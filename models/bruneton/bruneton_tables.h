@@ -141,6 +141,9 @@ struct Tables {
   HalfTable4D multiple;  // orders 2..orders, 1/sr per unit solar irradiance; empty for 1 order
 
   std::size_t bytes() const;
+  // What bytes() is for tables of this resolution on `wavelengths` wavelengths, before they
+  // are built (the same arithmetic as the allocations of precompute_tables()).
+  static std::size_t bytes_for(const Resolution& resolution, int wavelengths);
 
   // Transmittance from (r, mu) to the end of the atmosphere (bilinear in the table).
   void transmittance_to_top(double r, double mu, float* out) const;

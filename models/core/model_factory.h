@@ -4,14 +4,16 @@
 // options (the descriptor's default where the configuration has none).
 //
 //   ModelFactory my_model_factory() {
-//     return make_model_factory<&my_model_descriptor, &MyModel::build>();
+//     return make_model_factory<&my_model_descriptor, &MyModel::build,
+//                               &MyModel::estimated_table_bytes>();
 //   }
 //
 // with `static std::shared_ptr<const MyModel> build(const ValidatedConfig&, const
-// PrecomputeContext&)`. Checks the descriptor's ranges cannot express (an even table size)
+// PrecomputeContext&)` and `static std::size_t estimated_table_bytes(const ValidatedConfig&)`. Checks the descriptor's ranges cannot express (an even table size)
 // belong to the build function and throw InvalidInput naming the option.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string_view>
 
@@ -42,15 +44,25 @@ class ValidatedConfig {
 // validate_config(descriptor, config) (InvalidInput naming the parameter), then the proof.
 ValidatedConfig validated_config(const ModelDescriptor& descriptor, const ModelConfig& config);
 
-// The factory of a model: its descriptor and a create() that validates once, then calls
-// Build(validated, context). Describe: const ModelDescriptor& (*)(); Build: a function
-// (const ValidatedConfig&, const PrecomputeContext&) -> shared_ptr to a SkyModel.
-template <const ModelDescriptor& (*Describe)(), auto Build>
+// The Estimate of a model without precomputed tables (its table_bytes() is 0: Preetham, Hosek,
+// O'Neal evaluate closed forms or fitted coefficients per query).
+inline std::size_t no_precomputed_tables(const ValidatedConfig&) { return 0; }
+
+// The factory of a model: its descriptor, a create() that validates once, then calls
+// Build(validated, context), and an estimate_table_bytes() that validates, then calls
+// Estimate(validated). Describe: const ModelDescriptor& (*)(); Build: a function
+// (const ValidatedConfig&, const PrecomputeContext&) -> shared_ptr to a SkyModel; Estimate: a
+// function (const ValidatedConfig&) -> std::size_t, the bytes the built model's table_bytes()
+// will report (docs/model-contract.md "Table size").
+template <const ModelDescriptor& (*Describe)(), auto Build, auto Estimate>
 ModelFactory make_model_factory() {
   return ModelFactory{&Describe(),
                       [](const ModelConfig& config,
                          const PrecomputeContext& context) -> std::shared_ptr<const SkyModel> {
                         return Build(validated_config(Describe(), config), context);
+                      },
+                      [](const ModelConfig& config) -> std::size_t {
+                        return Estimate(validated_config(Describe(), config));
                       }};
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -33,6 +34,11 @@ struct PrecomputeContext {
   const std::atomic<bool>* cancel = nullptr;
   const TableCache* cache = nullptr;
   unsigned threads = 0;  // 0: all cores
+  // Models with per-sun states (Haber, Nishita96) keep at most this many bytes of them per
+  // built configuration, least recently used dropped first (models/core/sun_state_cache.h);
+  // the server sets it from `serve --sun-state-memory`.
+  static constexpr std::size_t kDefaultSunStateMemoryBytes = std::size_t{256} << 20;
+  std::size_t sun_state_memory_bytes = kDefaultSunStateMemoryBytes;
 
   void report(double fraction, std::string_view stage) const {
     if (progress) progress(fraction, stage);

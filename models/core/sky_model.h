@@ -179,6 +179,11 @@ struct ModelFactory {
   // precomputes. May throw PrecomputeCancelled.
   std::shared_ptr<const SkyModel> (*create)(const ModelConfig& config,
                                             const PrecomputeContext& context) = nullptr;
+  // Validates config likewise, then returns the bytes SkyModel::table_bytes() of the model
+  // create(config) builds will report, computed from the configuration (wavelength count,
+  // table resolutions) without precomputing anything: the server admits a build against its
+  // table memory budget on it (docs/model-contract.md "Table size"). Null: unknown.
+  std::size_t (*estimate_table_bytes)(const ModelConfig& config) = nullptr;
 };
 
 // Checks the atmosphere (AtmosphereParameters::validate, then the ranges of the atmosphere

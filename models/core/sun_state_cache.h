@@ -5,17 +5,22 @@
 // sun zenith bucket) and ask this cache:
 //  - single flight: concurrent requests for a key that is being built wait for that one build
 //    instead of starting their own;
-//  - bounded: at most `capacity` finished states are kept, the least recently used is dropped
-//    first (holders of a dropped state keep it alive through their shared_ptr);
+//  - bounded: at most `capacity` finished states, and at most `max_bytes` bytes of them (a
+//    state's memory_bytes(), sizeof(State) for a type without one), are kept; the least
+//    recently used is dropped first (holders of a dropped state keep it alive through their
+//    shared_ptr). The state just built is kept even when it alone is above max_bytes: its
+//    requester is using it, and dropping it would rebuild it on every request;
 //  - a build that throws is not cached: its waiters receive the exception and the next
 //    request builds again (a cancelled build thus reaches every request waiting on it).
 // Thread-safety: every member function may be called concurrently.
 #pragma once
 
 #include <cmath>
+#include <concepts>
 #include <cstddef>
 #include <functional>
 #include <future>
+#include <limits>
 #include <list>
 #include <memory>
 #include <mutex>
@@ -30,6 +35,7 @@ struct SunStateCacheStats {
   std::size_t hits = 0;    // served from a finished or in-flight entry
   std::size_t builds = 0;  // builder calls
   std::size_t evictions = 0;
+  std::size_t bytes = 0;  // of the finished states kept
 };
 
 template <class State>
@@ -37,7 +43,9 @@ class SunStateCache {
  public:
   using Pointer = std::shared_ptr<const State>;
 
-  explicit SunStateCache(std::size_t capacity) : capacity_(capacity < 1 ? 1 : capacity) {}
+  explicit SunStateCache(std::size_t capacity,
+                         std::size_t max_bytes = std::numeric_limits<std::size_t>::max())
+      : capacity_(capacity < 1 ? 1 : capacity), max_bytes_(max_bytes) {}
   SunStateCache(const SunStateCache&) = delete;
   SunStateCache& operator=(const SunStateCache&) = delete;
 
@@ -54,7 +62,7 @@ class SunStateCache {
     }
     std::promise<Pointer> promise;
     lru_.push_front(key);
-    entries_.emplace(key, Entry{promise.get_future().share(), lru_.begin(), false});
+    entries_.emplace(key, Entry{promise.get_future().share(), lru_.begin(), false, 0});
     ++stats_.builds;
     lock.unlock();
 
@@ -71,9 +79,14 @@ class SunStateCache {
       throw;
     }
     promise.set_value(state);
+    const std::size_t bytes = bytes_of(state);
     lock.lock();
-    if (auto it = entries_.find(key); it != entries_.end()) it->second.ready = true;
-    evict_locked();
+    if (auto it = entries_.find(key); it != entries_.end()) {
+      it->second.ready = true;
+      it->second.bytes = bytes;
+      stats_.bytes += bytes;
+    }
+    evict_locked(key);
     return state;
   }
 
@@ -82,6 +95,7 @@ class SunStateCache {
     return entries_.size();
   }
   std::size_t capacity() const { return capacity_; }
+  std::size_t max_bytes() const { return max_bytes_; }
   SunStateCacheStats stats() const {
     std::lock_guard lock(mutex_);
     return stats_;
@@ -92,16 +106,30 @@ class SunStateCache {
     std::shared_future<Pointer> future;
     std::list<std::string>::iterator position;
     bool ready;
+    std::size_t bytes;  // counted in stats_.bytes once ready
   };
 
-  // Drops the least recently used finished entries beyond capacity; entries being built are
-  // never dropped (their requesters are waiting on them).
-  void evict_locked() {
+  static std::size_t bytes_of(const Pointer& state) {
+    if (!state) return 0;
+    if constexpr (requires(const State& s) {
+                    { s.memory_bytes() } -> std::convertible_to<std::size_t>;
+                  }) {
+      return state->memory_bytes();
+    } else {
+      return sizeof(State);
+    }
+  }
+
+  // Drops the least recently used finished entries beyond capacity or max_bytes; entries
+  // being built are never dropped (their requesters are waiting on them), nor `keep` (the
+  // state just built).
+  void evict_locked(const std::string& keep) {
     auto it = lru_.end();
-    while (entries_.size() > capacity_ && it != lru_.begin()) {
+    while ((entries_.size() > capacity_ || stats_.bytes > max_bytes_) && it != lru_.begin()) {
       --it;
       auto entry = entries_.find(*it);
-      if (entry != entries_.end() && entry->second.ready) {
+      if (entry != entries_.end() && entry->second.ready && entry->first != keep) {
+        stats_.bytes -= entry->second.bytes;
         entries_.erase(entry);
         it = lru_.erase(it);
         ++stats_.evictions;
@@ -110,6 +138,7 @@ class SunStateCache {
   }
 
   const std::size_t capacity_;
+  const std::size_t max_bytes_;
   mutable std::mutex mutex_;
   std::list<std::string> lru_;  // most recently used first
   std::unordered_map<std::string, Entry> entries_;

@@ -34,7 +34,8 @@ const ModelDescriptor& elek_descriptor() {
 }
 
 ModelFactory elek_factory() {
-  return make_model_factory<&elek_descriptor, &BrunetonModel::build>();
+  return make_model_factory<&elek_descriptor, &BrunetonModel::build,
+                            &BrunetonModel::estimated_table_bytes>();
 }
 
 LinearSrgb elek_original_rgb(const Spectrum& radiance_on_native_grid) {

@@ -104,6 +104,10 @@ HaberSettings settings_from(const ValidatedConfig& config) {
   return s;
 }
 
+std::size_t grid_table_bytes(const HaberGrid& grid) {
+  return grid.ring_cells().size() * sizeof(RingCell) + grid.active().size() * sizeof(int);
+}
+
 }  // namespace
 
 const ModelDescriptor& model_descriptor() {
@@ -111,7 +115,19 @@ const ModelDescriptor& model_descriptor() {
   return descriptor;
 }
 
-ModelFactory model_factory() { return make_model_factory<&model_descriptor, &HaberModel::build>(); }
+ModelFactory model_factory() {
+  return make_model_factory<&model_descriptor, &HaberModel::build,
+                            &HaberModel::estimated_table_bytes>();
+}
+
+std::size_t HaberModel::estimated_table_bytes(const ValidatedConfig& config) {
+  const HaberSettings settings = settings_from(config);
+  if (settings.azimuth_sectors % 2 != 0) throw InvalidInput("azimuth_sectors", "must be even");
+  const AtmosphereParameters& atmosphere = config.config().atmosphere;
+  const HaberGrid grid(settings, atmosphere.earth_radius_m, atmosphere.rayleigh_scale_height_m,
+                       atmosphere.mie_scale_height_m);
+  return grid_table_bytes(grid);
+}
 
 std::shared_ptr<const HaberModel> HaberModel::create(const ModelConfig& config,
                                                      const PrecomputeContext& context) {
@@ -123,10 +139,12 @@ std::shared_ptr<const HaberModel> HaberModel::build(const ValidatedConfig& confi
   const HaberSettings settings = settings_from(config);
   if (settings.azimuth_sectors % 2 != 0) throw InvalidInput("azimuth_sectors", "must be even");
   context.check_cancelled();
-  return std::shared_ptr<const HaberModel>(new HaberModel(config, settings));
+  return std::shared_ptr<const HaberModel>(
+      new HaberModel(config, settings, context.sun_state_memory_bytes));
 }
 
-HaberModel::HaberModel(const ValidatedConfig& validated, const HaberSettings& settings)
+HaberModel::HaberModel(const ValidatedConfig& validated, const HaberSettings& settings,
+                       std::size_t sun_state_memory_bytes)
     : SkyModel(validated.config()),
       grid_(settings, config().atmosphere.earth_radius_m,
             config().atmosphere.rayleigh_scale_height_m, config().atmosphere.mie_scale_height_m),
@@ -134,11 +152,10 @@ HaberModel::HaberModel(const ValidatedConfig& validated, const HaberSettings& se
       cache_prefix_(model_descriptor().id + "/" + model_descriptor().version + "/" +
                     config().canonical_string()),
       cache_(std::make_unique<SunStateCache<HaberDome>>(
-          static_cast<std::size_t>(validated.integer_option("sun_state_cache_size")))) {}
+          static_cast<std::size_t>(validated.integer_option("sun_state_cache_size")),
+          sun_state_memory_bytes)) {}
 
-std::size_t HaberModel::table_bytes() const {
-  return grid_.ring_cells().size() * sizeof(RingCell) + grid_.active().size() * sizeof(int);
-}
+std::size_t HaberModel::table_bytes() const { return grid_table_bytes(grid_); }
 
 std::shared_ptr<const SunState> HaberModel::compute_sun_state(
     const SunPosition& sun, const PrecomputeContext& context) const {

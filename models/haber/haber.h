@@ -50,6 +50,10 @@ class HaberModel final : public SkyModel {
                                                   const PrecomputeContext& context = {});
   static std::shared_ptr<const HaberModel> build(const ValidatedConfig& config,
                                                  const PrecomputeContext& context);
+  // table_bytes() of the model build(config) makes. Its tables are the grid's geometry, which
+  // is laid out without any radiative transfer (the costly part is per sun), so the estimate
+  // lays it out (ModelFactory::estimate_table_bytes).
+  static std::size_t estimated_table_bytes(const ValidatedConfig& config);
 
   const ModelDescriptor& descriptor() const override { return model_descriptor(); }
   std::size_t table_bytes() const override;
@@ -65,7 +69,9 @@ class HaberModel final : public SkyModel {
   Spectrum compute_sun_irradiance(const SunState& sun, const Viewpoint& viewpoint) const override;
 
  private:
-  HaberModel(const ValidatedConfig& validated, const HaberSettings& settings);
+  // sun_state_memory_bytes: the byte bound of the per-sun cache (PrecomputeContext).
+  HaberModel(const ValidatedConfig& validated, const HaberSettings& settings,
+             std::size_t sun_state_memory_bytes);
 
   HaberGrid grid_;
   double bucket_width_rad_;

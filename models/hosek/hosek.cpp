@@ -122,7 +122,9 @@ const ModelDescriptor& hosek_descriptor() {
   return descriptor;
 }
 
-ModelFactory hosek_factory() { return make_model_factory<&hosek_descriptor, &HosekModel::build>(); }
+ModelFactory hosek_factory() {
+  return make_model_factory<&hosek_descriptor, &HosekModel::build, &no_precomputed_tables>();
+}
 
 std::shared_ptr<const HosekModel> HosekModel::create(const ModelConfig& config,
                                                      const PrecomputeContext& context) {

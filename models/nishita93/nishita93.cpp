@@ -84,7 +84,13 @@ const ModelDescriptor& nishita93_descriptor() {
 }
 
 ModelFactory nishita93_factory() {
-  return make_model_factory<&nishita93_descriptor, &Nishita93Model::build>();
+  return make_model_factory<&nishita93_descriptor, &Nishita93Model::build,
+                            &Nishita93Model::estimated_table_bytes>();
+}
+
+std::size_t Nishita93Model::estimated_table_bytes(const ValidatedConfig& config) {
+  return Nishita93Tables::memory_bytes_for(config.integer_option("spheres"),
+                                           config.integer_option("cylinders"));
 }
 
 std::shared_ptr<const Nishita93Model> Nishita93Model::create(const ModelConfig& config,

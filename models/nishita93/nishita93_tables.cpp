@@ -233,6 +233,13 @@ OpticalLengths Nishita93Tables::node(int i, int j, bool against_axis) const {
                       : OpticalLengths{along_rayleigh_m_[cell], along_mie_m_[cell]};
 }
 
+std::size_t Nishita93Tables::memory_bytes_for(int spheres, int cylinders) {
+  // Per sphere: radius and two densities; per (sphere, cylinder) node: four optical lengths.
+  const auto n_s = static_cast<std::size_t>(std::max(spheres, 0));
+  const auto nodes = n_s * static_cast<std::size_t>(std::max(cylinders, 0));
+  return sizeof(Nishita93Tables) + sizeof(double) * (3 * n_s + 4 * nodes);
+}
+
 std::size_t Nishita93Tables::memory_bytes() const {
   return sizeof(*this) +
          sizeof(double) * (3 * sphere_radius_m_.size() + 4 * along_rayleigh_m_.size());

@@ -35,6 +35,8 @@ class Nishita93Tables {
   // spheres, cylinders >= 2 (the study: 64 and 64). May throw PrecomputeCancelled.
   static Nishita93Tables build(const AtmosphereParameters& atmosphere, int spheres, int cylinders,
                                const PrecomputeContext& context = {});
+  // memory_bytes() of the tables build() makes with these counts, without building them.
+  static std::size_t memory_bytes_for(int spheres, int cylinders);
 
   int sphere_count() const { return sphere_count_; }
   int cylinder_count() const { return cylinder_count_; }

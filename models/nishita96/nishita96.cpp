@@ -121,7 +121,13 @@ const ModelDescriptor& nishita96_descriptor() {
 }
 
 ModelFactory nishita96_factory() {
-  return make_model_factory<&nishita96_descriptor, &Nishita96Model::build>();
+  return make_model_factory<&nishita96_descriptor, &Nishita96Model::build,
+                            &Nishita96Model::estimated_table_bytes>();
+}
+
+std::size_t Nishita96Model::estimated_table_bytes(const ValidatedConfig& config) {
+  return Nishita93Tables::memory_bytes_for(config.integer_option("spheres"),
+                                           config.integer_option("cylinders"));
 }
 
 std::shared_ptr<const Nishita96Model> Nishita96Model::create(const ModelConfig& config,
@@ -147,7 +153,8 @@ Nishita96Model::Nishita96Model(const ValidatedConfig& config, const PrecomputeCo
       bucket_width_rad_(degrees_to_radians(config.option("sun_zenith_bucket_deg"))),
       cache_prefix_(cache_prefix(this->config())),
       cache_(std::make_unique<SunStateCache<nishita96::SunTables>>(
-          static_cast<std::size_t>(config.integer_option("sun_state_cache_size")))) {}
+          static_cast<std::size_t>(config.integer_option("sun_state_cache_size")),
+          context.sun_state_memory_bytes)) {}
 
 std::shared_ptr<const SunState> Nishita96Model::compute_sun_state(
     const SunPosition& sun, const PrecomputeContext& context) const {

@@ -62,6 +62,9 @@ class Nishita96Model final : public SkyModel {
                                                       const PrecomputeContext& context = {});
   static std::shared_ptr<const Nishita96Model> build(const ValidatedConfig& config,
                                                      const PrecomputeContext& context);
+  // table_bytes() of the model build(config) makes: its optical-length tables, from the
+  // sphere and cylinder counts (ModelFactory::estimate_table_bytes).
+  static std::size_t estimated_table_bytes(const ValidatedConfig& config);
 
   const ModelDescriptor& descriptor() const override { return nishita96_descriptor(); }
   std::size_t table_bytes() const override { return optical_lengths_.memory_bytes(); }

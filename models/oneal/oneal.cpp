@@ -68,7 +68,9 @@ const ModelDescriptor& oneal_descriptor() {
   return descriptor;
 }
 
-ModelFactory oneal_factory() { return make_model_factory<&oneal_descriptor, &ONealModel::build>(); }
+ModelFactory oneal_factory() {
+  return make_model_factory<&oneal_descriptor, &ONealModel::build, &no_precomputed_tables>();
+}
 
 std::shared_ptr<const ONealModel> ONealModel::create(const ModelConfig& config,
                                                      const PrecomputeContext& context) {

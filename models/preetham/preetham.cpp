@@ -117,7 +117,7 @@ const ModelDescriptor& preetham_descriptor() {
 }
 
 ModelFactory preetham_factory() {
-  return make_model_factory<&preetham_descriptor, &PreethamModel::build>();
+  return make_model_factory<&preetham_descriptor, &PreethamModel::build, &no_precomputed_tables>();
 }
 
 std::shared_ptr<const PreethamModel> PreethamModel::create(const ModelConfig& config,

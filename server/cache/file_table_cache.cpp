@@ -58,22 +58,36 @@ std::optional<std::string> FileTableCache::load(const std::string& key) const {
     content << file.rdbuf();
     const std::string data = std::move(content).str();
     std::string_view in(data);
-    if (in.size() < sizeof kMagic || std::memcmp(in.data(), kMagic, sizeof kMagic) != 0)
+    // A damaged file is a miss like a missing one, but said in the log: the operator learns
+    // why a start took the time of a build (docs/threat-model.md "corrupt or lose stored data").
+    const auto damaged = [&](std::string_view why) -> std::optional<std::string> {
+      spdlog::warn("table cache: {} {} ({} bytes), rebuilding", path_of(key).string(), why,
+                   data.size());
       return std::nullopt;
+    };
+    if (in.size() < sizeof kMagic) return damaged("is truncated before its magic");
+    if (std::memcmp(in.data(), kMagic, sizeof kMagic) != 0)
+      return damaged("does not start with the table cache magic");
     in.remove_prefix(sizeof kMagic);
     std::uint32_t version = 0, key_length = 0;
     std::uint64_t payload_length = 0, checksum = 0;
-    if (!get(in, version)) return std::nullopt;
+    if (!get(in, version)) return damaged("is truncated in its header");
     if (version != kFormatVersion) {
       spdlog::info("table cache: {} has format version {} (this server writes {}), rebuilding",
                    path_of(key).string(), version, kFormatVersion);
       return std::nullopt;
     }
-    if (!get(in, key_length) || in.size() < key_length || in.substr(0, key_length) != key)
+    if (!get(in, key_length) || in.size() < key_length) return damaged("is truncated in its key");
+    if (in.substr(0, key_length) != key) {
+      // Another key with the same file name (a hash collision): not damage, replaced.
+      spdlog::info("table cache: {} holds another key, rebuilding", path_of(key).string());
       return std::nullopt;
+    }
     in.remove_prefix(key_length);
-    if (!get(in, payload_length) || !get(in, checksum) || in.size() != payload_length)
-      return std::nullopt;
+    if (!get(in, payload_length) || !get(in, checksum))
+      return damaged("is truncated in its header");
+    if (in.size() < payload_length) return damaged("is truncated in its payload");
+    if (in.size() != payload_length) return damaged("has bytes after its payload");
     if (table_checksum(in) != checksum) {
       spdlog::warn("table cache: checksum mismatch in {}, rebuilding", path_of(key).string());
       return std::nullopt;

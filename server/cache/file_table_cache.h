@@ -13,13 +13,15 @@
 //
 // Version 1 files carried an FNV-1a checksum: a file of another version is a miss, logged, and
 // rebuilt (its checksum is never read as this version's). A missing, truncated, stale or
-// corrupt file is a miss (the model rebuilds and stores again, replacing it). Writes go to a
-// temporary file in the same directory created by mkstemp(3) (unique among all the processes
-// sharing the directory, replicas in other containers included, docs/deploy.md "Shared table
-// cache"), fsync(2)ed, then rename(2) replaces the entry atomically, so readers never see a
-// partial file and the last complete write wins. Temporary files a killed writer left behind
-// are removed when a cache is opened, once older than kStaleTemporaryAge. Store failures are
-// logged and otherwise ignored (the cache is an optimisation).
+// corrupt file is a miss (the model rebuilds and stores again, replacing it); every one but a
+// missing file is logged with the reason (truncated, bad magic, checksum mismatch, another
+// key). Writes go to a temporary file in the same directory created by mkstemp(3) (unique among
+// all the processes sharing the directory, replicas in other containers included,
+// docs/deploy.md "Shared table cache"), fsync(2)ed, then rename(2) replaces the entry
+// atomically, so readers never see a partial file and the last complete write wins. Temporary
+// files a killed writer left behind are removed when a cache is opened, once older than
+// kStaleTemporaryAge. Store failures are logged and otherwise ignored (the cache is an
+// optimisation).
 // Thread-safety: load() and store() may be called concurrently from any thread and process.
 #pragma once
 

@@ -168,6 +168,9 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   server::TableStore::Options options;
   options.capacity = config.table_capacity;
   options.memory_budget_bytes = config.table_memory_bytes;
+  options.sun_state_memory_bytes = config.sun_state_memory_bytes;
+  options.build_rate = config.build_rate;
+  options.build_rate_window = std::chrono::seconds(config.build_rate_window_s);
   options.build_wait = std::chrono::milliseconds(config.build_wait_ms);
   options.retry_after_s = config.retry_after_s;
   options.builder_threads = config.builder_threads;
@@ -334,6 +337,21 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
   command
       ->add_option("--table-memory", config->table_memory_bytes,
                    "Bytes of model tables kept or being built (defaults counted, never evicted)")
+      ->capture_default_str();
+  command
+      ->add_option("--sun-state-memory", config->sun_state_memory_bytes,
+                   "Bytes of per-sun states kept per configuration of Haber and Nishita96 "
+                   "(least recently used dropped beyond)")
+      ->capture_default_str();
+  command
+      ->add_option("--build-rate", config->build_rate,
+                   "Table builds one client address may trigger per --build-rate-window-s "
+                   "(429 beyond; 0: no limit)")
+      ->capture_default_str();
+  command
+      ->add_option("--build-rate-window-s", config->build_rate_window_s,
+                   "The window of --build-rate, s")
+      ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command
       ->add_option("--build-wait-ms", config->build_wait_ms,

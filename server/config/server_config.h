@@ -26,6 +26,9 @@
 // | build_wait_ms        | ms    | 2000            | how long a request waits for a table or per-sun build before 503                      |
 // | retry_after_s        | s     | 5               | Retry-After of a 503                                                                  |
 // | table_memory_bytes   | byte  | 1 GiB           | tables kept or being built, defaults included (503 beyond)                            |
+// | sun_state_memory_bytes | byte | 256 MiB        | per-sun states kept per configuration of Haber and Nishita96 (LRU beyond)             |
+// | build_rate           |       | 30              | table builds one client address may trigger per build_rate_window_s (429 beyond); 0: off |
+// | build_rate_window_s  | s     | 60              | the window of build_rate                                                              |
 // | builder_threads      |       | 1               | concurrent builds of the tables queued at start                                       |
 // | token                |       | (none)          | bearer token of the write endpoints; none: CLEARSKY_TOKEN, else writes off            |
 // | token_file           | path  | (none)          | file holding the token (systemd LoadCredential=); instead of token                    |
@@ -83,6 +86,9 @@ struct ServerConfig {
   int max_skydome_size = 4096;
   std::size_t table_capacity = 16;
   std::size_t table_memory_bytes = std::size_t{1} << 30;
+  std::size_t sun_state_memory_bytes = std::size_t{256} << 20;
+  std::size_t build_rate = 30;
+  int build_rate_window_s = 60;
   int build_wait_ms = 2000;
   int retry_after_s = 5;
   unsigned builder_threads = 1;

@@ -50,6 +50,7 @@ api::ApiRequest to_api_request(const httplib::Request& req) {
   api::ApiRequest r;
   r.method = req.method;
   r.path = req.path;
+  r.client_address = req.remote_addr;
   for (const auto& [name, value] : req.params) r.query.emplace_back(name, value);
   for (const auto& [name, value] : req.headers) r.headers.emplace_back(name, value);
   const api::RouteMatch& match = current_request.match;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <exception>
 #include <sstream>
+#include <stdexcept>
 
 #include "api/error/api_error.h"
 #include "models/core/invalid_input.h"
@@ -77,7 +78,9 @@ bool pending(api::ModelState::Status status) {
 }  // namespace
 
 TableStore::TableStore(std::vector<ModelFactory> factories, Options options)
-    : factories_(std::move(factories)), options_(options) {
+    : factories_(std::move(factories)),
+      options_(options),
+      build_rate_(options.build_rate, options.build_rate_window) {
   for (unsigned i = 0; i < std::max(1u, options_.builder_threads); ++i)
     builders_.emplace_back([this] { builder_loop(); });
 }
@@ -111,10 +114,9 @@ void TableStore::launch_locked(const std::shared_ptr<Entry>& entry) const {
                         done});
 }
 
-std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory& factory,
-                                                             const ModelConfig& config,
-                                                             const std::string& key,
-                                                             bool pinned) const {
+std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(
+    const ModelFactory& factory, const ModelConfig& config, const std::string& key, bool pinned,
+    const api::ModelRequester& requester) const {
   // Caller holds mutex_.
   auto it = entries_.find(key);
   if (it != entries_.end()) {
@@ -134,7 +136,20 @@ std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory&
                            options_.retry_after_s);
     }
   }
-  const std::size_t estimate = estimate_bytes_locked(factory);
+  const auto now = BuildRateLimiter::Clock::now();
+  if (!pinned) {
+    if (const int wait_s = build_rate_.seconds_until_allowed(requester.client_address, now)) {
+      throw api::ApiError(
+          429, "too_many_builds", "build_rate",
+          "build_rate: " + requester.client_address + " started " +
+              std::to_string(build_rate_.builds_per_window()) + " table builds within " +
+              std::to_string(build_rate_.window().count()) +
+              " s, the most one client may; ask for a configuration already built (the "
+              "defaults) or try again later",
+          wait_s);
+    }
+  }
+  const std::size_t estimate = estimate_bytes_locked(factory, config);
   if (!pinned && !make_room_locked(estimate, nullptr)) {
     throw api::ApiError(503, "busy", "table_memory",
                         "table_memory: the tables of model " + factory.descriptor->id + " (about " +
@@ -154,6 +169,7 @@ std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory&
   entry->pinned = pinned;
   entry->last_used = ++clock_;
   entries_.emplace(key, entry);
+  if (!pinned) build_rate_.record(requester.client_address, now);
   if (pinned) {
     queue_.push_back(entry);
     changed_.notify_all();
@@ -164,7 +180,8 @@ std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(const ModelFactory&
 }
 
 std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory,
-                                                  const ModelConfig& config) const {
+                                                  const ModelConfig& config,
+                                                  const api::ModelRequester& requester) const {
   // The default configuration (most requests) skips building its canonical text.
   static const AtmosphereParameters default_atmosphere;
   static const WavelengthGrid default_grid = ModelConfig{}.wavelengths;
@@ -185,7 +202,7 @@ std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory,
   const bool is_default = canonical == default_canonical_string();
   const std::string key = entry_key(factory, canonical);
   std::unique_lock lock(mutex_);
-  std::shared_ptr<Entry> entry = find_or_queue(factory, config, key, is_default);
+  std::shared_ptr<Entry> entry = find_or_queue(factory, config, key, is_default, requester);
   bool launched_now = false;
   if (entry->status == api::ModelState::Status::queued) {
     // A request needs a queued default: build it now rather than after the queue.
@@ -332,9 +349,20 @@ std::size_t TableStore::accounted_bytes_locked() const {
   return bytes;
 }
 
-std::size_t TableStore::estimate_bytes_locked(const ModelFactory& factory) const {
-  // Models do not announce their table sizes before a build; the largest tables of this model
-  // built so far (its default, pinned and built at start, at the least) stand in for them.
+std::size_t TableStore::estimate_bytes_locked(const ModelFactory& factory,
+                                              const ModelConfig& config) const {
+  // The model's own estimate from the configuration (cheap: arithmetic on the resolution and
+  // the wavelength count; the configuration was validated by model()).
+  if (factory.estimate_table_bytes != nullptr) {
+    try {
+      return factory.estimate_table_bytes(config);
+    } catch (const std::invalid_argument& e) {
+      // The build will refuse the configuration the same way; count what was seen so far.
+      spdlog::warn("tables: no estimate for {}: {}", factory.descriptor->id, e.what());
+    }
+  }
+  // Without one, the largest tables of this model built so far (its default, pinned and built
+  // at start, at the least) stand in.
   std::size_t bytes = 0;
   for (const auto& [key, e] : entries_) {
     if (e->factory == &factory)
@@ -396,6 +424,7 @@ void TableStore::build(Entry& entry) const {
   context.cancel = &stopping_;
   context.cache = options_.cache ? &cache : nullptr;
   context.threads = options_.threads_per_build;
+  context.sun_state_memory_bytes = options_.sun_state_memory_bytes;
   spdlog::info("tables: building {} ({})", id, entry.key);
   const auto start = std::chrono::steady_clock::now();
   std::shared_ptr<const SkyModel> model;
@@ -428,8 +457,15 @@ void TableStore::build(Entry& entry) const {
     evict_locked();
   }
   if (error.empty()) {
+    const std::size_t bytes = entry.model->table_bytes();
     spdlog::info("tables: {} ready in {:.3f} s ({}, {} bytes)", id, seconds,
-                 from_cache ? "from cache" : "built", entry.model->table_bytes());
+                 from_cache ? "from cache" : "built", bytes);
+    // The budget admitted the build on its estimate and counts the real bytes from now on; an
+    // estimate well below them is a model bug worth seeing.
+    if (static_cast<double>(bytes) > 1.1 * static_cast<double>(entry.estimated_bytes)) {
+      spdlog::warn("tables: {} holds {} bytes, above its estimate of {} bytes", entry.key, bytes,
+                   entry.estimated_bytes);
+    }
     if (observer_) observer_(id, seconds, from_cache);
   } else {
     spdlog::error("tables: {} failed after {:.3f} s: {}", id, seconds, error);

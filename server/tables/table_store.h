@@ -8,12 +8,17 @@
 // the build goes on. The default configuration of every model is pinned; other configurations
 // are evicted least-recently-used beyond `capacity` ready entries, and at most `capacity`
 // builds may be pending (503 beyond).
-// Memory: the tables of every entry (ready: their table_bytes(); pending: an estimate, the
-// largest tables of that model seen so far) count against `memory_budget_bytes`. Before a
-// requested build starts, least-recently-used unpinned entries are evicted to make room for
-// its estimate; if it still does not fit, the request gets 503 (parameter "table_memory") and
-// nothing is built. Pinned entries (the defaults) count but are never evicted. A finished build
-// larger than its estimate evicts further.
+// Memory: the tables of every entry (ready: their table_bytes(); pending: the estimate its
+// model's factory computes from the configuration, ModelFactory::estimate_table_bytes, or for
+// a factory without one the largest tables of that model seen so far) count against
+// `memory_budget_bytes`. Before a requested build starts, least-recently-used unpinned entries
+// are evicted to make room for its estimate; if it still does not fit, the request gets 503
+// (parameter "table_memory") and nothing is built. Pinned entries (the defaults) count but are
+// never evicted. A finished build counts its real bytes; one larger than its estimate evicts
+// further (and is logged). Per-sun states are bounded by the models' own caches, in bytes per
+// configuration (`sun_state_memory_bytes`, passed to the builds).
+// Rate: a requester (the HTTP client's address) may trigger at most `build_rate` builds per
+// `build_rate_window` (server/tables/build_rate_limiter.h); beyond, 429 naming "build_rate".
 // Per-sun states of models with per-sun precomputation are prepared on a helper thread: a
 // request waits up to build_wait for it, then gets 503 while the preparation goes on (the
 // model's own per-sun cache keeps the result for the next request); at most `capacity`
@@ -35,6 +40,7 @@
 #include <vector>
 
 #include "api/service/model_provider.h"
+#include "server/tables/build_rate_limiter.h"
 
 namespace clearsky::server {
 
@@ -45,6 +51,10 @@ class TableStore final : public api::ModelProvider {
     std::size_t memory_budget_bytes = std::size_t{1} << 30;  // tables of all entries
     std::chrono::milliseconds build_wait{2000};
     int retry_after_s = 5;
+    // Per built configuration of Haber and Nishita96 (PrecomputeContext).
+    std::size_t sun_state_memory_bytes = PrecomputeContext::kDefaultSunStateMemoryBytes;
+    std::size_t build_rate = 30;  // builds one requester may trigger per window; 0: no limit
+    std::chrono::seconds build_rate_window{60};
     unsigned builder_threads = 1;       // concurrent builds
     unsigned threads_per_build = 0;     // 0: all cores
     const TableCache* cache = nullptr;  // may be null
@@ -59,8 +69,9 @@ class TableStore final : public api::ModelProvider {
   TableStore& operator=(const TableStore&) = delete;
 
   std::span<const ModelFactory> factories() const override { return factories_; }
-  std::shared_ptr<const SkyModel> model(const ModelFactory& factory,
-                                        const ModelConfig& config) const override;
+  using api::ModelProvider::model;
+  std::shared_ptr<const SkyModel> model(const ModelFactory& factory, const ModelConfig& config,
+                                        const api::ModelRequester& requester) const override;
   api::ModelState default_state(const ModelFactory& factory) const override;
   // The model's per-sun state; per-sun models share and bound them in their own cache.
   std::shared_ptr<const SunState> sun_state(const std::shared_ptr<const SkyModel>& model,
@@ -81,8 +92,10 @@ class TableStore final : public api::ModelProvider {
 
  private:
   struct Entry;
+  // Caller holds mutex_. requester: who triggers a build of an unpinned entry (rate-limited).
   std::shared_ptr<Entry> find_or_queue(const ModelFactory& factory, const ModelConfig& config,
-                                       const std::string& key, bool pinned) const;
+                                       const std::string& key, bool pinned,
+                                       const api::ModelRequester& requester = {}) const;
   void builder_loop();
   // Starts entry's build on its own thread (caller holds mutex_).
   void launch_locked(const std::shared_ptr<Entry>& entry) const;
@@ -92,7 +105,7 @@ class TableStore final : public api::ModelProvider {
   // plus `extra` exceed the budget; whether they now fit.
   bool make_room_locked(std::size_t extra, const Entry* keep) const;
   std::size_t accounted_bytes_locked() const;
-  std::size_t estimate_bytes_locked(const ModelFactory& factory) const;
+  std::size_t estimate_bytes_locked(const ModelFactory& factory, const ModelConfig& config) const;
   struct SunPreparation;
 
   std::vector<ModelFactory> factories_;
@@ -103,6 +116,7 @@ class TableStore final : public api::ModelProvider {
   mutable std::map<std::string, std::shared_ptr<Entry>> entries_;
   mutable std::deque<std::shared_ptr<Entry>> queue_;
   mutable std::uint64_t clock_ = 0;
+  mutable BuildRateLimiter build_rate_;
   std::atomic<bool> stopping_{false};
   std::vector<std::thread> builders_;
   struct OnDemandBuild {

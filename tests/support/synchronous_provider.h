@@ -15,8 +15,9 @@ class SynchronousProvider final : public api::ModelProvider {
   explicit SynchronousProvider(std::vector<ModelFactory> factories)
       : factories_(std::move(factories)) {}
   std::span<const ModelFactory> factories() const override { return factories_; }
-  std::shared_ptr<const SkyModel> model(const ModelFactory& factory,
-                                        const ModelConfig& config) const override {
+  using api::ModelProvider::model;
+  std::shared_ptr<const SkyModel> model(const ModelFactory& factory, const ModelConfig& config,
+                                        const api::ModelRequester&) const override {
     const std::string key = factory.descriptor->id + "|" + config.canonical_string();
     std::lock_guard lock(mutex_);
     auto& slot = built_[key];

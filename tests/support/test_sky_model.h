@@ -93,8 +93,14 @@ inline std::shared_ptr<const SkyModel> create_test_sky(const ModelConfig& config
   return std::make_shared<const TestSky>(config);
 }
 
+// TestSky::table_bytes(), without building.
+inline std::size_t estimate_test_sky_bytes(const ModelConfig& config) {
+  validate_config(test_sky_descriptor(), config);
+  return 1234;
+}
+
 inline std::vector<ModelFactory> test_factories() {
-  return {ModelFactory{&test_sky_descriptor(), &create_test_sky}};
+  return {ModelFactory{&test_sky_descriptor(), &create_test_sky, &estimate_test_sky_bytes}};
 }
 
 }  // namespace clearsky::testing

@@ -317,7 +317,7 @@ TEST_F(Handlers, ModelRefusalsNameTheRequestParameter) {
     return d;
   }();
   clearsky::testing::SynchronousProvider wide_provider{
-      {ModelFactory{&wide, &clearsky::testing::create_test_sky}}};
+      {ModelFactory{&wide, &clearsky::testing::create_test_sky, nullptr}}};
   const ApiContext context{wide_provider, limits};
   const auto answer = [&](Q query) {
     try {

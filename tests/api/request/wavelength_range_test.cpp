@@ -28,8 +28,9 @@ ApiRequest get(const std::string& path, const NameValues& query) {
 class CountingProvider final : public ModelProvider {
  public:
   std::span<const ModelFactory> factories() const override { return inner_.factories(); }
-  std::shared_ptr<const SkyModel> model(const ModelFactory& factory,
-                                        const ModelConfig& config) const override {
+  using ModelProvider::model;
+  std::shared_ptr<const SkyModel> model(const ModelFactory& factory, const ModelConfig& config,
+                                        const ModelRequester&) const override {
     ++builds;
     return inner_.model(factory, config);
   }

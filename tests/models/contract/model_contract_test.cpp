@@ -255,6 +255,32 @@ TEST_P(ModelContract, BuildsWhatItDeclares) {
   for (std::size_t i = 0; i < m.wavelengths().size(); ++i) EXPECT_TRUE(m.answers_wavelength(i));
 }
 
+// The server admits a build against its table memory on the factory's estimate
+// (server/tables/table_store.h), so the estimate must be the built tables' size: within 10% on
+// two cheap configurations (the contract's, and 7 wavelengths), exactly 0 for a model without
+// tables; an invalid configuration is refused like the build refuses it.
+TEST_P(ModelContract, EstimatesItsTableBytesBeforeBuilding) {
+  ASSERT_NE(factory().estimate_table_bytes, nullptr) << declared().id;
+  ModelConfig seven = cheap_config(declared());
+  seven.wavelengths = WavelengthGrid::points({400.0, 440.0, 500.0, 550.0, 600.0, 650.0, 700.0});
+  const std::shared_ptr<const SkyModel> on_seven = factory().create(seven, {});
+  for (const auto& [config, built] :
+       {std::pair{cheap_config(declared()), &model()}, std::pair{seven, on_seven.get()}}) {
+    SCOPED_TRACE(config.canonical_string());
+    const std::size_t estimate = factory().estimate_table_bytes(config);
+    const std::size_t bytes = built->table_bytes();
+    if (bytes == 0) {
+      EXPECT_EQ(estimate, 0u);
+    } else {
+      EXPECT_NEAR(static_cast<double>(estimate), static_cast<double>(bytes),
+                  0.10 * static_cast<double>(bytes));
+    }
+  }
+  ModelConfig unknown = cheap_config(declared());
+  unknown.options["no_such_option"] = 1.0;
+  EXPECT_THROW(factory().estimate_table_bytes(unknown), std::invalid_argument);
+}
+
 TEST_P(ModelContract, DeclaredRefusalsHappen) {
   const SkyModel& m = model();
   const ModelCapabilities& c = m.descriptor().capabilities;

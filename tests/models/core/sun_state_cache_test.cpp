@@ -1,5 +1,5 @@
-// SunStateCache: single flight (N threads asking for the same key -> one build), LRU bound,
-// failed builds not cached; sun zenith buckets.
+// SunStateCache: single flight (N threads asking for the same key -> one build), LRU bounds in
+// count and in bytes, failed builds not cached; sun zenith buckets.
 #include "models/core/sun_state_cache.h"
 
 #include <gtest/gtest.h>
@@ -66,6 +66,48 @@ TEST(SunStateCache, KeepsAtMostCapacityEntriesDroppingTheLeastRecentlyUsed) {
   EXPECT_EQ(builds, 4);
   EXPECT_EQ(*a, 1);  // a holder keeps its state alive whatever the cache drops
   EXPECT_GE(cache.stats().evictions, 2u);
+}
+
+// A state that reports its size, like HaberDome and nishita96::SunTables.
+struct SizedState {
+  std::size_t bytes;
+  std::size_t memory_bytes() const { return bytes; }
+};
+
+TEST(SunStateCache, KeepsAtMostMaxBytesDroppingTheLeastRecentlyUsed) {
+  SunStateCache<SizedState> cache(100, 1000);  // the count bound is not the one that bites
+  int builds = 0;
+  const auto build = [&](std::size_t bytes) {
+    return [&builds, bytes] {
+      ++builds;
+      return std::make_shared<const SizedState>(SizedState{bytes});
+    };
+  };
+  cache.get_or_build("a", build(400));
+  cache.get_or_build("b", build(400));
+  EXPECT_EQ(cache.stats().bytes, 800u);
+  cache.get_or_build("a", build(400));  // a is now the most recent
+  cache.get_or_build("c", build(400));  // 1200 bytes: drops b, the least recently used
+  EXPECT_EQ(cache.size(), 2u);
+  EXPECT_EQ(cache.stats().bytes, 800u);
+  EXPECT_EQ(cache.stats().evictions, 1u);
+  EXPECT_EQ(builds, 3);
+  cache.get_or_build("a", build(400));
+  cache.get_or_build("c", build(400));
+  EXPECT_EQ(builds, 3);
+  cache.get_or_build("b", build(400));  // built again
+  EXPECT_EQ(builds, 4);
+  EXPECT_LE(cache.stats().bytes, cache.max_bytes());
+  // A state above the bound alone is kept (its requester uses it), everything else dropped.
+  const auto big = cache.get_or_build("big", build(5000));
+  EXPECT_EQ(cache.size(), 1u);
+  EXPECT_EQ(cache.stats().bytes, 5000u);
+  EXPECT_EQ(cache.get_or_build("big", build(5000)), big);
+  EXPECT_EQ(builds, 5);
+  // The next state drops it.
+  cache.get_or_build("d", build(100));
+  EXPECT_EQ(cache.size(), 1u);
+  EXPECT_EQ(cache.stats().bytes, 100u);
 }
 
 TEST(SunStateCache, AFailedBuildReachesItsWaitersAndIsNotCached) {

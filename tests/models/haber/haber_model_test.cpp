@@ -150,6 +150,24 @@ TEST(HaberModel, ConcurrentRequestsForOneSunBucketBuildOneState) {
   EXPECT_EQ(model->cache_stats().builds, 2u);
 }
 
+// The per-sun domes are bounded in bytes by the build's context (serve --sun-state-memory): with
+// room for one dome, a second bucket drops the first, and the byte count is that of one dome.
+TEST(HaberModel, PerSunDomesAreBoundedInBytesByTheContext) {
+  ModelConfig config = coarse_config();
+  config.options["sun_zenith_bucket_deg"] = 1.0;
+  PrecomputeContext context;
+  context.sun_state_memory_bytes = 1;
+  const auto model = HaberModel::create(config, context);
+  const auto first = model->prepare_sun({degrees_to_radians(30.0), 0.0});
+  const std::size_t dome_bytes = dynamic_cast<const HaberSunState&>(*first).dome().memory_bytes();
+  EXPECT_EQ(model->cache_stats().bytes, dome_bytes);
+  model->prepare_sun({degrees_to_radians(40.0), 0.0});
+  EXPECT_EQ(model->cache_stats().evictions, 1u);
+  EXPECT_EQ(model->cache_stats().bytes, dome_bytes);    // same grid: domes of one size
+  model->prepare_sun({degrees_to_radians(30.0), 0.0});  // dropped: built again
+  EXPECT_EQ(model->cache_stats().builds, 3u);
+}
+
 // Single scattering of the dome (one order, the study's grid) against direct integration along
 // the view ray at dome nodes: the grid sums one sample per shell with the transmittance at the
 // cell centre. Measured differences at 360, 501 and 712.5 nm: within 3% everywhere except

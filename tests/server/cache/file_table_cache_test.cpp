@@ -2,8 +2,11 @@
 #include "server/cache/file_table_cache.h"
 
 #include <gtest/gtest.h>
+#include <spdlog/sinks/ostream_sink.h>
+#include <spdlog/spdlog.h>
 
 #include <fstream>
+#include <sstream>
 
 #include "models/core/content_hash.h"
 #include "tests/support/temp_dir.h"
@@ -100,6 +103,56 @@ TEST_F(FileTableCacheTest, VersionOneFilesWithAnFnvChecksumAreRebuilt) {
 TEST_F(FileTableCacheTest, FileNamesAreTheFnvHashOfTheKey) {
   FileTableCache cache(dir);
   EXPECT_EQ(cache.path_of("bruneton-a9ee3c37742c94db"), dir / "2c0551424c6a90ba.table");
+}
+
+// What the default logger writes while the object lives (the server logs through it).
+class CapturedLog {
+ public:
+  CapturedLog() : previous_(spdlog::default_logger()) {
+    auto logger = std::make_shared<spdlog::logger>(
+        "captured", std::make_shared<spdlog::sinks::ostream_sink_mt>(text_));
+    logger->set_level(spdlog::level::info);
+    spdlog::set_default_logger(logger);
+  }
+  ~CapturedLog() { spdlog::set_default_logger(previous_); }
+  CapturedLog(const CapturedLog&) = delete;
+  CapturedLog& operator=(const CapturedLog&) = delete;
+  std::string text() const { return text_.str(); }
+
+ private:
+  std::shared_ptr<spdlog::logger> previous_;
+  std::ostringstream text_;
+};
+
+// A damaged file is rebuilt with a log line naming it and saying what is wrong (it used to be
+// a silent miss: the operator saw only a start that took the time of a build).
+TEST_F(FileTableCacheTest, DamagedFilesAreLoggedWithTheirReason) {
+  FileTableCache cache(dir);
+  const std::string key = "bruneton-a9ee3c37742c94db";
+  cache.store(key, std::string(1000, 'x'));
+  const auto path = cache.path_of(key);
+  const std::string good = read(path);
+  const std::pair<std::string, std::string> damages[] = {
+      {good.substr(0, good.size() - 100), "is truncated in its payload"},
+      {good.substr(0, 20), "is truncated in its key"},
+      {good.substr(0, 5), "is truncated before its magic"},
+      {"NOTATABLE" + good.substr(9), "does not start with the table cache magic"},
+      {good + "trailing", "has bytes after its payload"},
+  };
+  for (const auto& [content, reason] : damages) {
+    SCOPED_TRACE(reason);
+    write(path, content);
+    CapturedLog log;
+    EXPECT_FALSE(cache.load(key).has_value());
+    const std::string text = log.text();
+    EXPECT_NE(text.find(path.string() + " " + reason), std::string::npos) << text;
+    EXPECT_NE(text.find("rebuilding"), std::string::npos) << text;
+  }
+  // A missing file is an ordinary miss: nothing to say.
+  std::filesystem::remove(path);
+  CapturedLog log;
+  EXPECT_FALSE(cache.load(key).has_value());
+  EXPECT_EQ(log.text(), "");
 }
 
 TEST_F(FileTableCacheTest, ReportsHitsAndMisses) {

@@ -101,7 +101,7 @@ TEST(CliApiParity, PreethamOnTwoCapturesGivesTheSameRmseBothWays) {
   EXPECT_DOUBLE_EQ(run["rmse"].get<double>(), model["rmse"].get<double>());
   ASSERT_EQ(run["captures"].size(), 2u);
   for (std::size_t i = 0; i < 2; ++i) {
-    EXPECT_EQ(run["captures"][i]["time"], model["captures"][i]["time"]);
+    EXPECT_EQ(run["captures"][i]["time"].dump(), model["captures"][i]["time"].dump());
     EXPECT_DOUBLE_EQ(run["captures"][i]["rmse"].get<double>(),
                      model["captures"][i]["rmse"].get<double>());
     EXPECT_DOUBLE_EQ(run["captures"][i]["sun_azimuth"].get<double>(),

@@ -76,7 +76,7 @@ TEST(SunStateWait, AnswersServiceUnavailableWhilePreparingThenServes) {
   TableStore::Options options;
   options.build_wait = std::chrono::milliseconds(20);
   options.retry_after_s = 6;
-  TableStore store({ModelFactory{&slow_sun_descriptor(), &create_slow_sun}}, options);
+  TableStore store({ModelFactory{&slow_sun_descriptor(), &create_slow_sun, nullptr}}, options);
   const auto model = store.model(store.factories()[0], ModelConfig{});
   const SunPosition sun{0.5, 1.0};
   const int before = preparations();
