@@ -83,10 +83,13 @@ const ModelDescriptor& bruneton_descriptor() {
                .min_value = 1,
                .max_value = 10,
                .integer = true},
+              // At least 3 altitudes: with 2 (the ground and the top) the ground-irradiance
+              // table makes sky + direct irradiance 15 to 29% above the extraterrestrial
+              // irradiance (found by `clearsky stress`, docs/stability.md "Findings").
               {.name = "table_r_size",
                .description = "4D tables: number of altitudes (RES_R)",
                .default_value = 32,
-               .min_value = 2,
+               .min_value = 3,
                .max_value = 128,
                .integer = true},
               {.name = "table_mu_size",

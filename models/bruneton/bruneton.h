@@ -6,7 +6,7 @@
 // | parameter          | unit | default | range           | meaning                                                          |
 // |--------------------|------|---------|-----------------|------------------------------------------------------------------|
 // | scattering_orders  | -    | 4       | [1, 10]         | orders of scattering precomputed                                 |
-// | table_r_size       | -    | 32      | [2, 128]        | 4D tables: altitudes (RES_R)                                     |
+// | table_r_size       | -    | 32      | [3, 128]        | 4D tables: altitudes (RES_R)                                     |
 // | table_mu_size      | -    | 128     | [4, 512]        | 4D tables: view zenith cosines (RES_MU, even)                    |
 // | table_mu_s_size    | -    | 32      | [2, 128]        | 4D tables: sun zenith cosines (RES_MU_S)                         |
 // | table_nu_size      | -    | 8       | [2, 64]         | 4D tables: view-sun cosines (RES_NU)                             |
@@ -17,6 +17,9 @@
 // | albedo             | -    | grass   | [0, 1]          | ground albedo; grass: Feister and Grewe, per lambda (atmosphere) |
 // (atmosphere): the shared parameters of models/atmosphere/atmosphere_parameter_table.h. This
 // table is checked against the descriptor by tests/models/contract/model_contract_test.cpp.
+//
+// table_r_size starts at 3: with 2 altitudes (the ground and the top) the ground-irradiance table
+// put sky + direct irradiance 15 to 29% above the extraterrestrial irradiance (docs/stability.md).
 //
 // Limits: by default the tables hold mu_s >= -0.1975 (the 2008 code), so the sun is answered up
 // to 101.39 degrees zenith; max_sun_zenith_deg (up to 120) spreads the same sun texels over a

@@ -36,7 +36,8 @@ ModelDescriptor make_descriptor() {
           {
               atmosphere_parameter_spec("alpha"),
               atmosphere_parameter_spec("beta"),
-              atmosphere_parameter_spec("g"),
+              // |g| <= 0.9: a more peaked phase broke the energy bound (haber.h).
+              atmosphere_parameter_spec("g", -kMaxPhaseAsymmetry, kMaxPhaseAsymmetry),
               {.name = "azimuth_sectors",
                .description = "azimuth sectors n_phi (even); also sets ring width and shell "
                               "growth",

@@ -6,13 +6,18 @@
 // |-----------------------|------|---------|-----------------|----------------------------------------------------|
 // | alpha                 | -    | 0.8     | [0, 4]          | Angstrom exponent of the aerosols (atmosphere)     |
 // | beta                  | -    | 0.04    | [0, 2]          | aerosol optical depth at 1 um (atmosphere)         |
-// | g                     | -    | 0.7     | [-0.999, 0.999] | Cornette-Shanks asymmetry (atmosphere)             |
+// | g                     | -    | 0.7     | [-0.9, 0.9]     | Cornette-Shanks asymmetry (atmosphere)             |
 // | azimuth_sectors       | -    | 72      | [12, 144]       | n_phi (even); also sets ring width and shells      |
 // | layers                | -    | 50      | [5, 200]        | layers of equal Rayleigh mass up to 35 km          |
 // | shell_stride          | -    | 4       | [1, 16]         | multiple scattering gathered on every n-th shell   |
 // | scattering_orders     | -    | 4       | [1, 8]          | 1: single scattering only                          |
 // | sun_zenith_bucket_deg | deg  | 1       | [0, 5]          | per-sun states shared within this width (0: exact) |
 // | sun_state_cache_size  | -    | 96      | [1, 1024]       | per-sun states kept                                |
+//
+// The asymmetry g is declared within [-0.9, 0.9], narrower than the atmosphere's: at |g| = 0.999
+// sky + direct irradiance reached 1.64 (g = -0.999) and 1.40 (0.999) times the extraterrestrial
+// irradiance at 285.875 nm (sun zenith 30; found by `clearsky stress`, docs/stability.md), at
+// 0.9 they stay below it (0.70 and 0.66). A larger |g| is refused (InvalidInput naming g).
 #pragma once
 
 #include <memory>
@@ -23,6 +28,9 @@
 #include "models/haber/haber_tables.h"
 
 namespace clearsky::haber {
+
+// The largest |g| the model declares (see above).
+inline constexpr double kMaxPhaseAsymmetry = 0.9;
 
 const ModelDescriptor& model_descriptor();
 ModelFactory model_factory();

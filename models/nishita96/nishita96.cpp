@@ -88,7 +88,11 @@ ModelDescriptor make_descriptor() {
                .integer = true},
               atmosphere_parameter_spec("alpha"),
               atmosphere_parameter_spec("beta"),
-              atmosphere_parameter_spec("g"),
+              // |g| <= 0.8: the midpoint rule of the phase integration
+              // (nishita96_functions.h) diverges for a more peaked Cornette-Shanks phase (the
+              // integral over the sphere reaches 848 instead of 1 at g = 0.999; see
+              // nishita96.h and docs/stability.md "Findings").
+              atmosphere_parameter_spec("g", -kMaxPhaseAsymmetry, kMaxPhaseAsymmetry),
           },
       .capabilities =
           {
