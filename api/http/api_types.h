@@ -21,6 +21,7 @@
 
 namespace clearsky::api {
 
+class AnswerMemoryBudget;
 class EvaluationPool;
 class ImportPool;
 
@@ -90,6 +91,9 @@ struct ApiContext {
   int retry_after_s = 5;
   // Where handlers report what the client cannot see (a streamed image's unanswered pixels).
   std::function<void(const std::string& message)> warn = {};
+  // Bytes of answer buffers in flight, every worker together (a streamed skydome's band); null:
+  // unbounded. Thread-safe.
+  AnswerMemoryBudget* answer_memory = nullptr;
 };
 
 // The request's parameters: the query for GET; for POST, the JSON body's scalar members (the

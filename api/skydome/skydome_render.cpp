@@ -58,6 +58,13 @@ const ThreeWavelengthRgb& three_wavelength_method() {
   return method;
 }
 
+// Channels of the image, alpha included (the order is write()'s).
+std::size_t channel_count(const SkydomeRender::Settings& s) {
+  if (s.channels == "rgb") return 4;
+  if (s.channels == "luminance") return 2;
+  return s.m.wavelengths_nm.size() + 1;
+}
+
 }  // namespace
 
 std::string spectral_channel_name(double wavelength_nm) {
@@ -129,6 +136,16 @@ const std::string& SkydomeRender::model_id() const { return settings_->model_id;
 int SkydomeRender::width() const { return settings_->projection.width(); }
 int SkydomeRender::height() const { return settings_->projection.height(); }
 
+std::size_t SkydomeRender::band_bytes() const {
+  const Settings& s = *settings_;
+  const std::size_t line_samples =
+      static_cast<std::size_t>(s.projection.width()) * channel_count(s);
+  const std::size_t sample_bytes = s.half ? 2 : 4;
+  const std::size_t band_samples = static_cast<std::size_t>(kBandRows) * line_samples;
+  return band_samples * sizeof(float) + (s.half ? band_samples * sample_bytes : 0) +
+         line_samples * sample_bytes;
+}
+
 bool SkydomeRender::write(const Sink& sink, unsigned threads,
                           std::size_t* unanswered_pixels) const {
   const Settings& s = *settings_;
@@ -149,6 +166,8 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
   const std::size_t alpha_channel = names.size();
   names.push_back("A");
   const std::size_t n_channels = names.size();
+  if (n_channels != channel_count(s))
+    throw std::logic_error("skydome: channel_count() differs from the channels written");
   const Imf::PixelType type = s.half ? Imf::HALF : Imf::FLOAT;
   const std::size_t sample_bytes = s.half ? 2 : 4;
 

@@ -44,6 +44,10 @@ class SkydomeRender {
   const std::string& model_id() const;
   int width() const;
   int height() const;
+  // The bytes write() holds for the whole answer, however slowly the sink takes them: its band
+  // of rows (float, plus half when the pixels are half) and one scan line of OpenEXR's line
+  // buffer. What the server's answer memory budget reserves (api/http/answer_memory_budget.h).
+  std::size_t band_bytes() const;
 
  private:
   std::shared_ptr<const Settings> settings_;

@@ -25,6 +25,7 @@
 // | build_wait_ms        | ms    | 2000            | how long a request waits for a table or per-sun build before 503                      |
 // | retry_after_s        | s     | 5               | Retry-After of a 503                                                                  |
 // | table_memory_bytes   | byte  | 1 GiB           | tables kept or being built, defaults included (503 beyond)                            |
+// | answer_memory_bytes  | byte  | 256 MiB         | answer buffers in flight, every worker together (a skydome's band; 503 beyond)        |
 // | builder_threads      |       | 1               | concurrent builds of the tables queued at start                                       |
 // | token                |       | (none)          | bearer token of the write endpoints; none: CLEARSKY_TOKEN, else writes off            |
 // | models               |       | (all)           | serve only these model ids                                                            |
@@ -69,6 +70,7 @@ struct ServerConfig {
   int max_skydome_size = 4096;
   std::size_t table_capacity = 16;
   std::size_t table_memory_bytes = std::size_t{1} << 30;
+  std::size_t answer_memory_bytes = std::size_t{256} << 20;
   int build_wait_ms = 2000;
   int retry_after_s = 5;
   unsigned builder_threads = 1;
