@@ -416,7 +416,7 @@ Json operations() {
     "operationId": "getSkydome",
     "tags": ["sky"],
     "summary": "An OpenEXR image of the sky",
-    "description": "The whole sky as an image: fisheye (size x size, equidistant, North up, East left), latlong (size x size/2) or cubemap (size x 6 size), OpenEXR envmap conventions. Everything is checked before the first byte; then the image is computed in bands of 16 rows and streamed (chunked).",
+    "description": "The whole sky as an image: fisheye (size x size, equidistant, North up, East left), latlong (size x size/2) or cubemap (size x 6 size), OpenEXR envmap conventions. Everything is checked before the first byte; then the image is computed in bands of rows (16, fewer for wide images with many channels: at most about 2 MiB of samples) and streamed (chunked).",
     "parameters": [
       {"name": "projection", "in": "query", "required": false, "description": "Image projection.", "schema": {"type": "string", "enum": ["fisheye", "latlong", "cubemap"], "default": "fisheye"}},
       {"name": "size", "in": "query", "required": false, "description": "", "schema": {"type": "integer", "minimum": 8, "default": 512}},

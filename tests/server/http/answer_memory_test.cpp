@@ -1,7 +1,7 @@
 // The answer memory budget against the real `clearsky serve` (docs/threat-model.md "exhaust
 // memory with answers or requests", api/http/answer_memory_budget.h): 60 slow readers of
-// spectral skydomes, with a budget of 16 MiB (room for 5 of their bands of 2.7 MB, 60 would hold
-// 160 MB): the process's resident peak stays under what it held before plus the budget and a
+// spectral skydomes, with a budget of 16 MiB (room for 7 of their bands of 2.4 MB, 60 would hold
+// 140 MB): the process's resident peak stays under what it held before plus the budget and a
 // margin, /healthz answers within 1 s meanwhile and afterwards, a skydome asked for meanwhile is
 // refused with 503 + Retry-After naming answer_memory, and once the readers leave their bands
 // come back (GET /metrics) and a skydome is answered again.
