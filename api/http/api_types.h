@@ -22,6 +22,7 @@
 
 namespace clearsky::api {
 
+class AnswerMemoryBudget;
 class EvaluationPool;
 class ImportPool;
 
@@ -103,6 +104,9 @@ struct ApiContext {
   // True once the server drains before it stops (GET /readyz answers 503 draining); empty:
   // never.
   std::function<bool()> draining = {};
+  // Bytes of answer buffers in flight, every worker together (a streamed skydome's band); null:
+  // unbounded. Thread-safe.
+  AnswerMemoryBudget* answer_memory = nullptr;
 };
 
 // The request's parameters: the query for GET; for POST, the JSON body's scalar members (the

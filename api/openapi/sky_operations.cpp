@@ -259,6 +259,16 @@ void add_sky_errors(Json& operation, bool get) {
   r["503"]["content"]["application/json"]["example"] = parse(
       R"json({"error": {"code": "model_not_ready", "message": "model bruneton: its tables for this configuration are being built (in progress, 0% done)", "parameter": "model"}})json");
   if (get && operation["operationId"] == "getSkydome") {
+    // The answer memory budget (api/http/answer_memory_budget.h, server/README.md).
+    r["503"]["description"] =
+        "The tables this request needs are being built (code model_not_ready), or the image's "
+        "band of rows does not fit in the answer memory budget that images being sent hold "
+        "(--answer-memory; code busy, error.parameter answer_memory): retry after Retry-After "
+        "seconds.";
+    r["413"]["description"] =
+        "Above a configured limit: wavelengths, image size, or an image whose band of rows alone "
+        "is above the answer memory budget (--answer-memory; error.parameter answer_memory) "
+        "(code too_large); error.parameter names it.";
     // Streamed: no tag, since the body is not known before it is sent.
     r["200"]["headers"]["Cache-Control"] = ref("headers", "Cache-Control");
   } else if (get) {
@@ -414,7 +424,7 @@ Json operations() {
     "operationId": "getSkydome",
     "tags": ["sky"],
     "summary": "An OpenEXR image of the sky",
-    "description": "The whole sky as an image: fisheye (size x size, equidistant, North up, East left), latlong (size x size/2) or cubemap (size x 6 size), OpenEXR envmap conventions. Everything is checked before the first byte; then the image is computed in bands of 16 rows and streamed (chunked).",
+    "description": "The whole sky as an image: fisheye (size x size, equidistant, North up, East left), latlong (size x size/2) or cubemap (size x 6 size), OpenEXR envmap conventions. Everything is checked before the first byte; then the image is computed in bands of rows (16, fewer for wide images with many channels: at most about 2 MiB of samples) and streamed (chunked).",
     "parameters": [
       {"name": "projection", "in": "query", "required": false, "description": "Image projection.", "schema": {"type": "string", "enum": ["fisheye", "latlong", "cubemap"], "default": "fisheye"}},
       {"name": "size", "in": "query", "required": false, "description": "", "schema": {"type": "integer", "minimum": 8, "default": 512}},

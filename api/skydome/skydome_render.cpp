@@ -10,6 +10,7 @@
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "api/colour/srgb_gamut.h"
@@ -37,7 +38,13 @@ struct SkydomeRender::Settings {
 
 namespace {
 
-constexpr int kBandRows = 16;
+// A band is at most 16 rows, and fewer when its float samples would be above 2 MiB (wide images
+// with many channels: a 4096-pixel spectral row of 41 channels is 672 kB, 3 rows a band), since
+// a band is what a slowly read answer holds (docs/deployment.md "Memory"). Each row is computed in
+// pieces of 256 pixels over the cores, so a band of a few wide rows keeps every core busy.
+constexpr int kMaxBandRows = 16;
+constexpr std::size_t kBandTargetBytes = std::size_t{2} << 20;
+constexpr int kPiecePixels = 256;
 
 // The image is streamed, its header sent before any pixel: it states the rule, since it cannot
 // count the clipped pixels (GET/POST /v1/rgb flag each sample).
@@ -56,6 +63,21 @@ void write_rgb(float* pixel, const LinearSrgb& colour) {
 const ThreeWavelengthRgb& three_wavelength_method() {
   static const ThreeWavelengthRgb method;
   return method;
+}
+
+// Channels of the image, alpha included (the order is write()'s).
+std::size_t channel_count(const SkydomeRender::Settings& s) {
+  if (s.channels == "rgb") return 4;
+  if (s.channels == "luminance") return 2;
+  return s.m.wavelengths_nm.size() + 1;
+}
+
+// Rows of a band (kBandTargetBytes).
+int band_rows(const SkydomeRender::Settings& s) {
+  const std::size_t row_bytes =
+      static_cast<std::size_t>(s.projection.width()) * channel_count(s) * sizeof(float);
+  return static_cast<int>(std::clamp<std::size_t>(kBandTargetBytes / row_bytes, 1,
+                                                  static_cast<std::size_t>(kMaxBandRows)));
 }
 
 }  // namespace
@@ -130,6 +152,18 @@ const std::string& SkydomeRender::model_id() const { return settings_->model_id;
 int SkydomeRender::width() const { return settings_->projection.width(); }
 int SkydomeRender::height() const { return settings_->projection.height(); }
 
+std::size_t SkydomeRender::band_bytes() const {
+  const Settings& s = *settings_;
+  const std::size_t line_samples =
+      static_cast<std::size_t>(s.projection.width()) * channel_count(s);
+  const std::size_t sample_bytes = s.half ? 2 : 4;
+  const std::size_t band_samples = static_cast<std::size_t>(band_rows(s)) * line_samples;
+  // Besides the band: the scan line in OpenEXR's line buffer, and the scan line the sink is
+  // sending (the HTTP layer copies each write into a chunk while the client reads it).
+  return band_samples * sizeof(float) + (s.half ? band_samples * sample_bytes : 0) +
+         2 * line_samples * sample_bytes;
+}
+
 bool SkydomeRender::write(const Sink& sink, unsigned threads,
                           std::size_t* unanswered_pixels) const {
   const Settings& s = *settings_;
@@ -150,6 +184,8 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
   const std::size_t alpha_channel = names.size();
   names.push_back("A");
   const std::size_t n_channels = names.size();
+  if (n_channels != channel_count(s))
+    throw std::logic_error("skydome: channel_count() differs from the channels written");
   const Imf::PixelType type = s.half ? Imf::HALF : Imf::FLOAT;
   const std::size_t sample_bytes = s.half ? 2 : 4;
 
@@ -186,24 +222,29 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
     stream.start(uncompressed_chunk_offsets(stream.tellp(), height, line_bytes));
 
     // One band of rows: channel-interleaved float, then converted to half when asked.
+    const int rows_per_band = band_rows(s);
     const std::size_t band_pixels =
-        static_cast<std::size_t>(kBandRows) * static_cast<std::size_t>(width);
+        static_cast<std::size_t>(rows_per_band) * static_cast<std::size_t>(width);
     std::vector<float> band_float(band_pixels * n_channels);
     std::vector<half> band_half(s.half ? band_pixels * n_channels : 0);
     const SkyModel& model = *s.m.model;
     const ThreeWavelengthRgb& three = three_wavelength_method();
     std::atomic<int> failed_pixels{0};
 
-    for (int y0 = 0; y0 < height; y0 += kBandRows) {
-      const int rows = std::min(kBandRows, height - y0);
+    const std::size_t pieces = static_cast<std::size_t>((width + kPiecePixels - 1) / kPiecePixels);
+    for (int y0 = 0; y0 < height; y0 += rows_per_band) {
+      const int rows = std::min(rows_per_band, height - y0);
       parallel_for(
-          static_cast<std::size_t>(rows),
-          [&](std::size_t r) {
+          static_cast<std::size_t>(rows) * pieces,
+          [&](std::size_t task) {
+            const std::size_t r = task / pieces;
             const int y = y0 + static_cast<int>(r);
+            const int x_begin = static_cast<int>(task % pieces) * kPiecePixels;
+            const int x_end = std::min(width, x_begin + kPiecePixels);
             std::vector<ViewDirection> views;
             std::vector<int> columns;
-            views.reserve(static_cast<std::size_t>(width));
-            for (int x = 0; x < width; ++x) {
+            views.reserve(static_cast<std::size_t>(x_end - x_begin));
+            for (int x = x_begin; x < x_end; ++x) {
               SkyDirection d;
               if (s.projection.direction(x, y, d)) {
                 views.push_back(d);
@@ -211,7 +252,8 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
               }
             }
             float* row = band_float.data() + r * static_cast<std::size_t>(width) * n_channels;
-            std::fill(row, row + static_cast<std::size_t>(width) * n_channels, 0.0f);
+            std::fill(row + static_cast<std::size_t>(x_begin) * n_channels,
+                      row + static_cast<std::size_t>(x_end) * n_channels, 0.0f);
             if (views.empty()) return;
             SpectralBatch batch;
             model.sky_radiance(*s.sun_state, s.viewpoint, views, batch);

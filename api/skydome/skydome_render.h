@@ -1,5 +1,6 @@
 // GET /v1/skydome: an OpenEXR image of the sky computed band by band in parallel and streamed
-// as it is computed, with memory bounded by one band (independent of the image size).
+// as it is computed, with memory bounded by one band (at most 16 rows and, when more than one
+// row, about 2 MiB of float samples; independent of the image height).
 //
 // | parameter  | values                         | default  | meaning |
 // |------------|--------------------------------|----------|-----------------------------------------|
@@ -44,6 +45,10 @@ class SkydomeRender {
   const std::string& model_id() const;
   int width() const;
   int height() const;
+  // The bytes write() holds for the whole answer, however slowly the sink takes them: its band
+  // of rows (float, plus half when the pixels are half), one scan line in OpenEXR's line buffer
+  // and one being sent (a chunk the HTTP layer copies). What the server's answer memory budget reserves (api/http/answer_memory_budget.h).
+  std::size_t band_bytes() const;
 
  private:
   std::shared_ptr<const Settings> settings_;

@@ -354,6 +354,12 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command
+      ->add_option("--answer-memory", config->answer_memory_bytes,
+                   "Bytes of answer buffers in flight, every worker together (a streamed "
+                   "skydome's band; 503 beyond)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command
       ->add_option("--build-wait-ms", config->build_wait_ms,
                    "Wait for a table build before 503, ms")
       ->capture_default_str();

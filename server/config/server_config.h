@@ -29,6 +29,7 @@
 // | sun_state_memory_bytes | byte | 256 MiB        | per-sun states kept per configuration of Haber and Nishita96 (LRU beyond)             |
 // | build_rate           |       | 30              | table builds one client address may trigger per build_rate_window_s (429 beyond); 0: off |
 // | build_rate_window_s  | s     | 60              | the window of build_rate                                                              |
+// | answer_memory_bytes  | byte  | 256 MiB         | answer buffers in flight, every worker together (a skydome's band; 503 beyond)        |
 // | builder_threads      |       | 1               | concurrent builds of the tables queued at start                                       |
 // | token                |       | (none)          | bearer token of the write endpoints; none: CLEARSKY_TOKEN, else writes off            |
 // | token_file           | path  | (none)          | file holding the token (systemd LoadCredential=); instead of token                    |
@@ -89,6 +90,7 @@ struct ServerConfig {
   std::size_t sun_state_memory_bytes = std::size_t{256} << 20;
   std::size_t build_rate = 30;
   int build_rate_window_s = 60;
+  std::size_t answer_memory_bytes = std::size_t{256} << 20;
   int build_wait_ms = 2000;
   int retry_after_s = 5;
   unsigned builder_threads = 1;

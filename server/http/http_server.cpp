@@ -216,13 +216,19 @@ HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& 
       tables_(tables),
       metrics_(metrics),
       cors_(config.cors_origins),
+      answer_memory_(config.answer_memory_bytes),
       context_{tables,
                {config.max_views, config.max_wavelengths, config.max_skydome_size},
                nullptr,
-               [this] { return metrics_.scrape(tables_.table_bytes()); },
+               [this] {
+                 metrics_.observe_answer_memory(answer_memory_.reserved_bytes(),
+                                                answer_memory_.limit_bytes());
+                 return metrics_.scrape(tables_.table_bytes());
+               },
                config.retry_after_s,
                [](const std::string& message) { spdlog::warn("{}", message); },
-               [this] { return http_->draining(); }},
+               [this] { return http_->draining(); },
+               &answer_memory_},
       http_(std::make_unique<ConnectionServer>(connection_limits(config), worker_pool(config))) {
   // The library's one limit is the largest body any route takes (an upload); the other routes
   // apply payload_max_bytes themselves (request_body.h and the pre-routing handler).

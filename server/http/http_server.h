@@ -19,6 +19,7 @@
 #include <memory>
 #include <string>
 
+#include "api/http/answer_memory_budget.h"
 #include "api/http/api_types.h"
 #include "api/http/cors.h"
 #include "server/auth/write_auth.h"
@@ -76,6 +77,8 @@ class HttpServer {
   Metrics& metrics_;
   api::CorsPolicy cors_;
   api::DataServices data_;
+  // Before context_, which points to it.
+  api::AnswerMemoryBudget answer_memory_;
   api::ApiContext context_;
   WriteAuthorizer no_token_{std::nullopt};
   const WriteAuthorizer* auth_ = &no_token_;

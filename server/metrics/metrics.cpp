@@ -27,7 +27,11 @@ Metrics::Metrics()
           &prometheus::BuildGauge()
                .Name("clearsky_table_build_seconds")
                .Help("Duration of the last table build or cache load by model and source")
-               .Register(*registry_)) {}
+               .Register(*registry_)),
+      answer_memory_(&prometheus::BuildGauge()
+                          .Name("clearsky_answer_memory_bytes")
+                          .Help("Answer buffers in flight (reserved) and their budget (limit)")
+                          .Register(*registry_)) {}
 
 void Metrics::observe_request(const std::string& endpoint, const std::string& model, int status,
                               double seconds) {
@@ -62,6 +66,11 @@ void Metrics::observe_cache_lookup(bool hit) {
 
 void Metrics::observe_build(const std::string& model, double seconds, bool from_cache) {
   build_seconds_->Add({{"model", model}, {"source", from_cache ? "cache" : "built"}}).Set(seconds);
+}
+
+void Metrics::observe_answer_memory(std::size_t reserved_bytes, std::size_t limit_bytes) {
+  answer_memory_->Add({{"state", "reserved"}}).Set(static_cast<double>(reserved_bytes));
+  answer_memory_->Add({{"state", "limit"}}).Set(static_cast<double>(limit_bytes));
 }
 
 std::string Metrics::scrape(const std::map<std::string, std::size_t>& table_bytes) {

@@ -4,6 +4,8 @@
 //  - clearsky_table_bytes{model}: memory of the ready tables (refreshed at each scrape)
 //  - clearsky_table_cache_lookups_total{result="hit"|"miss"}: disk table cache
 //  - clearsky_table_build_seconds{model, source}: last build / cache-load time
+//  - clearsky_answer_memory_bytes{state="reserved"|"limit"}: answer buffers in flight and their
+//    budget (api/http/answer_memory_budget.h; refreshed at each scrape)
 // Endpoint labels are the fixed route paths ("other" for anything else), so the label set
 // stays bounded. Thread-safe.
 #pragma once
@@ -28,6 +30,7 @@ class Metrics {
                        double seconds);
   void observe_cache_lookup(bool hit);
   void observe_build(const std::string& model, double seconds, bool from_cache);
+  void observe_answer_memory(std::size_t reserved_bytes, std::size_t limit_bytes);
   // The text exposition, with the table memory gauges set from table_bytes first.
   std::string scrape(const std::map<std::string, std::size_t>& table_bytes);
 
@@ -38,6 +41,7 @@ class Metrics {
   prometheus::Family<prometheus::Gauge>* table_bytes_;
   prometheus::Family<prometheus::Counter>* cache_lookups_;
   prometheus::Family<prometheus::Gauge>* build_seconds_;
+  prometheus::Family<prometheus::Gauge>* answer_memory_;
 
   // The series of each (endpoint, model, status) seen so far: prometheus-cpp's Family::Add
   // builds and compares a label map on every call, which cost more than the rest of a cheap
