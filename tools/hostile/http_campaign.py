@@ -34,46 +34,9 @@ import tempfile
 import time
 import urllib.parse
 
+from serve_process import start_server, status_kib
+
 TOKEN = "campaign-token"
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-def start_server(binary, workdir, models):
-    port = free_port()
-    log = open(os.path.join(workdir, "server.log"), "ab")
-    process = subprocess.Popen(
-        [binary, "serve", "--port", str(port), "--db", os.path.join(workdir, "db.sqlite"),
-         "--cache-dir", os.path.join(workdir, "cache"), "--models", models, "--token", TOKEN],
-        stdout=log, stderr=subprocess.STDOUT)
-    deadline = time.time() + 120
-    while time.time() < deadline:
-        if process.poll() is not None:
-            raise RuntimeError("the server exited at start (see %s/server.log)" % workdir)
-        try:
-            c = http.client.HTTPConnection("127.0.0.1", port, timeout=2)
-            c.request("GET", "/readyz")
-            if c.getresponse().status == 200:
-                return process, port
-        except OSError:
-            pass
-        time.sleep(0.2)
-    raise RuntimeError("the server did not become ready")
-
-
-def memory_kib(pid, field):
-    try:
-        with open("/proc/%d/status" % pid) as f:
-            for line in f:
-                if line.startswith(field + ":"):
-                    return int(line.split()[1])
-    except OSError:
-        pass
-    return 0
 
 
 def resolve(document, node):
@@ -323,30 +286,30 @@ def main():
 
     rng = random.Random(args.seed)
     with tempfile.TemporaryDirectory(prefix="clearsky-campaign-") as workdir:
-        process, port = start_server(args.binary, workdir, args.models)
+        process, port = start_server(args.binary, workdir, args.models, ["--token", TOKEN])
         try:
             c = http.client.HTTPConnection("127.0.0.1", port, timeout=10)
             c.request("GET", "/openapi.json")
             document = json.loads(c.getresponse().read())
             campaign = Campaign(document, port, rng, args.hang_s)
-            start_rss = memory_kib(process.pid, "VmRSS")
+            start_rss = status_kib(process.pid, "VmRSS")
             started = time.time()
             crashes = []
             peak_kib = 0
             for _ in range(args.requests):
                 campaign.one()
                 if campaign.requests % 50 == 0:
-                    peak_kib = max(peak_kib, memory_kib(process.pid, "VmHWM"))
+                    peak_kib = max(peak_kib, status_kib(process.pid, "VmHWM"))
                 if process.poll() is not None:
                     # A crash is a finding; the campaign goes on against a restarted server.
                     crashes.append({"after_request": campaign.requests,
                                     "exit_code": process.returncode,
                                     "last": repr(campaign.last)[:300]})
-                    process, port = start_server(args.binary, workdir, args.models)
+                    process, port = start_server(args.binary, workdir, args.models, ["--token", TOKEN])
                     campaign.port = port
             elapsed = time.time() - started
             health = healthz_seconds(port)
-            peak_kib = max(peak_kib, memory_kib(process.pid, "VmHWM"))
+            peak_kib = max(peak_kib, status_kib(process.pid, "VmHWM"))
             report = {
                 "requests": campaign.requests,
                 "seconds": round(elapsed, 1),
@@ -355,7 +318,7 @@ def main():
                 "healthz_after_s": health,
                 "resident_start_mib": round(start_rss / 1024, 1),
                 "resident_peak_mib": round(peak_kib / 1024, 1),
-                "resident_end_mib": round(memory_kib(process.pid, "VmRSS") / 1024, 1),
+                "resident_end_mib": round(status_kib(process.pid, "VmRSS") / 1024, 1),
                 "findings": {k: len(v) for k, v in campaign.findings.items()},
                 "unnamed_errors": {"%s %s %s" % k: v for k, v in campaign.unnamed.most_common()},
                 "examples": {k: [repr(x)[:400] for x in v[:3]]

@@ -19,56 +19,15 @@ environment for it (e.g. MALLOC_ARENA_MAX=8 to compare) comes from the caller's 
 import argparse
 import http.client
 import json
-import os
 import random
 import signal
-import socket
 import subprocess
 import sys
 import tempfile
 import threading
 import time
 
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-def status_kib(pid, field):
-    try:
-        with open("/proc/%d/status" % pid) as f:
-            for line in f:
-                if line.startswith(field + ":"):
-                    return int(line.split()[1])
-    except OSError:
-        pass
-    return 0
-
-
-def start_server(binary, workdir, models, threads):
-    port = free_port()
-    log = open(os.path.join(workdir, "server.log"), "ab")
-    process = subprocess.Popen(
-        [binary, "serve", "--port", str(port), "--db", os.path.join(workdir, "db.sqlite"),
-         "--cache-dir", os.path.join(workdir, "cache"), "--models", models,
-         "--prebuild-three", "false", "--threads", str(threads)],
-        stdout=log, stderr=subprocess.STDOUT)
-    deadline = time.time() + 120
-    while time.time() < deadline:
-        if process.poll() is not None:
-            raise RuntimeError("the server exited at start (see %s/server.log)" % workdir)
-        try:
-            c = http.client.HTTPConnection("127.0.0.1", port, timeout=2)
-            c.request("GET", "/readyz")
-            if c.getresponse().status == 200:
-                return process, port
-        except OSError:
-            pass
-        time.sleep(0.2)
-    process.kill()
-    raise RuntimeError("the server was not ready within 120 s")
+from serve_process import start_server, status_kib
 
 
 def one_request(rng, port, max_size, timeout_s):
@@ -112,7 +71,8 @@ def main():
     args = parser.parse_args()
 
     with tempfile.TemporaryDirectory(prefix="clearsky-memory-") as workdir:
-        process, port = start_server(args.binary, workdir, args.models, args.threads)
+        process, port = start_server(args.binary, workdir, args.models,
+                                         ["--prebuild-three", "false", "--threads", str(args.threads)])
         try:
             start_kib = status_kib(process.pid, "VmRSS")
             statuses = {}

@@ -1,0 +1,52 @@
+"""`clearsky serve` as a child process for the hostile tools (docs/threat-model.md): a free
+loopback port, the server started on it with a database and cache in a work folder, ready once
+/readyz answers 200; and the process's memory figures from /proc."""
+
+import http.client
+import os
+import socket
+import subprocess
+import time
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def start_server(binary, workdir, models, extra=()):
+    """Starts `binary serve` on a free port; returns (process, port) once it is ready (120 s at
+    most). Its output goes to workdir/server.log."""
+    port = free_port()
+    log = open(os.path.join(workdir, "server.log"), "ab")
+    process = subprocess.Popen(
+        [binary, "serve", "--port", str(port), "--db", os.path.join(workdir, "db.sqlite"),
+         "--cache-dir", os.path.join(workdir, "cache"), "--models", models, *extra],
+        stdout=log, stderr=subprocess.STDOUT)
+    deadline = time.time() + 120
+    while time.time() < deadline:
+        if process.poll() is not None:
+            raise RuntimeError("the server exited at start (see %s/server.log)" % workdir)
+        try:
+            c = http.client.HTTPConnection("127.0.0.1", port, timeout=2)
+            c.request("GET", "/readyz")
+            if c.getresponse().status == 200:
+                return process, port
+        except OSError:
+            pass
+        time.sleep(0.2)
+    process.kill()
+    raise RuntimeError("the server was not ready within 120 s")
+
+
+def status_kib(pid, field):
+    """A figure of /proc/PID/status in KiB (VmRSS, VmHWM) or a count (Threads); 0 when gone."""
+    try:
+        with open("/proc/%d/status" % pid) as f:
+            for line in f:
+                if line.startswith(field + ":"):
+                    return int(line.split()[1])
+    except OSError:
+        pass
+    return 0
