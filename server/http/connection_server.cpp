@@ -40,6 +40,8 @@ bool ConnectionServer::process_and_close_socket(socket_t sock) {
     const bool last = left == 1 || load_.scarce() || draining_ || stopping();
     bool closed = false;
     ok = process_request(stream, last, closed, [&stream](httplib::Request&) { stream.end_head(); });
+    // A head that no body followed is still held back (ConnectionStream).
+    ok = stream.flush_answer() && ok;
     // A head that did not arrive whole (too slow, or not HTTP) was answered 400: what follows
     // on the connection cannot be trusted to start a request.
     if (!ok || closed || last || !stream.head_complete()) break;

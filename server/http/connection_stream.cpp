@@ -12,6 +12,7 @@
 #include <array>
 #include <cerrno>
 #include <cstring>
+#include <string_view>
 #include <utility>
 
 namespace clearsky::server {
@@ -82,6 +83,7 @@ void ConnectionStream::begin_request() {
   head_complete_ = false;
   head_start_ = Clock::now();
   answering_ = false;
+  held_head_.clear();
 }
 
 void ConnectionStream::end_head() {
@@ -131,18 +133,64 @@ Clock::time_point ConnectionStream::send_rate_deadline() const {
 }
 
 ssize_t ConnectionStream::write(const char* ptr, std::size_t size) {
+  // A head is far below this; a larger first write is not held.
+  constexpr std::size_t kHeldHeadMaxBytes = 16 * 1024;
   if (!answering_) {
-    answering_ = true;
     in_head_ = false;
     answer_start_ = Clock::now();
     answer_bytes_ = 0;
+    // An interim answer (100 Continue) goes at once: the client waits for it to send the body.
+    constexpr std::string_view kInterim = "HTTP/1.1 1";
+    if (std::string_view(ptr, size).substr(0, kInterim.size()) == kInterim) {
+      const iovec part{const_cast<char*>(ptr), size};
+      return send_parts(&part, 1);
+    }
+    answering_ = true;
+    if (size <= kHeldHeadMaxBytes) {
+      held_head_.assign(ptr, size);
+      return static_cast<ssize_t>(size);
+    }
   }
+  while (!held_head_.empty()) {
+    const iovec parts[2] = {{held_head_.data(), held_head_.size()}, {const_cast<char*>(ptr), size}};
+    const ssize_t n = send_parts(parts, 2);
+    if (n < 0) return -1;
+    const auto sent = static_cast<std::size_t>(n);
+    if (sent < held_head_.size()) {
+      held_head_.erase(0, sent);
+      continue;
+    }
+    const std::size_t of_body = sent - held_head_.size();
+    held_head_.clear();
+    if (of_body > 0) return static_cast<ssize_t>(of_body);
+  }
+  const iovec part{const_cast<char*>(ptr), size};
+  return send_parts(&part, 1);
+}
+
+bool ConnectionStream::flush_answer() {
+  while (!held_head_.empty()) {
+    const iovec part{held_head_.data(), held_head_.size()};
+    const ssize_t n = send_parts(&part, 1);
+    if (n < 0) {
+      held_head_.clear();
+      return false;
+    }
+    held_head_.erase(0, static_cast<std::size_t>(n));
+  }
+  return true;
+}
+
+ssize_t ConnectionStream::send_parts(const iovec* parts, std::size_t count) {
   const auto deadline = Clock::now() + limits_.write_timeout;
   const auto too_slow = [this](Clock::time_point now) {
     return limits_.min_send_rate_bytes_per_s > 0 && now > send_rate_deadline();
   };
+  msghdr message{};
+  message.msg_iov = const_cast<iovec*>(parts);
+  message.msg_iovlen = count;
   while (true) {
-    const ssize_t n = ::send(sock_, ptr, size, MSG_DONTWAIT | MSG_NOSIGNAL);
+    const ssize_t n = ::sendmsg(sock_, &message, MSG_DONTWAIT | MSG_NOSIGNAL);
     if (n >= 0) {
       answer_bytes_ += static_cast<std::size_t>(n);
       return n;

@@ -7,14 +7,22 @@
 // - an answer must reach the client at min_send_rate bytes/s on average once send_rate_grace
 //   has passed since its first byte (slow readers). Reached means read by the client, not
 //   queued in the kernel: the bytes still in the socket's send queue (SIOCOUTQ) do not count.
+// The head of an answer (cpp-httplib writes it in one call) is held back and leaves with the
+// first write of the body in one sendmsg(2): an answer whose body is one write leaves in one
+// system call, so a process killed between the two never leaves a proxy holding a head without
+// its body (a request HAProxy cannot send again: docs/deploy.md "Scale-out on one host"), and a
+// small answer takes one TCP segment instead of two. flush_answer() sends a held head that no
+// body followed (HEAD, 204, an empty body).
 // Used by one worker thread at a time (not thread-safe).
 #pragma once
 
 #include <httplib.h>
+#include <sys/uio.h>
 
 #include <chrono>
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "server/http/worker_load.h"
@@ -50,6 +58,9 @@ class ConnectionStream final : public httplib::Stream {
   void end_head();
   // The head of the request in progress arrived whole.
   bool head_complete() const { return head_complete_; }
+  // Sends what the answer in progress still holds back (a head without a body); false when the
+  // connection failed or timed out.
+  bool flush_answer();
 
   bool is_readable() const override;
   bool is_writable() const override;
@@ -67,6 +78,9 @@ class ConnectionStream final : public httplib::Stream {
             const std::function<bool(Clock::time_point)>& give_up) const;
   // The send-rate deadline of the answer in progress.
   Clock::time_point send_rate_deadline() const;
+  // One sendmsg(2) of the given parts, waiting for room within the write deadlines: the number
+  // of bytes sent (at least one when size > 0), or -1.
+  ssize_t send_parts(const iovec* parts, std::size_t count);
 
   socket_t sock_;
   ConnectionLimits limits_;
@@ -80,6 +94,8 @@ class ConnectionStream final : public httplib::Stream {
   bool answering_ = false;
   Clock::time_point answer_start_{};
   std::size_t answer_bytes_ = 0;
+  // The answer's head, not sent yet (see the class comment).
+  std::string held_head_;
 };
 
 }  // namespace clearsky::server

@@ -130,7 +130,17 @@ def parse_wrk(output):
     errors = sum(int(x) for x in socket_errors.groups()) if socket_errors else 0
     failed = errors + (int(non2xx.group(1)) if non2xx else 0)
     return {"requests": requests, "requests_per_s": rate, "failed": failed,
-            "non_2xx": int(non2xx.group(1)) if non2xx else 0, "socket_errors": errors}
+            "non_2xx": int(non2xx.group(1)) if non2xx else 0, "socket_errors": errors,
+            "socket_error_kinds": dict(zip(("connect", "read", "write", "timeout"),
+                                           (int(x) for x in socket_errors.groups())))
+            if socket_errors else {}}
+
+
+def failure_kinds(measured):
+    """What a failed request was, for the log: non-2xx answers and wrk's socket error kinds."""
+    if measured["failed"] == 0:
+        return ""
+    return f"(non-2xx {measured['non_2xx']}, socket errors {measured['socket_error_kinds']})"
 
 
 def main():
@@ -195,7 +205,7 @@ def main():
             measured = parse_wrk(kill_run.communicate()[0])
             results["kill"] = measured
             print(f"kill one of {n} replicas under load: {measured['requests']} requests, "
-                  f"{measured['failed']} failed", flush=True)
+                  f"{measured['failed']} failed {failure_kinds(measured)}", flush=True)
             replicas[0].start()
             time.sleep(2)
 
@@ -214,7 +224,7 @@ def main():
             measured["exit_codes"] = exit_codes
             results["rolling"] = measured
             print(f"rolling restart of {n} replicas under load: {measured['requests']} requests, "
-                  f"{measured['failed']} failed, exit codes {exit_codes}", flush=True)
+                  f"{measured['failed']} failed {failure_kinds(measured)}, exit codes {exit_codes}", flush=True)
             proxy.stop()
         finally:
             for r in replicas:
