@@ -92,7 +92,7 @@ struct DataServices {
 struct ApiContext {
   const ModelProvider& models;
   Limits limits;
-  // Null on a server without a database (serve --role query): the data endpoints answer 503
+  // Null on a server without a database (serve --role query): the data endpoints answer 404
   // no_database naming the role.
   const DataServices* data = nullptr;
   // The Prometheus text of GET /metrics (empty function: 503).

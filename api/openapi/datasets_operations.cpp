@@ -339,6 +339,7 @@ Area datasets_area() {
           "Writes are disabled (no token; code writes_disabled), or path= was given and the "
           "server has no import roots (--import-root; code path_imports_disabled).");
     add_common_errors(operation, id == "importDataset");
+    add_query_replica_answer(operation);
   }
   return area;
 }

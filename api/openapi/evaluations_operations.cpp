@@ -474,6 +474,7 @@ Area evaluations_area() {
     if (write) make_write(operation);
     const bool takes_body = id == "createEvaluation" || id == "createJob";
     add_common_errors(operation, takes_body);
+    add_query_replica_answer(operation);
   }
   return area;
 }

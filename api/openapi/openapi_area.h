@@ -51,6 +51,9 @@ Json error_response(const std::string& description);
 Json retry_later_response(const std::string& description);
 // Adds the responses every operation shares (413 for a body on a route that takes none, 500).
 void add_common_errors(Json& operation, bool takes_body);
+// Declares the 404 a query replica answers on a data route (code no_database, parameter role;
+// docs/deploy.md "Roles").
+void add_query_replica_answer(Json& operation);
 // Gives every 4xx/5xx response of the operations that has only a description the Error body
 // (and Retry-After on a 503) (datasets_operations.cpp).
 void complete_errors(Json& operations);

@@ -41,6 +41,19 @@ void add_common_errors(Json& operation, bool takes_body) {
   responses["500"] = ref("responses", "InternalError");
 }
 
+void add_query_replica_answer(Json& operation) {
+  constexpr const char* kReplica =
+      "On a query replica (serve --role query), which has no database: code no_database, "
+      "parameter role.";
+  Json& responses = operation["responses"];
+  if (!responses.contains("404")) {
+    responses["404"] = error_response(kReplica);
+    return;
+  }
+  Json& description = responses["404"]["description"];
+  description = description.get<std::string>() + " " + kReplica;
+}
+
 void add_revalidation(Json& operation) {
   if (!operation.contains("parameters")) operation["parameters"] = Json::array();
   operation["parameters"].push_back(ref("parameters", "If-None-Match"));
@@ -76,7 +89,7 @@ Json common_components() {
       "properties": {
         "code": {
           "type": "string",
-          "description": "e.g. invalid_parameter, unknown_parameter, missing_parameter, conflicting_parameters, invalid_body, unknown_model, unknown_dataset, not_found, method_not_allowed (405, with an Allow header, for a method a path does not serve), too_large, model_cannot_answer, model_not_ready, busy, unauthorized, writes_disabled, no_database (503 on a query replica, serve --role query: parameter role), draining (/readyz of a stopping server), path_imports_disabled, path_not_importable, insufficient_storage (507), internal_error"
+          "description": "e.g. invalid_parameter, unknown_parameter, missing_parameter, conflicting_parameters, invalid_body, unknown_model, unknown_dataset, not_found, method_not_allowed (405, with an Allow header, for a method a path does not serve), too_large, model_cannot_answer, model_not_ready, busy, unauthorized, writes_disabled, no_database (404 on a query replica, serve --role query: parameter role), draining (/readyz of a stopping server), path_imports_disabled, path_not_importable, insufficient_storage (507), internal_error"
         },
         "message": {"type": "string"},
         "parameter": {

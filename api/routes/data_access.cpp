@@ -6,7 +6,9 @@
 namespace clearsky::api {
 
 ApiError no_database() {
-  return ApiError(503, "no_database", "role",
+  // 404, not 503: the resource is not on this server and never will be (a 503 would invite a
+  // retry here); the proxy routes data paths to the writer (docs/deploy.md "Roles").
+  return ApiError(404, "no_database", "role",
                   "this server has no database (serve --role query): datasets, imports, "
                   "evaluations and jobs are served by the writer (serve --role writer)");
 }

@@ -3,7 +3,7 @@
 // (server/config/server_config.h). At start the default tables of every registered model are loaded
 // from --cache-dir or built in the background, with progress in the log; /healthz answers at once,
 // /readyz once they are ready. `--role query` runs a replica without a database (the data
-// endpoints answer 503 no_database, no scheduler); SIGINT/SIGTERM drain the server: /readyz 503,
+// endpoints answer 404 no_database, no scheduler); SIGINT/SIGTERM drain the server: /readyz 503,
 // --drain-delay, then requests in flight get --drain-timeout (docs/deploy.md).
 #include <pthread.h>
 #include <spdlog/spdlog.h>

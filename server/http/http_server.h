@@ -45,7 +45,7 @@ class HttpServer {
 
   // The services of the data endpoints (datasets, imports, evaluations, jobs) and the bearer
   // token of the write routes; both must outlive the server. Call before bind(). Without
-  // them (a query replica) the data endpoints, writes included, answer 503 no_database.
+  // them (a query replica) the data endpoints, writes included, answer 404 no_database.
   void add_data_services(const api::DataServices& services, const WriteAuthorizer& auth);
 
   // Binds config.host:config.port (port 0: a free port); returns the bound port. Throws

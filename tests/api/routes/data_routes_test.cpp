@@ -2,7 +2,7 @@
 // every one refuses a query parameter it does not take (GET /v1/jobs/{id} included), ids in
 // the path are checked, creations answer with their Location, an upload is read through the
 // BodyReader into the spool (and a body above the upload limit is a 413), and a server without
-// a database answers 503.
+// a database answers 404 no_database.
 #include <gtest/gtest.h>
 
 #include "api/evaluation/evaluation_pool.h"
@@ -161,9 +161,9 @@ TEST_F(DataRouteHandlers, UploadsAreReadThroughTheBodyReader) {
   imports.reset();  // waits for the queued import
 }
 
-TEST_F(DataRouteHandlers, WithoutADatabaseTheDataRoutesAnswer503) {
+TEST_F(DataRouteHandlers, WithoutADatabaseTheDataRoutesAnswer404) {
   const ApiResponse r = call("GET", "/v1/datasets", "", nullptr, false);
-  EXPECT_EQ(r.status, 503);
+  EXPECT_EQ(r.status, 404);
   EXPECT_EQ(json_of(r)["error"]["code"], "no_database");
   EXPECT_EQ(json_of(r)["error"]["parameter"], "role");
 }

@@ -1,6 +1,6 @@
 // A query replica (`clearsky serve --role query`, docs/deploy.md "Roles"), the real process:
 // it serves the sky endpoints without a database, opens none (no file appears where the default
-// --db would be), answers every data endpoint, writes included, 503 no_database naming the
+// --db would be), answers every data endpoint, writes included, 404 no_database naming the
 // role, and refuses to start with a --db (a usage error).
 #include <gtest/gtest.h>
 
@@ -49,7 +49,7 @@ TEST(QueryRole, ServesTheSkyWithoutADatabaseAndRefusesTheDataEndpointsNamingTheR
                            "/v1/datasets/x", "/v1/jobs/1"}) {
     const auto r = c.Get(path);
     ASSERT_TRUE(r) << path;
-    EXPECT_EQ(r->status, 503) << path;
+    EXPECT_EQ(r->status, 404) << path;
     EXPECT_EQ(error_of(r)["code"], "no_database") << path;
     EXPECT_EQ(error_of(r)["parameter"], "role") << path;
   }
@@ -57,11 +57,11 @@ TEST(QueryRole, ServesTheSkyWithoutADatabaseAndRefusesTheDataEndpointsNamingTheR
   httplib::Headers with_token = {{"Authorization", "Bearer t0ken"}};
   const auto job = c.Post("/v1/jobs", with_token, "{}", "application/json");
   ASSERT_TRUE(job);
-  EXPECT_EQ(job->status, 503);
+  EXPECT_EQ(job->status, 404);
   EXPECT_EQ(error_of(job)["parameter"], "role");
   const auto removal = c.Delete("/v1/datasets/x");
   ASSERT_TRUE(removal);
-  EXPECT_EQ(removal->status, 503);
+  EXPECT_EQ(removal->status, 404);
   EXPECT_EQ(error_of(removal)["code"], "no_database");
 
   EXPECT_TRUE(server.alive());
