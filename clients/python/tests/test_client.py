@@ -356,11 +356,34 @@ class ClientAgainstWriter(unittest.TestCase):
 
 class ClientAgainstQueryReplica(unittest.TestCase):
     """A query replica (serve --role query) has no database: its data endpoints answer 503
-    no_database without Retry-After, which the client raises at once."""
+    no_database without Retry-After, which the client raises at once. It lets one client start
+    one table build per 4 s (--build-rate, docs/tables-and-memory.md): a second one is 429
+    too_many_builds with Retry-After, which the client waits for."""
 
     @classmethod
     def setUpClass(cls) -> None:
-        cls.server = ServeProcess(role="query", models="preetham")
+        cls.server = ServeProcess(role="query", models="preetham",
+                                  extra=["--build-rate", "1", "--build-rate-window-s", "4"])
+
+    def test_429_with_retry_after_is_retried(self) -> None:
+        # Each turbidity other than the default is a new configuration: a table build.
+        self.assertEqual(Client(self.server.url).radiance("preetham", 45, 0, turbidity=3,
+                                                          **SUN).radiance.shape[0], 1)
+        once = Client(self.server.url, retry=RetryPolicy(max_attempts=1))
+        with self.assertRaises(ClearskyError) as caught:
+            once.radiance("preetham", 45, 0, turbidity=4, **SUN)
+        error = caught.exception
+        self.assertEqual((error.status, error.code, error.parameter),
+                         (429, "too_many_builds", "build_rate"))
+        self.assertIsNotNone(error.retry_after_s)
+        notices = []
+        patient = Client(self.server.url, retry=RetryPolicy(max_attempts=10,
+                                                            max_total_wait_s=60,
+                                                            on_retry=notices.append))
+        answer = patient.radiance("preetham", 45, 0, turbidity=4, **SUN)
+        self.assertEqual(answer.radiance.shape[0], 1)
+        self.assertGreaterEqual(len(notices), 1)
+        self.assertEqual((notices[0].status, notices[0].code), (429, "too_many_builds"))
 
     @classmethod
     def tearDownClass(cls) -> None:
