@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import os
 import time as time_module
-from typing import Any, Dict, List, Mapping, Optional, Sequence, Union
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, TypeVar, Union
 from urllib.parse import quote
 
 from .data_results import (Dataset, DatasetSummary, Evaluation, EvaluationSummary,
@@ -21,6 +21,8 @@ from .transport import Answer, Transport
 from .upload_progress import Progress, ProgressFile
 
 Models = Union[str, Sequence[str]]
+T = TypeVar("T")
+Polled = TypeVar("Polled", Import, EvaluationTicket)
 
 
 class Client:
@@ -426,11 +428,13 @@ def _segment(name: str) -> str:
     return quote(name, safe="")
 
 
-def _page(answer: Answer, parse: Any) -> Page[Any]:
+def _page(answer: Answer, parse: Callable[[Dict[str, Any]], T]) -> Page[T]:
+    """One page of a list answer: its items parsed, and the next page's cursor."""
     return Page([parse(item) for item in answer.json()], next_cursor_of(answer.headers.get("link")))
 
 
-def _poll(read: Any, poll_s: float, timeout_s: float, what: str) -> Any:
+def _poll(read: Callable[[], Polled], poll_s: float, timeout_s: float, what: str) -> Polled:
+    """Reads an import or ticket until it is done, or raises ClearskyError ``timeout``."""
     deadline = time_module.monotonic() + timeout_s
     while True:
         current = read()
