@@ -16,6 +16,9 @@ packages=(
   # docs/deploy.md (docs/figures/deploy-topology.dot).
   systemd graphviz
   python3-jsonschema
+  # The Python client (clients/python, docs/clients.md): numpy for its arrays, OpenImageIO's
+  # Python bindings for decoding skydome images in its tests.
+  python3-numpy python3-openimageio
   # The fuzz programs (fuzz/run.sh, docs/fuzzing.md): clang 14 with its sanitizer and libFuzzer
   # runtimes; ccache keeps their rebuilds short.
   clang libclang-rt-14-dev ccache
