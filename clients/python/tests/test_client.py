@@ -1,5 +1,5 @@
 """The Python client against a real `clearsky serve` (docs/clients.md): every method of Client,
-the errors (a 400 naming its parameter, a 401 without the token, 503 no_database on a query
+the errors (a 400 naming its parameter, a 401 without the token, 404 no_database on a query
 replica), and the bounded retry of a 503 with Retry-After (the answer memory held by another
 answer: server/README.md "Memory budget of answers in flight").
 
@@ -364,8 +364,8 @@ class ClientAgainstWriter(unittest.TestCase):
 
 
 class ClientAgainstQueryReplica(unittest.TestCase):
-    """A query replica (serve --role query) has no database: its data endpoints answer 503
-    no_database without Retry-After, which the client raises at once. It lets one client start
+    """A query replica (serve --role query) has no database: its data endpoints answer 404
+    no_database, which the client raises at once. It lets one client start
     one table build per 4 s (--build-rate, docs/tables-and-memory.md): a second one is 429
     too_many_builds with Retry-After, which the client waits for."""
 
@@ -406,7 +406,7 @@ class ClientAgainstQueryReplica(unittest.TestCase):
             with self.assertRaises(ClearskyError) as caught:
                 call()
             error = caught.exception
-            self.assertEqual((error.status, error.code, error.parameter), (503, "no_database",
+            self.assertEqual((error.status, error.code, error.parameter), (404, "no_database",
                                                                            "role"))
             self.assertEqual((error.retry_after_s, error.attempts), (None, 1))
         self.assertEqual(notices, [])
