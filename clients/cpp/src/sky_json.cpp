@@ -66,6 +66,27 @@ std::optional<IrradianceComponent> component_of(const nlohmann::json& json, cons
   return component;
 }
 
+ModelCapabilities capabilities_of(const nlohmann::json& json) {
+  ModelCapabilities capabilities;
+  const nlohmann::json altitudes = member<nlohmann::json>(json, "altitude_range_m");
+  if (altitudes.is_array() && altitudes.size() == 2) {
+    if (altitudes[0].is_number()) capabilities.min_altitude_m = altitudes[0].get<double>();
+    if (altitudes[1].is_number()) capabilities.max_altitude_m = altitudes[1].get<double>();
+  }
+  capabilities.view_from_space = member<bool>(json, "view_from_space");
+  capabilities.view_below_horizon = member<bool>(json, "view_below_horizon");
+  capabilities.aerial_perspective = member<bool>(json, "aerial_perspective");
+  capabilities.max_sun_zenith_deg = member<double>(json, "max_sun_zenith_deg");
+  capabilities.sun_below_horizon = member<bool>(json, "sun_below_horizon");
+  // A number of orders, or "all".
+  if (member<nlohmann::json>(json, "scattering_orders").is_number())
+    capabilities.scattering_orders = member<int>(json, "scattering_orders");
+  capabilities.per_sun_precomputation = member<bool>(json, "per_sun_precomputation");
+  capabilities.sun_irradiance = member<bool>(json, "sun_irradiance");
+  capabilities.sky_irradiance = member<bool>(json, "sky_irradiance");
+  return capabilities;
+}
+
 }  // namespace
 
 nlohmann::json radiance_batch_json(const RadianceBatchRequest& request) {
@@ -121,8 +142,7 @@ std::vector<ModelInfo> models_of(const nlohmann::json& json) {
       parameter.kind = member<std::string>(p, "kind");
       info.parameters.push_back(std::move(parameter));
     }
-    const nlohmann::json capabilities = member<nlohmann::json>(m, "capabilities");
-    info.max_sun_zenith_deg = optional_member<double>(capabilities, "max_sun_zenith_deg");
+    info.capabilities = capabilities_of(member<nlohmann::json>(m, "capabilities"));
     const nlohmann::json state = member<nlohmann::json>(m, "state");
     info.table_status = member<std::string>(state, "status");
     info.table_progress = member<double>(state, "progress");

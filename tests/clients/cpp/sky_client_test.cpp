@@ -42,6 +42,8 @@ TEST_F(SkyClient, ModelsListTheServedModelWithItsParameters) {
   ASSERT_EQ(models.size(), 1u);
   EXPECT_EQ(models[0].id, "preetham");
   EXPECT_EQ(models[0].table_status, "ready");
+  EXPECT_TRUE(models[0].capabilities.sky_irradiance);
+  EXPECT_GT(models[0].capabilities.max_sun_zenith_deg, 80);
   EXPECT_TRUE(std::any_of(models[0].parameters.begin(), models[0].parameters.end(),
                           [](const ModelParameterInfo& p) { return p.name == "turbidity"; }));
   EXPECT_TRUE(client().healthy());

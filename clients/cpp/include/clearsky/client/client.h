@@ -9,7 +9,8 @@
 // thrown at once. Writes are retried too: a 503 or 429 means the server did nothing.
 //
 // Thread-safety: a Client may be used from several threads at once; each request opens its own
-// connection, and the options are read-only after construction.
+// connection, and the options are read-only after construction. on_retry may then be called
+// from those threads at once.
 #pragma once
 
 #include <cstdint>

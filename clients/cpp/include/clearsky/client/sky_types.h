@@ -86,6 +86,19 @@ struct ModelParameterInfo {
   bool integer = false;
   std::string kind;  // "atmosphere" or "model"
 };
+// What a model can answer (models/core/model_descriptor.h).
+struct ModelCapabilities {
+  std::optional<double> min_altitude_m, max_altitude_m;  // absent: unbounded
+  bool view_from_space = false;
+  bool view_below_horizon = false;
+  bool aerial_perspective = false;
+  double max_sun_zenith_deg = 0;
+  bool sun_below_horizon = false;
+  std::optional<int> scattering_orders;  // absent: all orders
+  bool per_sun_precomputation = false;
+  bool sun_irradiance = false;
+  bool sky_irradiance = false;
+};
 struct ModelInfo {
   std::string id;  // the value of SkyQuery::model
   std::string name;
@@ -95,7 +108,7 @@ struct ModelInfo {
   std::vector<double> native_wavelengths_nm;  // empty: any wavelength in the range
   std::optional<double> min_wavelength_nm, max_wavelength_nm;
   std::vector<ModelParameterInfo> parameters;
-  std::optional<double> max_sun_zenith_deg;
+  ModelCapabilities capabilities;
   std::string table_status;   // the default tables: "queued", "precomputing", "ready", "failed"
   double table_progress = 0;  // 0..1
 };
