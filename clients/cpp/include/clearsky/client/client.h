@@ -39,7 +39,7 @@ struct ClientOptions {
   std::string base_url = "http://127.0.0.1:8080";  // scheme://host[:port], https too
   std::string token;  // the bearer token of the writes (--token of the server); empty: none
   int connect_timeout_s = 10;
-  int read_timeout_s = 120;  // a skydome of a model still building its tables takes a while
+  int read_timeout_s = 120;  // a large skydome or batch is computed while it is sent
   int write_timeout_s = 120;
   int max_retries = 3;
   int max_retry_wait_s = 60;

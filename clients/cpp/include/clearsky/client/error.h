@@ -2,7 +2,7 @@
 // ({"error": {"code", "message", "parameter"}}, docs/http-api.md "Errors") becomes an Error with
 // the HTTP status, the API's stable code, its message and the parameter it names; so does a
 // failure to reach the server (status 0, code "connection") and an answer the library cannot
-// read (the answer's status, code "invalid_answer").
+// read (code "invalid_answer").
 //
 // Thread-safety: immutable after construction; may be read from any thread.
 #pragma once
