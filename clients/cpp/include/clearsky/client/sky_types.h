@@ -1,0 +1,210 @@
+// The requests and answers of the sky endpoints (docs/http-api.md; the parameters in
+// /openapi.json): the sun, the models, radiance, irradiance, RGB and the skydome. Angles are in
+// degrees (zenith from the local vertical, azimuth clockwise from North), as at the API; the
+// unit of every number is in its name.
+//
+// Model and atmosphere parameters are open-ended (each model lists its own: GET /v1/models,
+// Client::models()), so they are a map from the parameter's name to a number or a text
+// ("grass" for albedo); the server refuses a name the model does not take (400
+// unknown_parameter naming it).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace clearsky::client {
+
+// A parameter's value: a number, or a text where the API takes one (albedo "grass").
+using ParameterValue = std::variant<double, std::string>;
+using Parameters = std::map<std::string, ParameterValue>;
+
+// The sun given directly.
+struct SunAngles {
+  double zenith_deg = 0;
+  double azimuth_deg = 0;
+};
+
+// The sun computed by the server (NREL SPA) from a place and a time.
+struct PlaceTime {
+  std::string latitude;   // degrees North, decimal ("42.444") or DMS ("42d26'36\"N")
+  std::string longitude;  // degrees East, decimal or DMS
+  std::string time;       // ISO 8601 with a UTC offset or Z
+  std::optional<double> pressure_mbar;
+  std::optional<double> temperature_c;
+  std::optional<double> delta_t_s;  // TT - UT1
+  std::optional<bool> refraction;
+};
+
+// What every sky query shares: the model, the sun (exactly one of sun and place_time), the
+// observer's altitude and the model's parameters.
+struct SkyQuery {
+  std::string model;  // "preetham", "hosek", ... (Client::models())
+  std::optional<SunAngles> sun;
+  std::optional<PlaceTime> place_time;
+  std::optional<double> altitude_m;
+  Parameters parameters;
+};
+
+// A viewing direction.
+struct ViewDirection {
+  double zenith_deg = 0;
+  double azimuth_deg = 0;
+};
+
+// GET /v1/sun.
+struct SunRequest {
+  PlaceTime place_time;
+  std::optional<double> altitude_m;
+};
+struct SunPosition {
+  double zenith_deg = 0;   // topocentric, refraction applied unless refraction=false
+  double azimuth_deg = 0;  // clockwise from North
+  // ISO 8601 in the request's UTC offset; absent in polar day or night.
+  std::optional<std::string> sunrise, transit, sunset;
+  std::string day;  // "normal", "polar_day", "polar_night"
+};
+
+// The sun a model was asked for.
+struct SunUsed {
+  double zenith_deg = 0;
+  double azimuth_deg = 0;  // normalised to [0, 360)
+  std::string source;      // "given" or "spa"
+};
+
+// GET /v1/models.
+struct ModelParameterInfo {
+  std::string name;
+  std::string unit;  // empty when dimensionless
+  std::string description;
+  std::optional<double> default_value;
+  std::optional<double> min, max;  // inclusive; absent when unbounded
+  bool integer = false;
+  std::string kind;  // "atmosphere" or "model"
+};
+// What a model can answer (models/core/model_descriptor.h).
+struct ModelCapabilities {
+  std::optional<double> min_altitude_m, max_altitude_m;  // absent: unbounded
+  bool view_from_space = false;
+  bool view_below_horizon = false;
+  bool aerial_perspective = false;
+  double max_sun_zenith_deg = 0;
+  bool sun_below_horizon = false;
+  std::optional<int> scattering_orders;  // absent: all orders
+  bool per_sun_precomputation = false;
+  bool sun_irradiance = false;
+  bool sky_irradiance = false;
+};
+struct ModelInfo {
+  std::string id;  // the value of SkyQuery::model
+  std::string name;
+  std::string version;
+  std::string citation;
+  std::string summary;
+  std::vector<double> native_wavelengths_nm;  // empty: any wavelength in the range
+  std::optional<double> min_wavelength_nm, max_wavelength_nm;
+  std::vector<ModelParameterInfo> parameters;
+  ModelCapabilities capabilities;
+  std::string table_status;   // the default tables: "queued", "precomputing", "ready", "failed"
+  double table_progress = 0;  // 0..1
+};
+
+// GET /v1/radiance (one view) and POST /v1/radiance (a batch).
+struct RadianceRequest : SkyQuery {
+  ViewDirection view;
+  std::vector<double> wavelengths_nm;  // empty: the model's default grid
+};
+struct RadianceBatchRequest : SkyQuery {
+  std::vector<ViewDirection> views;
+  std::vector<double> wavelengths_nm;
+};
+struct RadianceSample {
+  ViewDirection view;
+  std::vector<double> radiance_w_m2_sr_nm;  // one per RadianceResult::wavelengths_nm
+};
+struct RadianceResult {
+  std::string model;
+  std::string model_version;
+  SunUsed sun;
+  double altitude_m = 0;
+  std::string unit;  // "W/(m2.sr.nm)"
+  std::string grid;  // "bins" (each value the mean over its bin) or "points"
+  std::optional<double> bin_width_nm;
+  std::vector<double> wavelengths_nm;
+  std::vector<RadianceSample> samples;  // in the order of the request's views
+};
+
+// GET /v1/irradiance on a plane.
+struct IrradianceRequest : SkyQuery {
+  std::optional<double> tilt_deg;
+  std::optional<double> surface_azimuth_deg;
+  std::optional<std::string> component;  // "all" (default), "direct", "diffuse", "global"
+  bool spectral = false;                 // add each component's spectrum
+};
+struct IrradianceComponent {
+  double irradiance_w_m2 = 0;
+  double illuminance_lx = 0;
+  std::vector<double> spectral_w_m2_nm;  // with spectral=true
+};
+struct IrradianceResult {
+  std::string model;
+  std::string model_version;
+  SunUsed sun;
+  double altitude_m = 0;
+  double tilt_deg = 0;
+  double surface_azimuth_deg = 0;
+  std::array<double, 2> integrated_range_nm{};
+  std::vector<double> wavelengths_nm;  // with spectral=true
+  // The components present follow IrradianceRequest::component.
+  std::optional<IrradianceComponent> direct_normal, direct, diffuse, global;
+};
+
+// GET /v1/rgb (one view) and POST /v1/rgb (a batch): linear sRGB, radiometric
+// (docs/http-api.md "RGB").
+struct RgbRequest : SkyQuery {
+  ViewDirection view;
+  std::optional<std::string> method;  // "spectral" (default) or "three"
+};
+struct RgbBatchRequest : SkyQuery {
+  std::vector<ViewDirection> views;
+  std::optional<std::string> method;
+};
+struct RgbSample {
+  ViewDirection view;
+  std::array<double, 3> rgb{};  // never negative: see gamut_clipped
+  bool gamut_clipped = false;
+  double luminance_cd_m2 = 0;  // 683 Y before any clipping
+};
+struct RgbResult {
+  std::string model;
+  std::string model_version;
+  std::string method;
+  SunUsed sun;
+  double altitude_m = 0;
+  std::string colour_space;
+  std::string gamut_mapping;
+  std::int64_t gamut_clipped_samples = 0;
+  std::optional<std::array<double, 2>> integrated_range_nm;  // method=spectral
+  std::optional<std::string> warning;
+  std::vector<RgbSample> samples;
+};
+
+// GET /v1/skydome: an OpenEXR image, streamed.
+struct SkydomeRequest : SkyQuery {
+  std::optional<std::string> projection;  // "fisheye" (default), "latlong", "cubemap"
+  std::optional<int> size_px;             // image width (even for latlong)
+  std::optional<std::string> channels;    // "rgb" (default), "luminance", "spectral"
+  std::optional<std::string> pixel_type;  // "half" or "float"
+  std::optional<std::string> method;      // channels=rgb: "spectral" or "three"
+  std::vector<double> wavelengths_nm;     // channels=spectral
+};
+struct SkydomeDownload {
+  std::string content_type;  // "image/x-exr"
+  std::uint64_t bytes = 0;   // written to the stream or file
+};
+
+}  // namespace clearsky::client

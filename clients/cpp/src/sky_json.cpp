@@ -1,0 +1,220 @@
+// The sky endpoints' JSON (sky_json.h).
+#include "sky_json.h"
+
+#include "json_fields.h"
+#include "query_text.h"
+
+namespace clearsky::client::detail {
+
+namespace {
+
+nlohmann::json sky_query_json(const SkyQuery& sky) {
+  nlohmann::json body = parameters_json(sky.parameters);
+  body["model"] = sky.model;
+  if (sky.sun) {
+    body["sun_zenith"] = sky.sun->zenith_deg;
+    body["sun_azimuth"] = sky.sun->azimuth_deg;
+  }
+  if (sky.place_time) {
+    const PlaceTime& place = *sky.place_time;
+    body["lat"] = place.latitude;
+    body["lon"] = place.longitude;
+    body["time"] = place.time;
+    if (place.pressure_mbar) body["pressure"] = *place.pressure_mbar;
+    if (place.temperature_c) body["temperature"] = *place.temperature_c;
+    if (place.delta_t_s) body["delta_t"] = *place.delta_t_s;
+    if (place.refraction) body["refraction"] = *place.refraction;
+  }
+  if (sky.altitude_m) body["altitude"] = *sky.altitude_m;
+  return body;
+}
+
+nlohmann::json views_json(const std::vector<ViewDirection>& views) {
+  nlohmann::json pairs = nlohmann::json::array();
+  for (const ViewDirection& v : views) pairs.push_back({v.zenith_deg, v.azimuth_deg});
+  return pairs;
+}
+
+SunUsed sun_used_of(const nlohmann::json& json) {
+  const nlohmann::json sun = member<nlohmann::json>(json, "sun");
+  SunUsed used;
+  used.zenith_deg = member<double>(sun, "zenith_deg");
+  used.azimuth_deg = member<double>(sun, "azimuth_deg");
+  used.source = member<std::string>(sun, "source");
+  return used;
+}
+
+ViewDirection view_of(const nlohmann::json& sample) {
+  return {member<double>(sample, "view_zenith_deg"), member<double>(sample, "view_azimuth_deg")};
+}
+
+std::array<double, 2> range_of(const nlohmann::json& json, const char* name) {
+  const auto values = member<std::vector<double>>(json, name);
+  if (values.size() != 2)
+    throw Error(0, "invalid_answer", std::string(name) + " is not a [min, max] pair");
+  return {values[0], values[1]};
+}
+
+std::optional<IrradianceComponent> component_of(const nlohmann::json& json, const char* name) {
+  const auto part = optional_member<nlohmann::json>(json, name);
+  if (!part) return std::nullopt;
+  IrradianceComponent component;
+  component.irradiance_w_m2 = member<double>(*part, "irradiance_w_m2");
+  component.illuminance_lx = member<double>(*part, "illuminance_lx");
+  component.spectral_w_m2_nm = optional_member<std::vector<double>>(*part, "spectral_w_m2_nm")
+                                   .value_or(std::vector<double>{});
+  return component;
+}
+
+ModelCapabilities capabilities_of(const nlohmann::json& json) {
+  ModelCapabilities capabilities;
+  const nlohmann::json altitudes = member<nlohmann::json>(json, "altitude_range_m");
+  if (altitudes.is_array() && altitudes.size() == 2) {
+    if (altitudes[0].is_number()) capabilities.min_altitude_m = altitudes[0].get<double>();
+    if (altitudes[1].is_number()) capabilities.max_altitude_m = altitudes[1].get<double>();
+  }
+  capabilities.view_from_space = member<bool>(json, "view_from_space");
+  capabilities.view_below_horizon = member<bool>(json, "view_below_horizon");
+  capabilities.aerial_perspective = member<bool>(json, "aerial_perspective");
+  capabilities.max_sun_zenith_deg = member<double>(json, "max_sun_zenith_deg");
+  capabilities.sun_below_horizon = member<bool>(json, "sun_below_horizon");
+  // A number of orders, or "all".
+  if (member<nlohmann::json>(json, "scattering_orders").is_number())
+    capabilities.scattering_orders = member<int>(json, "scattering_orders");
+  capabilities.per_sun_precomputation = member<bool>(json, "per_sun_precomputation");
+  capabilities.sun_irradiance = member<bool>(json, "sun_irradiance");
+  capabilities.sky_irradiance = member<bool>(json, "sky_irradiance");
+  return capabilities;
+}
+
+}  // namespace
+
+nlohmann::json radiance_batch_json(const RadianceBatchRequest& request) {
+  nlohmann::json body = sky_query_json(request);
+  body["views"] = views_json(request.views);
+  if (!request.wavelengths_nm.empty())
+    body["wavelengths"] = number_list_text(request.wavelengths_nm);
+  return body;
+}
+
+nlohmann::json rgb_batch_json(const RgbBatchRequest& request) {
+  nlohmann::json body = sky_query_json(request);
+  body["views"] = views_json(request.views);
+  if (request.method) body["method"] = *request.method;
+  return body;
+}
+
+SunPosition sun_position_of(const nlohmann::json& json) {
+  SunPosition sun;
+  sun.zenith_deg = member<double>(json, "zenith");
+  sun.azimuth_deg = member<double>(json, "azimuth");
+  sun.sunrise = optional_member<std::string>(json, "sunrise");
+  sun.transit = optional_member<std::string>(json, "transit");
+  sun.sunset = optional_member<std::string>(json, "sunset");
+  sun.day = member<std::string>(json, "day");
+  return sun;
+}
+
+std::vector<ModelInfo> models_of(const nlohmann::json& json) {
+  std::vector<ModelInfo> models;
+  for (const nlohmann::json& m : member<nlohmann::json>(json, "models")) {
+    ModelInfo info;
+    info.id = member<std::string>(m, "id");
+    info.name = member<std::string>(m, "name");
+    info.version = member<std::string>(m, "version");
+    info.citation = member<std::string>(m, "citation");
+    info.summary = member<std::string>(m, "summary");
+    info.native_wavelengths_nm = member<std::vector<double>>(m, "native_wavelengths_nm");
+    const nlohmann::json range = member<nlohmann::json>(m, "wavelength_range_nm");
+    if (range.is_array() && range.size() == 2) {
+      if (range[0].is_number()) info.min_wavelength_nm = range[0].get<double>();
+      if (range[1].is_number()) info.max_wavelength_nm = range[1].get<double>();
+    }
+    for (const nlohmann::json& p : member<nlohmann::json>(m, "parameters")) {
+      ModelParameterInfo parameter;
+      parameter.name = member<std::string>(p, "name");
+      parameter.unit = member<std::string>(p, "unit");
+      parameter.description = member<std::string>(p, "description");
+      parameter.default_value = optional_member<double>(p, "default");
+      parameter.min = optional_member<double>(p, "min");
+      parameter.max = optional_member<double>(p, "max");
+      parameter.integer = member<bool>(p, "integer");
+      parameter.kind = member<std::string>(p, "kind");
+      info.parameters.push_back(std::move(parameter));
+    }
+    info.capabilities = capabilities_of(member<nlohmann::json>(m, "capabilities"));
+    const nlohmann::json state = member<nlohmann::json>(m, "state");
+    info.table_status = member<std::string>(state, "status");
+    info.table_progress = member<double>(state, "progress");
+    models.push_back(std::move(info));
+  }
+  return models;
+}
+
+RadianceResult radiance_of(const nlohmann::json& json) {
+  RadianceResult result;
+  result.model = member<std::string>(json, "model");
+  result.model_version = member<std::string>(json, "model_version");
+  result.sun = sun_used_of(json);
+  result.altitude_m = member<double>(json, "altitude_m");
+  result.unit = member<std::string>(json, "unit");
+  result.grid = member<std::string>(json, "grid");
+  result.bin_width_nm = optional_member<double>(json, "bin_width_nm");
+  result.wavelengths_nm = member<std::vector<double>>(json, "wavelengths_nm");
+  for (const nlohmann::json& s : member<nlohmann::json>(json, "samples")) {
+    RadianceSample sample;
+    sample.view = view_of(s);
+    sample.radiance_w_m2_sr_nm = member<std::vector<double>>(s, "radiance");
+    if (sample.radiance_w_m2_sr_nm.size() != result.wavelengths_nm.size())
+      throw Error(0, "invalid_answer", "a sample's radiance does not match wavelengths_nm");
+    result.samples.push_back(std::move(sample));
+  }
+  return result;
+}
+
+IrradianceResult irradiance_of(const nlohmann::json& json) {
+  IrradianceResult result;
+  result.model = member<std::string>(json, "model");
+  result.model_version = member<std::string>(json, "model_version");
+  result.sun = sun_used_of(json);
+  result.altitude_m = member<double>(json, "altitude_m");
+  const nlohmann::json plane = member<nlohmann::json>(json, "plane");
+  result.tilt_deg = member<double>(plane, "tilt_deg");
+  result.surface_azimuth_deg = member<double>(plane, "surface_azimuth_deg");
+  result.integrated_range_nm = range_of(json, "integrated_range_nm");
+  result.wavelengths_nm =
+      optional_member<std::vector<double>>(json, "wavelengths_nm").value_or(std::vector<double>{});
+  result.direct_normal = component_of(json, "direct_normal");
+  result.direct = component_of(json, "direct");
+  result.diffuse = component_of(json, "diffuse");
+  result.global = component_of(json, "global");
+  return result;
+}
+
+RgbResult rgb_of(const nlohmann::json& json) {
+  RgbResult result;
+  result.model = member<std::string>(json, "model");
+  result.model_version = member<std::string>(json, "model_version");
+  result.method = member<std::string>(json, "method");
+  result.sun = sun_used_of(json);
+  result.altitude_m = member<double>(json, "altitude_m");
+  result.colour_space = member<std::string>(json, "colour_space");
+  result.gamut_mapping = member<std::string>(json, "gamut_mapping");
+  result.gamut_clipped_samples = member<std::int64_t>(json, "gamut_clipped_samples");
+  if (json.contains("integrated_range_nm"))
+    result.integrated_range_nm = range_of(json, "integrated_range_nm");
+  result.warning = optional_member<std::string>(json, "warning");
+  for (const nlohmann::json& s : member<nlohmann::json>(json, "samples")) {
+    RgbSample sample;
+    sample.view = view_of(s);
+    const auto rgb = member<std::vector<double>>(s, "rgb");
+    if (rgb.size() != 3) throw Error(0, "invalid_answer", "a sample's rgb is not 3 numbers");
+    sample.rgb = {rgb[0], rgb[1], rgb[2]};
+    sample.gamut_clipped = member<bool>(s, "gamut_clipped");
+    sample.luminance_cd_m2 = member<double>(s, "luminance_cd_m2");
+    result.samples.push_back(std::move(sample));
+  }
+  return result;
+}
+
+}  // namespace clearsky::client::detail

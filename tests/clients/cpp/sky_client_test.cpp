@@ -1,0 +1,222 @@
+// The sky methods of clearsky::client::Client against a real `clearsky serve` (Preetham, the
+// cheap analytic model): models, sun, radiance (one view and a batch), irradiance, RGB (one
+// view and a batch), the skydome streamed to a stream and to a file, and the refusals as Error
+// naming the parameter.
+#include <clearsky/client/client.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+#include "tests/clients/cpp/client_server.h"
+
+namespace clearsky::client {
+namespace {
+
+class SkyClient : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    server_ = new testing::ClientServer({}, "preetham");
+    ASSERT_GT(server_->port(), 0) << server_->log();
+    ASSERT_TRUE(server_->ready()) << server_->log();
+  }
+  static void TearDownTestSuite() {
+    delete server_;
+    server_ = nullptr;
+  }
+  static Client client() { return server_->client(); }
+  template <typename Request>
+  static Request sky(Request request) {
+    request.model = "preetham";
+    request.sun = SunAngles{40, 100};
+    return request;
+  }
+  static testing::ClientServer* server_;
+};
+testing::ClientServer* SkyClient::server_ = nullptr;
+
+TEST_F(SkyClient, ModelsListTheServedModelWithItsParameters) {
+  const auto models = client().models();
+  ASSERT_EQ(models.size(), 1u);
+  EXPECT_EQ(models[0].id, "preetham");
+  EXPECT_EQ(models[0].table_status, "ready");
+  EXPECT_TRUE(models[0].capabilities.sky_irradiance);
+  EXPECT_GT(models[0].capabilities.max_sun_zenith_deg, 80);
+  EXPECT_TRUE(std::any_of(models[0].parameters.begin(), models[0].parameters.end(),
+                          [](const ModelParameterInfo& p) { return p.name == "turbidity"; }));
+  EXPECT_TRUE(client().healthy());
+  EXPECT_EQ(client().readiness(), "ready");
+}
+
+TEST_F(SkyClient, SunFromPlaceAndTime) {
+  SunRequest request;
+  request.place_time.latitude = "42.444";
+  request.place_time.longitude = "-76.5";
+  request.place_time.time = "2013-05-27T12:00:00-04:00";
+  const SunPosition sun = client().sun(request);
+  EXPECT_GT(sun.zenith_deg, 20);
+  EXPECT_LT(sun.zenith_deg, 30);
+  EXPECT_GT(sun.azimuth_deg, 90);
+  EXPECT_LT(sun.azimuth_deg, 180);
+  EXPECT_EQ(sun.day, "normal");
+  ASSERT_TRUE(sun.sunrise.has_value());
+}
+
+TEST_F(SkyClient, RadianceOfOneViewAndOfABatchAgree) {
+  RadianceRequest one = sky(RadianceRequest{});
+  one.view = {60, 10};
+  const RadianceResult single = client().radiance(one);
+  EXPECT_EQ(single.model, "preetham");
+  EXPECT_EQ(single.unit, "W/(m2.sr.nm)");
+  EXPECT_EQ(single.grid, "bins");
+  EXPECT_EQ(single.sun.source, "given");
+  EXPECT_EQ(single.wavelengths_nm.size(), 40u);
+  ASSERT_EQ(single.samples.size(), 1u);
+  EXPECT_EQ(single.samples[0].radiance_w_m2_sr_nm.size(), 40u);
+
+  RadianceBatchRequest batch = sky(RadianceBatchRequest{});
+  batch.views = {{30, 200}, {60, 10}, {80, 100}};
+  const RadianceResult answered = client().radiance(batch);
+  ASSERT_EQ(answered.samples.size(), 3u);
+  EXPECT_DOUBLE_EQ(answered.samples[1].view.zenith_deg, 60);
+  EXPECT_DOUBLE_EQ(answered.samples[1].view.azimuth_deg, 10);
+  for (std::size_t w = 0; w < 40; ++w)
+    EXPECT_DOUBLE_EQ(answered.samples[1].radiance_w_m2_sr_nm[w],
+                     single.samples[0].radiance_w_m2_sr_nm[w]);
+}
+
+TEST_F(SkyClient, RadianceAtChosenWavelengthsAndWithModelParameters) {
+  RadianceRequest request = sky(RadianceRequest{});
+  request.view = {50, 300};
+  request.wavelengths_nm = {450, 550.5, 650};
+  const RadianceResult clear = client().radiance(request);
+  EXPECT_EQ(clear.grid, "points");
+  ASSERT_EQ(clear.wavelengths_nm, (std::vector<double>{450, 550.5, 650}));
+  request.parameters["turbidity"] = 6.0;
+  const RadianceResult hazy = client().radiance(request);
+  ASSERT_EQ(hazy.samples.size(), 1u);
+  EXPECT_NE(hazy.samples[0].radiance_w_m2_sr_nm[0], clear.samples[0].radiance_w_m2_sr_nm[0]);
+}
+
+TEST_F(SkyClient, IrradianceOnATiltedPlane) {
+  IrradianceRequest request = sky(IrradianceRequest{});
+  request.tilt_deg = 30;
+  request.surface_azimuth_deg = 180;
+  request.spectral = true;
+  const IrradianceResult result = client().irradiance(request);
+  EXPECT_DOUBLE_EQ(result.tilt_deg, 30);
+  ASSERT_TRUE(result.global.has_value());
+  ASSERT_TRUE(result.diffuse.has_value());
+  EXPECT_GT(result.global->irradiance_w_m2, 0);
+  EXPECT_GT(result.global->illuminance_lx, 0);
+  EXPECT_EQ(result.global->spectral_w_m2_nm.size(), result.wavelengths_nm.size());
+  EXPECT_FALSE(result.wavelengths_nm.empty());
+}
+
+TEST_F(SkyClient, RgbOfOneViewAndOfABatchAgree) {
+  RgbRequest one = sky(RgbRequest{});
+  one.view = {45, 90};
+  const RgbResult single = client().rgb(one);
+  EXPECT_EQ(single.method, "spectral");
+  ASSERT_EQ(single.samples.size(), 1u);
+  EXPECT_GT(single.samples[0].luminance_cd_m2, 0);
+  EXPECT_GT(single.samples[0].rgb[2], 0);
+
+  RgbBatchRequest batch = sky(RgbBatchRequest{});
+  batch.views = {{45, 90}, {10, 0}};
+  batch.method = "spectral";
+  const RgbResult answered = client().rgb(batch);
+  ASSERT_EQ(answered.samples.size(), 2u);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_DOUBLE_EQ(answered.samples[0].rgb[c], single.samples[0].rgb[c]);
+}
+
+TEST_F(SkyClient, SkydomeStreamsAnOpenExrImage) {
+  SkydomeRequest request = sky(SkydomeRequest{});
+  request.projection = "latlong";
+  request.size_px = 64;
+  std::ostringstream image;
+  const SkydomeDownload download = client().skydome(request, image);
+  EXPECT_EQ(download.content_type, "image/x-exr");
+  ASSERT_EQ(download.bytes, image.str().size());
+  // The OpenEXR magic number 20000630, little-endian (OpenEXR file layout).
+  ASSERT_GT(image.str().size(), 4u);
+  EXPECT_EQ(image.str().substr(0, 4), std::string("\x76\x2f\x31\x01", 4));
+
+  const auto file = server_->directory() / "sky.exr";
+  const SkydomeDownload saved = client().skydome_to_file(request, file);
+  EXPECT_EQ(saved.bytes, download.bytes);
+  EXPECT_EQ(std::filesystem::file_size(file), download.bytes);
+  EXPECT_FALSE(std::filesystem::exists(server_->directory() / "sky.exr.part"));
+}
+
+TEST_F(SkyClient, ARefusedSkydomeLeavesNoFile) {
+  SkydomeRequest request = sky(SkydomeRequest{});
+  request.size_px = 7;
+  const auto file = server_->directory() / "refused.exr";
+  try {
+    client().skydome_to_file(request, file);
+    FAIL() << "size 7 was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), 400) << e.what();
+    EXPECT_EQ(e.parameter(), "size") << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(file));
+  EXPECT_FALSE(std::filesystem::exists(server_->directory() / "refused.exr.part"));
+}
+
+TEST_F(SkyClient, RefusalsAreErrorsNamingTheParameter) {
+  RadianceRequest request = sky(RadianceRequest{});
+  request.view = {60, 10};
+  request.parameters["colour"] = std::string("blue");
+  try {
+    client().radiance(request);
+    FAIL() << "an unknown parameter was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), 400);
+    EXPECT_EQ(e.code(), "unknown_parameter");
+    EXPECT_EQ(e.parameter(), "colour");
+    EXPECT_FALSE(e.message().empty());
+  }
+
+  RadianceBatchRequest batch = sky(RadianceBatchRequest{});
+  batch.views = {{10, 10}, {200, 5}};
+  try {
+    client().radiance(batch);
+    FAIL() << "a view at zenith 200 was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), 400);
+    EXPECT_EQ(e.parameter(), "views[1]");
+  }
+
+  RgbRequest unknown = sky(RgbRequest{});
+  unknown.model = "nope";
+  try {
+    client().rgb(unknown);
+    FAIL() << "an unknown model was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), 404);
+    EXPECT_EQ(e.code(), "unknown_model");
+    EXPECT_EQ(e.parameter(), "model");
+  }
+}
+
+TEST_F(SkyClient, NoServerIsAConnectionError) {
+  ClientOptions options;
+  // A port nothing listens on: the server's, once it is closed, is not knowable here, so a
+  // privileged port that tests never serve.
+  options.base_url = "http://127.0.0.1:9";
+  options.connect_timeout_s = 5;
+  try {
+    Client(options).models();
+    FAIL() << "port 9 answered";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), 0);
+    EXPECT_EQ(e.code(), "connection");
+  }
+}
+
+}  // namespace
+}  // namespace clearsky::client
