@@ -10,6 +10,7 @@
 #include "models/atmosphere/atmosphere_parameter_table.h"
 #include "models/atmosphere/phase_functions.h"
 #include "models/atmosphere/solar_spectrum.h"
+#include "models/bruneton/shared_tables.h"
 #include "models/core/content_hash.h"
 #include "models/core/invalid_input.h"
 #include "models/core/ray_sphere.h"
@@ -208,56 +209,61 @@ BrunetonModel::BrunetonModel(const ModelDescriptor& descriptor, ModelConfig conf
   const bruneton::Resolution res = resolution(descriptor, this->config());
   const std::string description = table_description(this->config());
   const std::string key = cache_key(this->config());
-  std::optional<bruneton::Tables> cached;
-  if (context.cache != nullptr) {
-    if (std::optional<std::string> blob = context.cache->load(key)) {
-      cached = bruneton::deserialise_tables(*blob, description, res.sun);
+  const auto load_or_precompute = [&]() -> bruneton::Tables {
+    if (context.cache != nullptr) {
+      if (std::optional<std::string> blob = context.cache->load(key)) {
+        if (std::optional<bruneton::Tables> cached =
+                bruneton::deserialise_tables(*blob, description, res.sun)) {
+          loaded_from_cache_ = true;
+          return std::move(*cached);
+        }
+      }
     }
-  }
-  if (cached) {
-    tables_ = std::move(*cached);
-    loaded_from_cache_ = true;
-  } else {
-    tables_ = bruneton::precompute_tables(atmosphere(), res, context);
+    bruneton::Tables built = bruneton::precompute_tables(atmosphere(), res, context);
     if (context.cache != nullptr)
-      context.cache->store(key, bruneton::serialise_tables(tables_, description));
-  }
+      context.cache->store(key, bruneton::serialise_tables(built, description));
+    return built;
+  };
+  bruneton::SharedTablesResult shared =
+      bruneton::shared_tables(description, load_or_precompute, context);
+  tables_ = std::move(shared.tables);
+  shares_tables_ = !shared.made;
   descriptor_.capabilities.max_sun_zenith_deg =
-      radians_to_degrees(tables_.resolution.sun.max_sun_zenith_rad());
-  solar_ = padded(atmosphere().solar_irradiance_w_m2_nm, tables_.stride);
-  albedo_over_pi_ = padded(atmosphere().ground_albedo * (1.0 / kPi), tables_.stride);
+      radians_to_degrees(tables_->resolution.sun.max_sun_zenith_rad());
+  solar_ = padded(atmosphere().solar_irradiance_w_m2_nm, tables_->stride);
+  albedo_over_pi_ = padded(atmosphere().ground_albedo * (1.0 / kPi), tables_->stride);
   precompute_seconds_ =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void BrunetonModel::radiance(double r, double mu, double mu_s, double nu, float* out) const {
-  const bruneton::ShellGeometry& g = tables_.geometry;
-  const int stride = tables_.stride;
+  const bruneton::ShellGeometry& g = tables_->geometry;
+  const int stride = tables_->stride;
   if (!enter_atmosphere(g, r, mu, mu_s, nu)) {
     std::fill(out, out + stride, 0.0f);
     return;
   }
   r = std::clamp(r, g.bottom_m, g.top_m);
-  tables_.scattering(r, mu, mu_s, nu, atmosphere().parameters.mie_phase_g, out);
+  tables_->scattering(r, mu, mu_s, nu, atmosphere().parameters.mie_phase_g, out);
   if (mu < bruneton::horizon_mu(r, g)) add_ground(r, mu, mu_s, nu, out);
 }
 
 void BrunetonModel::add_ground(double r, double mu, double mu_s, double nu, float* out) const {
   // The ray ends on the ground: add the Lambertian reflection of the direct sun and the sky
   // there, attenuated on the way (the 2008 code's ground colour, without the sun's glint).
-  const bruneton::ShellGeometry& g = tables_.geometry;
-  const int stride = tables_.stride;
+  const bruneton::ShellGeometry& g = tables_->geometry;
+  const int stride = tables_->stride;
   const double d = distance_to_sphere_from_outside(r, mu, g.bottom_m);
   if (!std::isfinite(d)) return;
   const double mu_ground = clamp_cosine((r * mu_s + d * nu) / g.bottom_m);
   ScratchRow sun(stride), sky(stride), path(stride);
   if (mu_ground > 0.0) {
-    tables_.transmittance_to_top(g.bottom_m, mu_ground, sun.data());
+    tables_->transmittance_to_top(g.bottom_m, mu_ground, sun.data());
   } else {
     std::fill(sun.data(), sun.data() + stride, 0.0f);
   }
-  tables_.irradiance(g.bottom_m, mu_ground, sky.data());
-  tables_.transmittance_between(r, mu, d, path.data());
+  tables_->irradiance(g.bottom_m, mu_ground, sky.data());
+  tables_->transmittance_between(r, mu, d, path.data());
   const float cosine = static_cast<float>(std::max(mu_ground, 0.0));
   for (int w = 0; w < stride; ++w) {
     out[w] += albedo_over_pi_[w] * (sun.data()[w] * cosine + sky.data()[w]) * path.data()[w];
@@ -267,20 +273,20 @@ void BrunetonModel::add_ground(double r, double mu, double mu_s, double nu, floa
 void BrunetonModel::compute_sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
                                          std::span<const ViewDirection> views,
                                          SpectralBatch& out) const {
-  const bruneton::ShellGeometry& g = tables_.geometry;
+  const bruneton::ShellGeometry& g = tables_->geometry;
   const double r = g.bottom_m + viewpoint.altitude_m;
   const double mu_s = std::cos(sun.sun().zenith_rad);
   const double sin_s = std::sin(sun.sun().zenith_rad);
   const std::size_t n = wavelengths().size();
   const double mie_g = atmosphere().parameters.mie_phase_g;
-  ScratchRow value(tables_.stride);
+  ScratchRow value(tables_->stride);
   // Inside the atmosphere the altitude and sun axes of the lookup are the same for every view.
   const bool inside = r <= g.top_m;
   const double r_lookup = std::max(r, g.bottom_m);
-  const bruneton::Axis r_axis = bruneton::r_axis_4d(r_lookup, tables_.resolution, g);
+  const bruneton::Axis r_axis = bruneton::r_axis_4d(r_lookup, tables_->resolution, g);
   const bruneton::Axis mu_s_axis = bruneton::texture_axis(
-      bruneton::u_mu_s(mu_s, tables_.resolution.mu_s, tables_.resolution.sun),
-      tables_.resolution.mu_s);
+      bruneton::u_mu_s(mu_s, tables_->resolution.mu_s, tables_->resolution.sun),
+      tables_->resolution.mu_s);
   const double mu_horizon = bruneton::horizon_mu(r_lookup, g);
   for (std::size_t i = 0; i < views.size(); ++i) {
     const double mu = std::cos(views[i].zenith_rad);
@@ -288,9 +294,9 @@ void BrunetonModel::compute_sky_radiance(const SunState& sun, const Viewpoint& v
     const double nu = clamp_cosine(
         mu * mu_s + sin_v * sin_s * std::cos(views[i].azimuth_rad - sun.sun().azimuth_rad));
     if (inside) {
-      const bruneton::Coord4 c{r_axis, bruneton::mu_axis_4d(r_lookup, mu, tables_.resolution, g),
-                               mu_s_axis, bruneton::nu_axis_4d(nu, tables_.resolution)};
-      tables_.scattering(c, nu, mie_g, value.data());
+      const bruneton::Coord4 c{r_axis, bruneton::mu_axis_4d(r_lookup, mu, tables_->resolution, g),
+                               mu_s_axis, bruneton::nu_axis_4d(nu, tables_->resolution)};
+      tables_->scattering(c, nu, mie_g, value.data());
       if (mu < mu_horizon) add_ground(r_lookup, mu, mu_s, nu, value.data());
     } else {
       radiance(r, mu, mu_s, nu, value.data());
@@ -303,7 +309,7 @@ void BrunetonModel::compute_sky_radiance(const SunState& sun, const Viewpoint& v
 
 Spectrum BrunetonModel::compute_sun_irradiance(const SunState& sun,
                                                const Viewpoint& viewpoint) const {
-  const bruneton::ShellGeometry& g = tables_.geometry;
+  const bruneton::ShellGeometry& g = tables_->geometry;
   const std::size_t n = wavelengths().size();
   double r = g.bottom_m + viewpoint.altitude_m;
   double mu_s = std::cos(sun.sun().zenith_rad);
@@ -320,20 +326,20 @@ Spectrum BrunetonModel::compute_sun_irradiance(const SunState& sun,
     enter_atmosphere(g, r, mu_s, transported, 1.0);
   }
   if (mu_s < bruneton::horizon_mu(r, g)) return result;
-  ScratchRow t(tables_.stride);
-  tables_.transmittance_to_top(r, mu_s, t.data());
+  ScratchRow t(tables_->stride);
+  tables_->transmittance_to_top(r, mu_s, t.data());
   for (std::size_t w = 0; w < n; ++w) result[w] = static_cast<double>(t.data()[w]) * solar_[w];
   return result;
 }
 
 Spectrum BrunetonModel::compute_sky_irradiance(const SunState& sun, const Viewpoint& viewpoint,
                                                const PlaneOrientation& plane) const {
-  const bruneton::ShellGeometry& g = tables_.geometry;
+  const bruneton::ShellGeometry& g = tables_->geometry;
   const double r = g.bottom_m + viewpoint.altitude_m;
   if (plane.tilt_rad != 0.0 || r > g.top_m)
     return sky_irradiance_by_quadrature(sun, viewpoint, plane);
-  ScratchRow e(tables_.stride);
-  tables_.irradiance(r, std::cos(sun.sun().zenith_rad), e.data());
+  ScratchRow e(tables_->stride);
+  tables_->irradiance(r, std::cos(sun.sun().zenith_rad), e.data());
   Spectrum result(wavelengths().size(), 0.0);
   for (std::size_t w = 0; w < result.size(); ++w)
     result[w] = static_cast<double>(e.data()[w]) * solar_[w];
@@ -346,8 +352,8 @@ ScatteringAlongRay BrunetonModel::compute_aerial_perspective(const SunState& sun
                                                              double distance_m) const {
   const std::size_t n = wavelengths().size();
   ScatteringAlongRay sample{Spectrum(n, 0.0), Spectrum(n, 1.0), 0.0, false};
-  const bruneton::ShellGeometry& g = tables_.geometry;
-  const int stride = tables_.stride;
+  const bruneton::ShellGeometry& g = tables_->geometry;
+  const int stride = tables_->stride;
   double r = g.bottom_m + viewpoint.altitude_m;
   double mu = std::cos(view.zenith_rad);
   double mu_s = std::cos(sun.sun().zenith_rad);
@@ -364,10 +370,10 @@ ScatteringAlongRay BrunetonModel::compute_aerial_perspective(const SunState& sun
       far_b(stride);
   float* l = radiance_value.data();
   float* t = transmittance_value.data();
-  tables_.transmittance_between(r, mu, d, t);
+  tables_->transmittance_between(r, mu, d, t);
   if (d >= segment.end) {
     // To the end of the ray: the full in-scattered radiance.
-    tables_.scattering(r, mu, mu_s, nu, mie_g, l);
+    tables_->scattering(r, mu, mu_s, nu, mie_g, l);
   } else {
     // S(x) - T(x, x0) S(x0) (paper Eq. 11), with the 2008 code's fix near the horizon, where the
     // difference of two lookups is imprecise: interpolate between mu_h - eps and mu_h + eps.
@@ -375,8 +381,8 @@ ScatteringAlongRay BrunetonModel::compute_aerial_perspective(const SunState& sun
     auto difference = [&](double mu_used, float* out, float* scratch) {
       const double r0 = std::clamp(radius_at_distance(r, mu_used, d), g.bottom_m, g.top_m);
       const double mu0 = clamp_cosine((r * mu_used + d) / std::max(r0, 1.0));
-      tables_.scattering(r, mu_used, mu_s, nu, mie_g, out);
-      tables_.scattering(r0, mu0, mu_s0, nu, mie_g, scratch);
+      tables_->scattering(r, mu_used, mu_s, nu, mie_g, out);
+      tables_->scattering(r0, mu0, mu_s0, nu, mie_g, scratch);
       for (int w = 0; w < stride; ++w) out[w] = std::max(out[w] - t[w] * scratch[w], 0.0f);
     };
     constexpr double kHorizonEpsilon = 0.004;

@@ -58,10 +58,13 @@ class BrunetonModel : public SkyModel {
   // The descriptor it was created with, its capabilities.max_sun_zenith_deg set to what the
   // tables cover (option max_sun_zenith_deg).
   const ModelDescriptor& descriptor() const override { return descriptor_; }
-  std::size_t table_bytes() const override { return tables_.bytes(); }
-  const bruneton::Tables& tables() const { return tables_; }
+  std::size_t table_bytes() const override { return tables_->bytes(); }
+  const bruneton::Tables& tables() const { return *tables_; }
   // Whether the tables came from the cache, and the wall time to obtain them (s).
   bool loaded_from_cache() const { return loaded_from_cache_; }
+  // Whether the tables are those another live model already held (Elek and Bruneton of one
+  // configuration: one copy in memory, bruneton/shared_tables.h).
+  bool shares_tables() const { return shares_tables_; }
   double precompute_seconds() const { return precompute_seconds_; }
 
   // The table resolution a configuration selects (options of the descriptor).
@@ -103,10 +106,12 @@ class BrunetonModel : public SkyModel {
   void add_ground(double r, double mu, double mu_s, double nu, float* out) const;
 
   ModelDescriptor descriptor_;
-  bruneton::Tables tables_;
+  // Shared with every live model whose tables have the same description (shared_tables.h).
+  std::shared_ptr<const bruneton::Tables> tables_;
   std::vector<float> solar_;  // padded
   std::vector<float> albedo_over_pi_;
   bool loaded_from_cache_ = false;
+  bool shares_tables_ = false;
   double precompute_seconds_ = 0;
 };
 

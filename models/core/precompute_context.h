@@ -39,6 +39,10 @@ struct PrecomputeContext {
   // the server sets it from `serve --sun-state-memory`.
   static constexpr std::size_t kDefaultSunStateMemoryBytes = std::size_t{256} << 20;
   std::size_t sun_state_memory_bytes = kDefaultSunStateMemoryBytes;
+  // Models whose tables another live model already holds take those (Bruneton and Elek of one
+  // configuration: one copy in memory); false builds or loads them anew (benchmarks of the
+  // precomputation and of the cache, tests of the cache).
+  bool reuse_live_tables = true;
 
   void report(double fraction, std::string_view stage) const {
     if (progress) progress(fraction, stage);

@@ -398,6 +398,7 @@ TEST(BrunetonCache, RoundTripAndRejection) {
   MemoryTableCache cache;
   PrecomputeContext context;
   context.cache = &cache;
+  context.reuse_live_tables = false;  // each make() goes to the cache
   // The smallest tables that still have every part (two orders).
   ModelConfig config = small_bruneton_config(2);
   config.wavelengths = WavelengthGrid::points({550.0});
@@ -459,6 +460,7 @@ TEST(BrunetonCache, OneOrderRoundTrip) {
   MemoryTableCache cache;
   PrecomputeContext context;
   context.cache = &cache;
+  context.reuse_live_tables = false;
   ModelConfig config = small_bruneton_config(1);
   config.wavelengths = WavelengthGrid::points({550.0});
   config.options["table_r_size"] = 4;

@@ -46,10 +46,12 @@ TEST(Elek, IdenticalToBrunetonOnThePaperGrid) {
     EXPECT_EQ(e->sun_irradiance(*sun_e, {250.0}).value, b->sun_irradiance(*sun_b, {250.0}).value);
     EXPECT_EQ(e->sky_irradiance(*sun_e, {250.0}).value, b->sky_irradiance(*sun_b, {250.0}).value);
   }
-  // Same tables, shared through the cache: an Elek model loads what Bruneton stored.
+  // Same tables, shared through the cache: an Elek model loads what Bruneton stored (the live
+  // models above would otherwise lend theirs: BrunetonTablesInMemory).
   testing::MemoryTableCache cache;
   PrecomputeContext with_cache;
   with_cache.cache = &cache;
+  with_cache.reuse_live_tables = false;
   BrunetonModel::create(bruneton_descriptor(), config, with_cache);
   const auto shared = BrunetonModel::create(elek_descriptor(), config, with_cache);
   EXPECT_TRUE(shared->loaded_from_cache());
