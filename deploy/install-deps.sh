@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git clang-format
   libcpp-httplib-dev libssl-dev zlib1g-dev nlohmann-json3-dev
-  libopenexr-dev openexr libgeographiclib-dev
+  libopenexr-dev openexr libpng-dev libgeographiclib-dev
   libsqlite3-dev sqlite3 libarchive-dev p7zip-full libxxhash-dev
   prometheus-cpp-dev libspdlog-dev libcli11-dev libnlopt-cxx-dev
   libhowardhinnant-date-dev tzdata libxxhash-dev
