@@ -16,6 +16,8 @@ packages=(
   # docs/deploy.md (docs/figures/deploy-topology.dot).
   systemd graphviz
   python3-jsonschema
+  # The browser viewer's test (docs/viewer.md) drives Debian's chromium headless.
+  chromium
   # The fuzz programs (fuzz/run.sh, docs/fuzzing.md): clang 14 with its sanitizer and libFuzzer
   # runtimes; ccache keeps their rebuilds short.
   clang libclang-rt-14-dev ccache
