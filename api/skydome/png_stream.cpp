@@ -61,6 +61,12 @@ bool png_row(png_structp png, const std::uint8_t* row) {
   return true;
 }
 
+bool png_flush(png_structp png) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_write_flush(png);
+  return true;
+}
+
 bool png_end(png_structp png, png_infop info) {
   if (setjmp(png_jmpbuf(png))) return false;
   png_write_end(png, info);
@@ -120,6 +126,16 @@ void PngStream::release() {
 bool PngStream::write_row(const std::uint8_t* rgba) {
   if (failed_) return false;
   if (!png_row(static_cast<png_structp>(png_), rgba)) {
+    failed_ = true;
+    if (!aborted_) throw std::runtime_error("libpng: " + error_);
+    return false;
+  }
+  return true;
+}
+
+bool PngStream::flush() {
+  if (failed_) return false;
+  if (!png_flush(static_cast<png_structp>(png_))) {
     failed_ = true;
     if (!aborted_) throw std::runtime_error("libpng: " + error_);
     return false;

@@ -31,6 +31,10 @@ class PngStream {
 
   // One row of width x 4 bytes (R, G, B, A). False when the sink refused data.
   bool write_row(const std::uint8_t* rgba);
+  // Sends what zlib holds of the rows written so far (a sync flush: a few bytes more, so that
+  // the client sees each band as it is computed rather than every 8 KiB of compressed data).
+  // False when the sink refused data.
+  bool flush();
   // The end of the image (IEND), after the last row. False when the sink refused data.
   bool finish();
   bool aborted() const { return aborted_; }

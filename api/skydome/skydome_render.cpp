@@ -151,8 +151,8 @@ void compute_band(const SkydomeRender::Settings& s, int y0, int rows, float* ban
 }
 
 // The PNG form (format=png): each band tone-mapped (display_tone_mapping.h) into 8-bit RGBA rows,
-// alpha 255 where the model answered and 0 where it did not, each row sent through libpng as it
-// is made. False when the client stopped reading.
+// alpha 255 where the model answered and 0 where it did not, each row given to libpng as it is
+// made and each band flushed to the client. False when the client stopped reading.
 bool write_png(const SkydomeRender::Settings& s, const SkydomeRender::Sink& sink, unsigned threads,
                std::size_t* unanswered_pixels) {
   const int width = s.projection.width();
@@ -193,6 +193,7 @@ bool write_png(const SkydomeRender::Settings& s, const SkydomeRender::Sink& sink
       }
       if (!png.write_row(row.data())) return false;
     }
+    if (!png.flush()) return false;
   }
   if (!png.finish()) return false;
   if (unanswered_pixels != nullptr)

@@ -1,8 +1,12 @@
 // GET /v1/skydome?format=png over loopback: the streamed PNG decodes with libpng, has the
 // requested size, alpha 0 outside the fisheye circle, every pixel equals the direct evaluation
 // exposed, tone-mapped and sRGB-encoded (api/colour/display_tone_mapping.h), the sun's side of
-// the sky is brighter, the exposure changes the image, and bad parameters are 400s naming them.
+// the sky is brighter, the exposure changes the image, bad parameters are 400s naming them, and a
+// client leaving mid-image ends libpng's writing (its error path) with the server still serving.
+#include <arpa/inet.h>
 #include <gtest/gtest.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -153,6 +157,38 @@ TEST_F(SkydomePngTest, BadParametersAreRefusedByName) {
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 400);
   EXPECT_EQ(nlohmann::json::parse(r->body)["error"]["parameter"], "exposure");
+}
+
+TEST_F(SkydomePngTest, ClientDisconnectingMidImageLeavesTheServerServing) {
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    ASSERT_GE(fd, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<uint16_t>(port));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    ASSERT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    const std::string request = std::string("GET ") + kSky +
+                                "size=2048 HTTP/1.1\r\n"
+                                "Host: 127.0.0.1\r\n\r\n";
+    ASSERT_EQ(::send(fd, request.data(), request.size(), 0), static_cast<ssize_t>(request.size()));
+    char buffer[4096];
+    std::size_t received = 0;
+    while (received < 2000) {
+      const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
+      if (n <= 0) break;
+      received += static_cast<std::size_t>(n);
+    }
+    EXPECT_GE(received, 2000u);
+    ::close(fd);  // unread data: the kernel resets the connection, the next write fails
+  }
+  auto c = client();
+  for (int i = 0; i < 20; ++i) {
+    const auto r = c.Get("/healthz");
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 200);
+  }
+  EXPECT_EQ(fetch("size=16").width, 16);
 }
 
 }  // namespace
