@@ -14,3 +14,15 @@ if command -v ccache >/dev/null 2>&1; then
 fi
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" "$@"
 cmake --build build -j "$jobs"
+# The browser viewer (docs/viewer.md): its npm packages as package-lock.json pins them (npm ci,
+# again only when the lock file changed), bundled into build/viewer, which `clearsky serve`
+# serves at / by default.
+if command -v npm >/dev/null 2>&1; then
+  if [ ! -f viewer/node_modules/.package-lock.json ] ||
+     [ viewer/package-lock.json -nt viewer/node_modules/.package-lock.json ]; then
+    (cd viewer && npm ci --no-audit --no-fund)
+  fi
+  node viewer/build.mjs build/viewer
+else
+  echo "build.sh: npm is missing, no browser viewer (deploy/install-deps.sh installs node and npm)"
+fi

@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git clang-format
   libcpp-httplib-dev libssl-dev zlib1g-dev nlohmann-json3-dev
-  libopenexr-dev openexr libgeographiclib-dev
+  libopenexr-dev openexr libpng-dev libgeographiclib-dev
   libsqlite3-dev sqlite3 libarchive-dev p7zip-full libxxhash-dev
   prometheus-cpp-dev libspdlog-dev libcli11-dev libnlopt-cxx-dev
   libhowardhinnant-date-dev tzdata libxxhash-dev
@@ -19,6 +19,8 @@ packages=(
   # The Python client (clients/python, docs/clients.md): numpy for its arrays, OpenImageIO's
   # Python bindings for decoding skydome images in its tests.
   python3-numpy python3-openimageio
+  # The browser viewer's test (docs/viewer.md) drives Debian's chromium headless.
+  chromium
   # The fuzz programs (fuzz/run.sh, docs/fuzzing.md): clang 14 with its sanitizer and libFuzzer
   # runtimes; ccache keeps their rebuilds short.
   clang libclang-rt-14-dev ccache

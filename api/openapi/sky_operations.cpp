@@ -158,6 +158,11 @@ Json schemas() {
     "type": "string",
     "format": "binary",
     "description": "An uncompressed scan-line OpenEXR file, streamed (chunked) as it is computed: channels R, G, B (rgb), Y (luminance) or S0.<nm>nm (spectral, Fichet et al. 2021), and A, 1 where the model answered and 0 where it did not. R, G and B are never negative: out of gamut colours have their negative components clipped to 0, as the header attribute clearskyGamutMapping says."
+  },
+  "SkydomePng": {
+    "type": "string",
+    "format": "binary",
+    "description": "format=png: an 8-bit RGBA PNG (sRGB chunk), streamed (chunked) row by row as it is computed. R, G and B are the rgb image exposed, tone-mapped and sRGB-encoded; A is 255 where the model answered and 0 where it did not. tEXt chunks give the model, projection, sun angles, exposure and tone curve."
   }
 })json");
   const Json sky = sky_body_properties();
@@ -423,7 +428,7 @@ Json operations() {
   "getSkydome": {
     "operationId": "getSkydome",
     "tags": ["sky"],
-    "summary": "An OpenEXR image of the sky",
+    "summary": "An OpenEXR (or tone-mapped PNG) image of the sky",
     "description": "The whole sky as an image: fisheye (size x size, equidistant, North up, East left), latlong (size x size/2) or cubemap (size x 6 size), OpenEXR envmap conventions. Everything is checked before the first byte; then the image is computed in bands of rows (16, fewer for wide images with many channels: at most about 2 MiB of samples) and streamed (chunked).",
     "parameters": [
       {"name": "projection", "in": "query", "required": false, "description": "Image projection.", "schema": {"type": "string", "enum": ["fisheye", "latlong", "cubemap"], "default": "fisheye"}},
@@ -431,15 +436,21 @@ Json operations() {
       {"name": "channels", "in": "query", "required": false, "description": "rgb: R, G, B linear sRGB; luminance: Y in cd/m2; spectral: one channel per wavelength, W/(m2.sr.nm). Every image also has A.", "schema": {"type": "string", "enum": ["rgb", "luminance", "spectral"], "default": "rgb"}},
       {"name": "pixel_type", "in": "query", "required": false, "description": "Sample type; absent: half for rgb, float otherwise.", "schema": {"type": "string", "enum": ["half", "float"]}},
       {"name": "method", "in": "query", "required": false, "description": "channels=rgb only: as GET /v1/rgb.", "schema": {"type": "string", "enum": ["spectral", "three"], "default": "spectral"}},
-      {"name": "wavelengths", "in": "query", "required": false, "description": "channels=spectral only: as GET /v1/radiance.", "schema": {"type": "string"}}
+      {"name": "wavelengths", "in": "query", "required": false, "description": "channels=spectral only: as GET /v1/radiance.", "schema": {"type": "string"}},
+      {"name": "format", "in": "query", "required": false, "description": "exr: the radiometric OpenEXR image; png: an 8-bit sRGB display image of the rgb channels (exposure, then tone_map, then the IEC 61966-2-1 sRGB transfer function; alpha 0 where the model did not answer). png takes channels=rgb only and no pixel_type.", "schema": {"type": "string", "enum": ["exr", "png"], "default": "exr"}},
+      {"name": "exposure", "in": "query", "required": false, "description": "format=png only: the camera exposure in EV100; the luminance 1.2 x 2^exposure cd/m2 maps to 1 before the tone curve (ISO 12232 saturation-based sensitivity). 14 exposes a clear day's sky; lower it for twilight.", "schema": {"type": "number", "minimum": -10, "maximum": 24, "default": 14}},
+      {"name": "tone_map", "in": "query", "required": false, "description": "format=png only: the tone curve applied to each exposed component: aces (Narkowicz 2016's fit of the ACES filmic curve) or reinhard (x / (1 + x), Reinhard et al. 2002).", "schema": {"type": "string", "enum": ["aces", "reinhard"], "default": "aces"}}
     ],
     "responses": {
       "200": {
         "description": "The image.",
         "headers": {
-          "Content-Disposition": {"description": "inline; filename=\"sky.exr\"", "schema": {"type": "string"}}
+          "Content-Disposition": {"description": "inline; filename=\"sky.exr\" (sky.png for format=png)", "schema": {"type": "string"}}
         },
-        "content": {"image/x-exr": {"schema": {"$ref": "#/components/schemas/SkydomeImage"}}}
+        "content": {
+          "image/x-exr": {"schema": {"$ref": "#/components/schemas/SkydomeImage"}},
+          "image/png": {"schema": {"$ref": "#/components/schemas/SkydomePng"}}
+        }
       }
     }
   }

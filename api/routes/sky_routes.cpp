@@ -56,9 +56,10 @@ ApiResponse get_skydome(const ApiContext& context, const ApiRequest& request) {
   auto job = std::make_shared<const SkydomeRender>(prepare_skydome(context, request));
   auto reservation = reserve_band(context, *job);
   ApiResponse response;
-  response.content_type = "image/x-exr";
+  response.content_type = job->content_type();
   response.model_id = job->model_id();
-  response.headers.emplace_back("Content-Disposition", "inline; filename=\"sky.exr\"");
+  response.headers.emplace_back("Content-Disposition",
+                                std::string("inline; filename=\"") + job->file_name() + "\"");
   // The stream owns the reservation: it is released when the answer is destroyed, after the
   // last byte or when the connection was cut.
   response.stream = [job, reservation, warn = context.warn](const ByteSink& sink) {

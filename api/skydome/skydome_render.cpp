@@ -13,10 +13,12 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "api/colour/display_tone_mapping.h"
 #include "api/colour/srgb_gamut.h"
 #include "api/colour/xyz_weights.h"
 #include "api/handlers/sky_radiance_query.h"
 #include "api/skydome/exr_stream.h"
+#include "api/skydome/png_stream.h"
 #include "models/colour/three_wavelength_rgb.h"
 #include "models/core/parallel.h"
 
@@ -32,6 +34,10 @@ struct SkydomeRender::Settings {
   std::string channels;
   std::string method;
   bool half = true;
+  // format=png: 8-bit sRGB through display_tone_mapping.h, instead of the EXR.
+  bool png = false;
+  double exposure_ev100 = kDefaultExposureEv100;
+  ToneCurve tone_curve = ToneCurve::aces;
   std::string projection_name;
   std::unique_ptr<XyzWeights> xyz;
 };
@@ -80,6 +86,121 @@ int band_rows(const SkydomeRender::Settings& s) {
                                                   static_cast<std::size_t>(kMaxBandRows)));
 }
 
+// Rows [y0, y0 + rows) of the image into band (rows x width pixels of channel_count(s) floats,
+// channel-interleaved, the coverage A last), over the cores in pieces of kPiecePixels.
+void compute_band(const SkydomeRender::Settings& s, int y0, int rows, float* band, unsigned threads,
+                  std::atomic<int>& failed_pixels) {
+  const int width = s.projection.width();
+  const std::size_t n_channels = channel_count(s);
+  const std::size_t alpha_channel = n_channels - 1;
+  const SkyModel& model = *s.m.model;
+  const ThreeWavelengthRgb& three = three_wavelength_method();
+  const std::size_t pieces = static_cast<std::size_t>((width + kPiecePixels - 1) / kPiecePixels);
+  parallel_for(
+      static_cast<std::size_t>(rows) * pieces,
+      [&](std::size_t task) {
+        const std::size_t r = task / pieces;
+        const int y = y0 + static_cast<int>(r);
+        const int x_begin = static_cast<int>(task % pieces) * kPiecePixels;
+        const int x_end = std::min(width, x_begin + kPiecePixels);
+        std::vector<ViewDirection> views;
+        std::vector<int> columns;
+        views.reserve(static_cast<std::size_t>(x_end - x_begin));
+        for (int x = x_begin; x < x_end; ++x) {
+          SkyDirection d;
+          if (s.projection.direction(x, y, d)) {
+            views.push_back(d);
+            columns.push_back(x);
+          }
+        }
+        float* row = band + r * static_cast<std::size_t>(width) * n_channels;
+        std::fill(row + static_cast<std::size_t>(x_begin) * n_channels,
+                  row + static_cast<std::size_t>(x_end) * n_channels, 0.0f);
+        if (views.empty()) return;
+        SpectralBatch batch;
+        model.sky_radiance(*s.sun_state, s.viewpoint, views, batch);
+        for (std::size_t k = 0; k < views.size(); ++k) {
+          if (batch.status[k] != SampleStatus::ok) {
+            if (batch.status[k] != SampleStatus::view_below_horizon_unsupported) ++failed_pixels;
+            continue;
+          }
+          const auto l = batch.spectrum(k);
+          float* px = row + static_cast<std::size_t>(columns[k]) * n_channels;
+          px[alpha_channel] = 1.0f;
+          if (s.channels == "spectral") {
+            for (std::size_t c = 0; c < alpha_channel; ++c)
+              px[c] = static_cast<float>(l[s.m.indices[c]]);
+          } else if (s.method == "three") {
+            const LinearSrgb c = three.rgb(l[s.m.indices[2]], l[s.m.indices[1]], l[s.m.indices[0]]);
+            if (s.channels == "rgb") {
+              write_rgb(px, c);
+            } else {
+              px[0] = static_cast<float>(kMaxLuminousEfficacy * linear_srgb_to_xyz(c).y);
+            }
+          } else {
+            const Xyz xyz = s.xyz->xyz(l);
+            if (s.channels == "rgb") {
+              write_rgb(px, xyz_to_linear_srgb(xyz));
+            } else {
+              px[0] = static_cast<float>(kMaxLuminousEfficacy * xyz.y);
+            }
+          }
+        }
+      },
+      threads);
+}
+
+// The PNG form (format=png): each band tone-mapped (display_tone_mapping.h) into 8-bit RGBA rows,
+// alpha 255 where the model answered and 0 where it did not, each row given to libpng as it is
+// made and each band flushed to the client. False when the client stopped reading.
+bool write_png(const SkydomeRender::Settings& s, const SkydomeRender::Sink& sink, unsigned threads,
+               std::size_t* unanswered_pixels) {
+  const int width = s.projection.width();
+  const int height = s.projection.height();
+  const DisplayToneMapping display(s.exposure_ev100, s.tone_curve);
+  char exposure[32];
+  std::snprintf(exposure, sizeof exposure, "%g", s.exposure_ev100);
+  const std::vector<std::pair<std::string, std::string>> text = {
+      {"Software", "clearsky GET /v1/skydome"},
+      {"clearskyModel", s.model_id},
+      {"clearskyProjection", s.projection_name},
+      {"sunZenithDeg", std::to_string(s.sun.zenith_deg)},
+      {"sunAzimuthDeg", std::to_string(s.sun.azimuth_deg)},
+      {"clearskyExposureEV100", exposure},
+      {"clearskyToneMap", s.tone_curve == ToneCurve::aces ? "aces" : "reinhard"},
+      {"clearskyAlpha", "255 where the model answered, 0 where it did not"}};
+  PngStream png(sink, width, height, text);
+  if (png.aborted()) return false;
+  const std::size_t n_channels = channel_count(s);
+  const int rows_per_band = band_rows(s);
+  std::vector<float> band(static_cast<std::size_t>(rows_per_band) *
+                          static_cast<std::size_t>(width) * n_channels);
+  std::vector<std::uint8_t> row(static_cast<std::size_t>(width) * 4);
+  std::atomic<int> failed_pixels{0};
+  for (int y0 = 0; y0 < height; y0 += rows_per_band) {
+    const int rows = std::min(rows_per_band, height - y0);
+    compute_band(s, y0, rows, band.data(), threads, failed_pixels);
+    for (int r = 0; r < rows; ++r) {
+      const float* in = band.data() + static_cast<std::size_t>(r) * width * n_channels;
+      for (int x = 0; x < width; ++x) {
+        const float* px = in + static_cast<std::size_t>(x) * n_channels;
+        const auto rgb = display.display({px[0], px[1], px[2]});
+        std::uint8_t* out = row.data() + static_cast<std::size_t>(x) * 4;
+        out[0] = rgb[0];
+        out[1] = rgb[1];
+        out[2] = rgb[2];
+        out[3] = px[3] > 0.0f ? 255 : 0;
+      }
+      if (!png.write_row(row.data())) return false;
+    }
+    if (!png.flush()) return false;
+  }
+  if (!png.finish()) return false;
+  if (unanswered_pixels != nullptr)
+    *unanswered_pixels = static_cast<std::size_t>(failed_pixels.load());
+  return true;
+}
+
 }  // namespace
 
 std::string spectral_channel_name(double wavelength_nm) {
@@ -100,6 +221,7 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
   s->sun = parse_sun(p);
   s->viewpoint = parse_viewpoint(p);
   ModelConfig config = parse_config(p, *factory.descriptor);
+  s->png = p.choice("format", {"exr", "png"}, "exr") == "png";
   s->projection_name = p.choice("projection", {"fisheye", "latlong", "cubemap"}, "fisheye");
   const auto size_text = p.text("size");
   // 512 pixels unless the server's limit is lower: the limit bounds every image, the default
@@ -118,8 +240,17 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
   if (s->projection_name == "latlong" && size % 2 != 0)
     throw invalid_parameter("size", "must be even for latlong");
   s->channels = p.choice("channels", {"rgb", "luminance", "spectral"}, "rgb");
-  s->half =
-      p.choice("pixel_type", {"half", "float"}, s->channels == "rgb" ? "half" : "float") == "half";
+  if (s->png) {
+    // The PNG is a display image of the colour; pixel_type is the EXR's (unread: refused).
+    if (s->channels != "rgb") throw invalid_parameter("channels", "format=png takes rgb only");
+    s->half = false;
+    s->exposure_ev100 =
+        p.number_or("exposure", kDefaultExposureEv100, kMinExposureEv100, kMaxExposureEv100);
+    s->tone_curve = tone_curve_named(p.choice("tone_map", {"aces", "reinhard"}, "aces"));
+  } else {
+    s->half = p.choice("pixel_type", {"half", "float"}, s->channels == "rgb" ? "half" : "float") ==
+              "half";
+  }
   s->method = "spectral";
   if (s->channels == "rgb") s->method = p.choice("method", {"spectral", "three"}, "spectral");
   std::optional<std::vector<double>> wavelengths;
@@ -151,9 +282,20 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
 const std::string& SkydomeRender::model_id() const { return settings_->model_id; }
 int SkydomeRender::width() const { return settings_->projection.width(); }
 int SkydomeRender::height() const { return settings_->projection.height(); }
+const char* SkydomeRender::content_type() const {
+  return settings_->png ? "image/png" : "image/x-exr";
+}
+const char* SkydomeRender::file_name() const { return settings_->png ? "sky.png" : "sky.exr"; }
 
 std::size_t SkydomeRender::band_bytes() const {
   const Settings& s = *settings_;
+  if (s.png) {
+    // The float band, one 8-bit row, and libpng's and zlib's state (png_stream.h).
+    return static_cast<std::size_t>(band_rows(s)) * static_cast<std::size_t>(s.projection.width()) *
+               channel_count(s) * sizeof(float) +
+           static_cast<std::size_t>(s.projection.width()) * 4 +
+           PngStream::state_bytes(s.projection.width());
+  }
   const std::size_t line_samples =
       static_cast<std::size_t>(s.projection.width()) * channel_count(s);
   const std::size_t sample_bytes = s.half ? 2 : 4;
@@ -167,6 +309,7 @@ std::size_t SkydomeRender::band_bytes() const {
 bool SkydomeRender::write(const Sink& sink, unsigned threads,
                           std::size_t* unanswered_pixels) const {
   const Settings& s = *settings_;
+  if (s.png) return write_png(s, sink, threads, unanswered_pixels);
   const int width = s.projection.width();
   const int height = s.projection.height();
 
@@ -181,7 +324,6 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
   // Coverage: 1 where the model answered, 0 where it did not (outside the projection, below
   // the horizon of a ground-view model, outside a fitted model's domain), whose colour is 0;
   // without it such a 0 would be indistinguishable from a dark sky.
-  const std::size_t alpha_channel = names.size();
   names.push_back("A");
   const std::size_t n_channels = names.size();
   if (n_channels != channel_count(s))
@@ -227,67 +369,10 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
         static_cast<std::size_t>(rows_per_band) * static_cast<std::size_t>(width);
     std::vector<float> band_float(band_pixels * n_channels);
     std::vector<half> band_half(s.half ? band_pixels * n_channels : 0);
-    const SkyModel& model = *s.m.model;
-    const ThreeWavelengthRgb& three = three_wavelength_method();
     std::atomic<int> failed_pixels{0};
-
-    const std::size_t pieces = static_cast<std::size_t>((width + kPiecePixels - 1) / kPiecePixels);
     for (int y0 = 0; y0 < height; y0 += rows_per_band) {
       const int rows = std::min(rows_per_band, height - y0);
-      parallel_for(
-          static_cast<std::size_t>(rows) * pieces,
-          [&](std::size_t task) {
-            const std::size_t r = task / pieces;
-            const int y = y0 + static_cast<int>(r);
-            const int x_begin = static_cast<int>(task % pieces) * kPiecePixels;
-            const int x_end = std::min(width, x_begin + kPiecePixels);
-            std::vector<ViewDirection> views;
-            std::vector<int> columns;
-            views.reserve(static_cast<std::size_t>(x_end - x_begin));
-            for (int x = x_begin; x < x_end; ++x) {
-              SkyDirection d;
-              if (s.projection.direction(x, y, d)) {
-                views.push_back(d);
-                columns.push_back(x);
-              }
-            }
-            float* row = band_float.data() + r * static_cast<std::size_t>(width) * n_channels;
-            std::fill(row + static_cast<std::size_t>(x_begin) * n_channels,
-                      row + static_cast<std::size_t>(x_end) * n_channels, 0.0f);
-            if (views.empty()) return;
-            SpectralBatch batch;
-            model.sky_radiance(*s.sun_state, s.viewpoint, views, batch);
-            for (std::size_t k = 0; k < views.size(); ++k) {
-              if (batch.status[k] != SampleStatus::ok) {
-                if (batch.status[k] != SampleStatus::view_below_horizon_unsupported)
-                  ++failed_pixels;
-                continue;
-              }
-              const auto l = batch.spectrum(k);
-              float* px = row + static_cast<std::size_t>(columns[k]) * n_channels;
-              px[alpha_channel] = 1.0f;
-              if (s.channels == "spectral") {
-                for (std::size_t c = 0; c < alpha_channel; ++c)
-                  px[c] = static_cast<float>(l[s.m.indices[c]]);
-              } else if (s.method == "three") {
-                const LinearSrgb c =
-                    three.rgb(l[s.m.indices[2]], l[s.m.indices[1]], l[s.m.indices[0]]);
-                if (s.channels == "rgb") {
-                  write_rgb(px, c);
-                } else {
-                  px[0] = static_cast<float>(kMaxLuminousEfficacy * linear_srgb_to_xyz(c).y);
-                }
-              } else {
-                const Xyz xyz = s.xyz->xyz(l);
-                if (s.channels == "rgb") {
-                  write_rgb(px, xyz_to_linear_srgb(xyz));
-                } else {
-                  px[0] = static_cast<float>(kMaxLuminousEfficacy * xyz.y);
-                }
-              }
-            }
-          },
-          threads);
+      compute_band(s, y0, rows, band_float.data(), threads, failed_pixels);
 
       Imf::FrameBuffer frame;
       const std::size_t x_stride = n_channels * sample_bytes;

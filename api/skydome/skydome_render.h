@@ -18,6 +18,9 @@
 // streaming needs). Directions the model does not answer (below the horizon for ground-only models,
 // outside the fisheye circle) are 0. RGB images have no negative component: out of gamut colours
 // are clipped (api/colour/srgb_gamut.h), as the attribute clearskyGamutMapping says.
+// format=png (with exposure and tone_map, api/colour/display_tone_mapping.h) sends instead an
+// 8-bit RGBA sRGB PNG of the rgb image written row by row by libpng (api/skydome/png_stream.h),
+// alpha 0 where the model did not answer; same projections, sizes and bands.
 // prepare_skydome() checks everything (errors are ApiError, before any byte is sent).
 #pragma once
 
@@ -45,6 +48,9 @@ class SkydomeRender {
   const std::string& model_id() const;
   int width() const;
   int height() const;
+  // "image/x-exr" and "sky.exr", or "image/png" and "sky.png" (format=png).
+  const char* content_type() const;
+  const char* file_name() const;
   // The bytes write() holds for the whole answer, however slowly the sink takes them: its band
   // of rows (float, plus half when the pixels are half), one scan line in OpenEXR's line buffer
   // and one being sent (a chunk the HTTP layer copies). What the server's answer memory budget reserves (api/http/answer_memory_budget.h).

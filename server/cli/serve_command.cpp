@@ -208,6 +208,12 @@ void run_server(const server::ServerConfig& config, const std::string& software_
       "database {})",
       config.host, port, writer ? "writer" : "query", config.worker_threads(), registered.size(),
       config.cache_dir, writer ? config.db_path : std::string("none"));
+  if (server::ViewerFiles(config.viewer_dir).enabled())
+    spdlog::info("browser viewer at http://{}:{}/ from {}", config.host, port, config.viewer_dir);
+  else
+    spdlog::info(
+        "no browser viewer: {} has no index.html (deploy/build.sh builds it; docs/viewer.md)",
+        config.viewer_dir.empty() ? std::string("--viewer-dir") : config.viewer_dir);
 
   // SIGTERM or SIGINT: the graceful drain of docs/deploy.md "Graceful drain".
   std::atomic<bool> listening_ended{false};
@@ -253,6 +259,15 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   pthread_kill(signal_thread.native_handle(), SIGTERM);
   signal_thread.join();
   spdlog::info("stopped: every connection has ended");
+}
+
+// The viewer deploy/build.sh builds: viewer/ next to the executable (build/viewer for
+// build/clearsky); empty when the executable's path is unknown.
+std::string default_viewer_dir() {
+  std::error_code error;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (error) return {};
+  return (exe.parent_path() / "viewer").string();
 }
 
 }  // namespace
@@ -427,6 +442,11 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
                    "An origin browsers may call the API from, e.g. https://example.org "
                    "(repeatable; * for any; default: none)")
       ->allow_extra_args(false);
+  config->viewer_dir = default_viewer_dir();
+  command
+      ->add_option("--viewer-dir", config->viewer_dir,
+                   "Folder of the browser viewer served at / (docs/viewer.md); empty: none")
+      ->capture_default_str();
   command->callback([command, config, role, software_version] {
     config->role = *role == "query" ? server::ServerRole::query : server::ServerRole::writer;
     // One writer owns the database; a query replica must not open (or create) one.

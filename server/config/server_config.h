@@ -46,6 +46,7 @@
 // | evaluation_workers   |       | 1               | background evaluation threads (never HTTP workers)                                    |
 // | evaluation_queue     |       | 16              | evaluations waiting for a worker (503 beyond)                                         |
 // | cors_origins         |       | (none)          | origins browsers may call the API from ("*": any; docs/http-api.md)                   |
+// | viewer_dir           | path  | viewer/ by the executable | the browser viewer served at / (docs/viewer.md); empty or no index.html: none |
 // | prebuild_three       |       | true            | also build each model on the 3-wavelength grid of rgb method=three                    |
 // threads + max_queued is at most 896: cpp-httplib 0.11.4 as Debian builds it uses select(2)
 // and answers 500 on a connection whose descriptor is 1024 or more (docs/deployment.md).
@@ -107,6 +108,9 @@ struct ServerConfig {
   std::int64_t max_entry_bytes = std::int64_t{16} << 20;
   std::int64_t max_import_bytes = std::int64_t{256} << 20;
   std::vector<std::string> cors_origins;  // empty: no cross-origin access
+  // The browser viewer's folder; empty: none (clearsky serve's default: viewer/ next to the
+  // executable, where deploy/build.sh builds it).
+  std::string viewer_dir;
 
   // The most workers threads resolves to.
   unsigned worker_threads() const;

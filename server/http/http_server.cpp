@@ -216,6 +216,7 @@ HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& 
       tables_(tables),
       metrics_(metrics),
       cors_(config.cors_origins),
+      viewer_(config.viewer_dir),
       answer_memory_(config.answer_memory_bytes),
       context_{tables,
                {config.max_views, config.max_wavelengths, config.max_skydome_size},
@@ -317,6 +318,9 @@ void HttpServer::send(const httplib::Request& req, httplib::Response& res,
 void HttpServer::answer(const httplib::Request& req, httplib::Response& res,
                         const httplib::ContentReader* content) {
   const api::Route* route = current_request.match.route;
+  // A viewer file listed at start but gone since (viewer_files.h): cpp-httplib found no file.
+  if (route == nullptr && current_request.endpoint == "viewer")
+    throw api::ApiError(404, "not_found", "path", "no viewer file " + req.path);
   if (route == nullptr) throw std::logic_error("a request reached dispatch without its route");
   api::ApiRequest request = to_api_request(req);
   std::optional<UploadBodyReader> upload;
@@ -351,6 +355,21 @@ void HttpServer::answer(const httplib::Request& req, httplib::Response& res,
 void HttpServer::install() {
   httplib::Server& s = *http_;
 
+  // The browser viewer at / (docs/viewer.md): the listed files of its folder; the pre-routing
+  // handler lets only those through to the mount point.
+  if (viewer_.enabled()) {
+    // One mount per cache policy (viewer_files.h), the assets' first: cpp-httplib tries them in
+    // order and sets their headers on GET and HEAD alike. (Without an assets/ folder the first
+    // mount is refused, and nothing is lost.)
+    const auto headers = [](const char* url_path) {
+      return httplib::Headers{{"Cache-Control", ViewerFiles::cache_control(url_path)},
+                              {"Content-Security-Policy", ViewerFiles::content_security_policy()},
+                              {"X-Content-Type-Options", "nosniff"}};
+    };
+    s.set_mount_point("/assets/", viewer_.dir() + "/assets", headers("/assets/"));
+    s.set_mount_point("/", viewer_.dir(), headers("/"));
+  }
+
   // Everything decided from the head, before any body is read: the route, OPTIONS, the body a
   // route does not read, the token. A refusal leaves a pending body unread: the connection is
   // then closed (the client must not send the body as the next request).
@@ -376,6 +395,12 @@ void HttpServer::install() {
           api::error_response(body_too_large(config_.payload_max_bytes, "the request body"));
       response.headers.emplace_back("Connection", "close");
       return refuse(std::move(response));
+    }
+    // The viewer's files (viewer_files.h): cpp-httplib's mount point answers them.
+    if (!match.path_known() && (req.method == "GET" || req.method == "HEAD") &&
+        viewer_.serves(req.path)) {
+      current_request.endpoint = "viewer";
+      return HandlerResponse::Unhandled;
     }
     if (!match.path_known())
       return refuse(api::error_response(

@@ -11,6 +11,7 @@
 //   -> 500) and one error format {"error": {"code", "message", "parameter"}}, also for
 //   httplib's own errors (413 payload, bad request line);
 // - limits from ServerConfig: worker threads, bounded queue, payload, timeouts, keep-alive;
+// - the browser viewer's static files at / (viewer_files.h), when a viewer folder is given;
 // - a structured access log line per request (spdlog logger "access"), Prometheus metrics
 //   labelled by route pattern, and an "audit" line for every write with its outcome.
 // Thread-safety: start()/stop() from one controlling thread; requests run on the workers.
@@ -24,6 +25,7 @@
 #include "api/http/cors.h"
 #include "server/auth/write_auth.h"
 #include "server/config/server_config.h"
+#include "server/http/viewer_files.h"
 #include "server/metrics/metrics.h"
 #include "server/tables/table_store.h"
 
@@ -76,6 +78,7 @@ class HttpServer {
   TableStore& tables_;
   Metrics& metrics_;
   api::CorsPolicy cors_;
+  ViewerFiles viewer_;
   api::DataServices data_;
   // Before context_, which points to it.
   api::AnswerMemoryBudget answer_memory_;
