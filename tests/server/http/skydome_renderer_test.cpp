@@ -4,6 +4,7 @@
 // the pixels of the uncompressed one; photometric RGB is 683 x radiometric and its luminance
 // weights give the luminance image; the ground below the horizon and its alpha.
 #include <OpenEXR/ImfFloatAttribute.h>
+#include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfStdIO.h>
 #include <OpenEXR/ImfVecAttribute.h>
@@ -61,7 +62,8 @@ auto header_value(const std::string& bytes, const char* name) {
   Imf::InputFile file(stream);
   const auto* a = file.header().findTypedAttribute<Attribute>(name);
   EXPECT_NE(a, nullptr) << name;
-  return a ? a->value() : typename Attribute::ValueType{};
+  using Value = std::decay_t<decltype(std::declval<const Attribute&>().value())>;
+  return a ? a->value() : Value{};
 }
 
 TEST_F(SkydomeRendererTest, SunDiscCarriesTheDirectNormalIlluminance) {
