@@ -129,14 +129,14 @@ void add_sun_attributes(Imf::Header& header, const SkydomeRender::Settings& s) {
                     static_cast<float>(d.x), static_cast<float>(d.y), static_cast<float>(d.z))));
   header.insert("sunAngularRadiusDeg",
                 Imf::FloatAttribute(static_cast<float>(kSunAngularRadiusDeg)));
-  header.insert(
-      "clearskySun",
-      Imf::StringAttribute(s.options.sun == SunDisc::disc
-                               ? (s.disc && !s.disc->pixels().empty()
-                                      ? "disc: limb-darkened (Neckel and Labs 1994), its pixels "
-                                        "integrate to the direct normal irradiance"
-                                      : "disc: below the horizon, in no pixel")
-                               : "none: the sun's light is in no pixel; sunIrradiance* gives it"));
+  header.insert("clearskySun",
+                Imf::StringAttribute(
+                    s.options.sun == SunDisc::disc
+                        ? (s.disc && !s.disc->pixels().empty()
+                               ? "disc: limb-darkened (Neckel and Labs 1994), its pixels "
+                                 "integrate to the direct normal irradiance"
+                               : "disc: below the horizon, in no pixel")
+                        : "none: the sun's light is in no pixel; the sun* attributes give it"));
   if (!s.sun_irradiance) return;
   const Spectrum& e = *s.sun_irradiance;
   const double disc_sr = sun_disc_solid_angle_sr();
