@@ -59,9 +59,10 @@ def main():
     result = json.loads(lines[-1][len("CLEARSKY_SHADOW "):])
     expected = (args.sun_azimuth + 180.0) % 360.0
     error = (result["shadow_azimuth_deg"] - expected + 180.0) % 360.0 - 180.0
-    print("shadow azimuth %.1f deg (expected %.1f, error %.1f), %d shadow pixels, render %.1f s"
+    print("shadow azimuth %.1f deg (expected %.1f, error %.1f), %d shadow pixels, lit plane %.1f "
+          "(radiometric), render %.1f s"
           % (result["shadow_azimuth_deg"], expected, error, result["shadow_pixels"],
-             result["render_s"]))
+             result["lit_luminance"], result["render_s"]))
     if not (abs(error) <= args.tolerance_deg and result["shadow_pixels"] >= 10):
         print("FAIL: the shadow does not point away from the sun")
         return 1
