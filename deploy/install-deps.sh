@@ -24,6 +24,8 @@ packages=(
   # The fuzz programs (fuzz/run.sh, docs/fuzzing.md): clang 14 with its sanitizer and libFuzzer
   # runtimes; ccache keeps their rebuilds short.
   clang libclang-rt-14-dev ccache
+  # Blender renders a scene lit by a served skydome (docs/renderers.md, CTest BlenderSunShadow).
+  blender
 )
 # kubectl renders deploy/kubernetes (`kubectl kustomize`, CTest KubernetesManifests): Debian's
 # kubernetes-client, unless the machine already has a kubectl.

@@ -6,6 +6,7 @@
 // server started with --models preetham,hosek (the 503: with bruneton, its tables building).
 #include "api/openapi/openapi_area.h"
 #include "api/request/sky_request.h"
+#include "api/skydome/skydome_options.h"
 
 namespace clearsky::api::openapi {
 namespace {
@@ -157,7 +158,7 @@ Json schemas() {
   "SkydomeImage": {
     "type": "string",
     "format": "binary",
-    "description": "An uncompressed scan-line OpenEXR file, streamed (chunked) as it is computed: channels R, G, B (rgb), Y (luminance) or S0.<nm>nm (spectral, Fichet et al. 2021), and A, 1 where the model answered and 0 where it did not. R, G and B are never negative: out of gamut colours have their negative components clipped to 0, as the header attribute clearskyGamutMapping says."
+    "description": "A scan-line OpenEXR file (uncompressed, or zip or piz with a zero offset table that OpenEXR's readers rebuild), streamed (chunked) as it is computed: channels R, G, B (rgb), Y (luminance) or S0.<nm>nm (spectral, Fichet et al. 2021), and A, 1 where the image has a value (the sky, the ground of ground=albedo or model) and 0 where it has none (colour 0). Header attributes: sunDirection (OpenEXR's environment-map frame: +y up, +z North, +x West), sunAngularRadiusDeg, sunIlluminanceLx, and for rgb sunIrradianceRGB, sunRadianceRGB, sunColour, clearskyUnits and whiteLuminance. R, G and B are never negative: out of gamut colours have their negative components clipped to 0, as the header attribute clearskyGamutMapping says."
   },
   "SkydomePng": {
     "type": "string",
@@ -434,7 +435,7 @@ Json operations() {
       {"name": "projection", "in": "query", "required": false, "description": "Image projection.", "schema": {"type": "string", "enum": ["fisheye", "latlong", "cubemap"], "default": "fisheye"}},
       {"name": "size", "in": "query", "required": false, "description": "", "schema": {"type": "integer", "minimum": 8, "default": 512}},
       {"name": "channels", "in": "query", "required": false, "description": "rgb: R, G, B linear sRGB; luminance: Y in cd/m2; spectral: one channel per wavelength, W/(m2.sr.nm). Every image also has A.", "schema": {"type": "string", "enum": ["rgb", "luminance", "spectral"], "default": "rgb"}},
-      {"name": "pixel_type", "in": "query", "required": false, "description": "Sample type; absent: half for rgb, float otherwise.", "schema": {"type": "string", "enum": ["half", "float"]}},
+      {"name": "pixel_type", "in": "query", "required": false, "description": "Sample type; absent: half for rgb with sun=none and units=radiometric, float otherwise (half with sun=disc or units=photometric: 400).", "schema": {"type": "string", "enum": ["half", "float"]}},
       {"name": "method", "in": "query", "required": false, "description": "channels=rgb only: as GET /v1/rgb.", "schema": {"type": "string", "enum": ["spectral", "three"], "default": "spectral"}},
       {"name": "wavelengths", "in": "query", "required": false, "description": "channels=spectral only: as GET /v1/radiance.", "schema": {"type": "string"}},
       {"name": "format", "in": "query", "required": false, "description": "exr: the radiometric OpenEXR image; png: an 8-bit sRGB display image of the rgb channels (exposure, then tone_map, then the IEC 61966-2-1 sRGB transfer function; alpha 0 where the model did not answer). png takes channels=rgb only and no pixel_type.", "schema": {"type": "string", "enum": ["exr", "png"], "default": "exr"}},
@@ -485,6 +486,22 @@ Json operations() {
   with_sky(ops["getRgb"], {"view_zenith", "view_azimuth"}, true);
   with_sky(ops["postRgb"], {}, false);
   with_sky(ops["getSkydome"], {}, true);
+  // The renderer options, from their one table (api/skydome/skydome_options.h).
+  for (const SkydomeOptionSpec& option : skydome_option_table()) {
+    Json values = Json::array();
+    for (std::string_view v : option.values) values.push_back(std::string(v));
+    Json schema = {{"type", "string"}, {"enum", std::move(values)}};
+    if (option.name != "ground") schema["default"] = std::string(option.default_text);
+    ops["getSkydome"]["parameters"].push_back(
+        {{"name", std::string(option.name)},
+         {"in", "query"},
+         {"required", false},
+         {"description",
+          std::string(option.meaning) + (option.name == "ground"
+                                             ? " Absent: " + std::string(option.default_text) + "."
+                                             : std::string())},
+         {"schema", std::move(schema)}});
+  }
   // The sun query has no model, tables or limits: 400 only. Without time its answer is the
   // current sun, which no cache may keep (Cache-Control: no-store).
   add_revalidation(ops["getSun"]);

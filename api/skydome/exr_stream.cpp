@@ -32,6 +32,16 @@ void ExrStream::write(const char c[], int n) {
     position_ += size;
     return;
   }
+  if (position_ < sent_ && zero_table_) {
+    // The OutputFile writing its offset table at close: kept to be checked.
+    if (position_ < table_start_ || position_ + size > table_start_ + table_.size()) {
+      table_matches_ = false;
+    } else {
+      closing_table_.replace(position_ - table_start_, size, c, size);
+    }
+    position_ += size;
+    return;
+  }
   if (position_ < sent_) {
     // The OutputFile rewriting its offset table at close: it must be what was sent.
     if (position_ < table_start_ || position_ + size > table_start_ + table_.size() ||
@@ -44,6 +54,35 @@ void ExrStream::write(const char c[], int n) {
   if (position_ != sent_) throw std::logic_error("ExrStream: gap in the stream");
   send(c, size);
   position_ += size;
+}
+
+void ExrStream::start_with_zero_table(std::size_t chunk_count) {
+  const std::size_t table_bytes = 8 * chunk_count;
+  if (held_.size() < table_bytes) throw std::logic_error("ExrStream: no offset table written");
+  table_start_ = held_.size() - table_bytes;
+  table_.assign(table_bytes, '\0');
+  closing_table_.assign(table_bytes, '\0');
+  std::memcpy(held_.data() + table_start_, table_.data(), table_bytes);
+  zero_table_ = true;
+  started_ = true;
+  send(held_.data(), held_.size());
+  held_.clear();
+  held_.shrink_to_fit();
+}
+
+bool ExrStream::matches_sent_table() const {
+  if (!table_matches_) return false;
+  if (!zero_table_) return true;
+  std::uint64_t previous = table_start_ + table_.size() - 1;
+  for (std::size_t i = 0; i + 8 <= closing_table_.size(); i += 8) {
+    std::uint64_t offset = 0;
+    for (int b = 7; b >= 0; --b)
+      offset = (offset << 8) |
+               static_cast<unsigned char>(closing_table_[i + static_cast<std::size_t>(b)]);
+    if (offset <= previous || offset >= sent_) return false;
+    previous = offset;
+  }
+  return true;
 }
 
 void ExrStream::start(const std::vector<std::uint64_t>& chunk_offsets) {

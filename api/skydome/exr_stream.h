@@ -5,6 +5,9 @@
 // OutputFile constructor writes (header and the zeroed table), and start() replaces the table
 // with the computed offsets and sends it; pixels then pass straight through. The table the
 // OutputFile writes when it closes is compared with what was sent (matches_sent_table()).
+// A compressed file's table cannot be known before its pixels (exr_compression.h):
+// start_with_zero_table() sends the table as zeros, and the table the OutputFile writes when it
+// closes is checked to point at blocks that were sent, in order (matches_sent_table()).
 // A sink returning false (client gone) makes every later write throw StreamAborted.
 // Not thread-safe: one writer.
 #pragma once
@@ -36,7 +39,12 @@ class ExrStream final : public Imf::OStream {
   // Call after the OutputFile constructor: the last 8 * chunk_offsets.size() bytes written are
   // the offset table, replaced by chunk_offsets; sends everything held back.
   void start(const std::vector<std::uint64_t>& chunk_offsets);
-  bool matches_sent_table() const { return table_matches_; }
+  // Call after the OutputFile constructor: the last 8 * chunk_count bytes written are the offset
+  // table, sent as zeros (OpenEXR's readers rebuild it), with everything held back.
+  void start_with_zero_table(std::size_t chunk_count);
+  // Uncompressed: the table OpenEXR wrote on close is the one sent. Zero table: it was written
+  // whole, its offsets increase and each lies within what was sent.
+  bool matches_sent_table() const;
   bool aborted() const { return aborted_; }
   std::uint64_t bytes_sent() const { return sent_; }
 
@@ -48,6 +56,8 @@ class ExrStream final : public Imf::OStream {
   bool started_ = false;
   bool aborted_ = false;
   bool table_matches_ = true;
+  bool zero_table_ = false;
+  std::string closing_table_;  // with a zero table: the table OpenEXR wrote when it closed
   std::uint64_t position_ = 0;
   std::uint64_t sent_ = 0;
   std::uint64_t table_start_ = 0;

@@ -30,7 +30,19 @@ class SkydomeProjection {
   // The direction pixel (x, y) sees, or false when it sees none (outside the fisheye circle).
   bool direction(int x, int y, SkyDirection& out) const;
 
+  // The pixel whose sample position is nearest to direction d (the inverse of direction()), or
+  // false when no pixel sees it (outside the fisheye circle). Used to place the solar disc.
+  bool pixel(const SkyDirection& d, int& x, int& y) const;
+  // Solid angle of pixel (x, y), sr: the area of the pixel's cell in the projection's own
+  // coordinates times the projection's Jacobian at its sample position (fisheye: equidistant,
+  // latlong: cos(latitude) with OpenEXR's spacing pi/(height-1) and 2 pi/(width-1), cubemap:
+  // 1/(1 + a^2 + b^2)^(3/2) on the face with spacing 2/(size-1)). The solar disc divides its
+  // irradiance by it, so that a pixel's radiance times its solid angle is the light it carries.
+  double pixel_solid_angle_sr(int x, int y) const;
+
   static SkyDirection from_openexr_frame(double x, double y, double z);
+  // The inverse: OpenEXR's frame (+y up, +z North, +x West) of a direction.
+  static Vec3 to_openexr_frame(const SkyDirection& d);
 
  private:
   Projection projection_;
@@ -42,6 +54,8 @@ class SkydomeProjection {
     double origin_x, origin_y, xx, xy, yx, yy;
   };
   std::array<FaceMap, 6> faces_{};
+  // Cube map: the position in face f of image pixel (x, y).
+  void face_position(int x, int y, int f, double& px, double& py) const;
 };
 
 }  // namespace clearsky::api

@@ -9,6 +9,7 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/ImfVecAttribute.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -17,8 +18,12 @@
 #include "api/colour/srgb_gamut.h"
 #include "api/colour/xyz_weights.h"
 #include "api/handlers/sky_radiance_query.h"
+#include "api/skydome/exr_compression.h"
 #include "api/skydome/exr_stream.h"
 #include "api/skydome/png_stream.h"
+#include "api/skydome/skydome_ground.h"
+#include "api/skydome/skydome_options.h"
+#include "api/skydome/sun_disc.h"
 #include "models/colour/three_wavelength_rgb.h"
 #include "models/core/parallel.h"
 
@@ -40,6 +45,12 @@ struct SkydomeRender::Settings {
   ToneCurve tone_curve = ToneCurve::aces;
   std::string projection_name;
   std::unique_ptr<XyzWeights> xyz;
+  SkydomeOptions options;
+  // The model's direct normal irradiance, W/(m2.nm) on its grid, when it has one for this sun
+  // above the horizon (the header's sun attributes; the disc).
+  std::optional<Spectrum> sun_irradiance;
+  std::unique_ptr<SolarDiscPixels> disc;  // sun=disc
+  Spectrum ground_radiance;               // ground=albedo, W/(m2.sr.nm) on the model's grid
 };
 
 namespace {
@@ -58,12 +69,13 @@ constexpr const char* kGamutMapping =
     "negative linear sRGB components clipped to 0 (out of gamut colours); other values as "
     "computed";
 
-// R, G, B of a pixel, mapped into the sRGB gamut (api/colour/srgb_gamut.h).
-void write_rgb(float* pixel, const LinearSrgb& colour) {
+// R, G, B of a pixel, mapped into the sRGB gamut (api/colour/srgb_gamut.h), times scale (683
+// lm/W for units=photometric, 1 for radiometric).
+void write_rgb(float* pixel, const LinearSrgb& colour, double scale) {
   const LinearSrgb c = clip_to_srgb_gamut(colour).rgb;
-  pixel[0] = static_cast<float>(c.r);
-  pixel[1] = static_cast<float>(c.g);
-  pixel[2] = static_cast<float>(c.b);
+  pixel[0] = static_cast<float>(scale * c.r);
+  pixel[1] = static_cast<float>(scale * c.g);
+  pixel[2] = static_cast<float>(scale * c.b);
 }
 
 const ThreeWavelengthRgb& three_wavelength_method() {
@@ -86,8 +98,84 @@ int band_rows(const SkydomeRender::Settings& s) {
                                                   static_cast<std::size_t>(kMaxBandRows)));
 }
 
+std::string ground_name(Ground ground) {
+  switch (ground) {
+    case Ground::albedo:
+      return "albedo";
+    case Ground::model:
+      return "model";
+    case Ground::none:
+      break;
+  }
+  return "none";
+}
+
+std::string alpha_rule(Ground ground) {
+  switch (ground) {
+    case Ground::albedo:
+      return "A = 1 where the sky or the Lambertian ground has a value (below the horizon: "
+             "albedo / pi x the model's sun and sky irradiance), 0 where the model did not "
+             "answer (colour 0)";
+    case Ground::model:
+      return "A = 1 where the model answered (below the horizon: its own ground), 0 where it did "
+             "not (colour 0)";
+    case Ground::none:
+      break;
+  }
+  return "A = 1 where the model answered above the horizon, 0 below the horizon and where it did "
+         "not answer (colour 0)";
+}
+
+// The sun in the header (docs/renderers.md): its direction in OpenEXR's environment-map frame,
+// its disc, and its direct normal irradiance and the disc's mean radiance in the image's units.
+void add_sun_attributes(Imf::Header& header, const SkydomeRender::Settings& s) {
+  const Vec3 d = SkydomeProjection::to_openexr_frame(SkyDirection{s.sun.sun});
+  header.insert("sunDirection",
+                Imf::V3fAttribute(IMATH_NAMESPACE::V3f(
+                    static_cast<float>(d.x), static_cast<float>(d.y), static_cast<float>(d.z))));
+  header.insert("sunAngularRadiusDeg",
+                Imf::FloatAttribute(static_cast<float>(kSunAngularRadiusDeg)));
+  header.insert("clearskySun",
+                Imf::StringAttribute(
+                    s.options.sun == SunDisc::disc
+                        ? (s.disc && !s.disc->pixels().empty()
+                               ? "disc: limb-darkened (Neckel and Labs 1994), its pixels "
+                                 "integrate to the direct normal irradiance"
+                               : "disc: below the horizon, in no pixel")
+                        : "none: the sun's light is in no pixel; the sun* attributes give it"));
+  if (!s.sun_irradiance) return;
+  const Spectrum& e = *s.sun_irradiance;
+  const double disc_sr = sun_disc_solid_angle_sr();
+  // Direct normal illuminance, lx, and the colour of the direct light.
+  Xyz xyz{};
+  if (s.method == "three") {
+    const LinearSrgb c =
+        three_wavelength_method().rgb(e[s.m.indices[2]], e[s.m.indices[1]], e[s.m.indices[0]]);
+    xyz = linear_srgb_to_xyz(c);
+  } else {
+    xyz = s.xyz->xyz(e.values());
+  }
+  header.insert("sunIlluminanceLx",
+                Imf::FloatAttribute(static_cast<float>(kMaxLuminousEfficacy * xyz.y)));
+  if (s.channels == "rgb") {
+    const double scale = s.options.units == PixelUnits::photometric ? kMaxLuminousEfficacy : 1.0;
+    const LinearSrgb c = clip_to_srgb_gamut(xyz_to_linear_srgb(xyz)).rgb;
+    const auto v3 = [](double r, double g, double b) {
+      return Imf::V3fAttribute(IMATH_NAMESPACE::V3f(static_cast<float>(r), static_cast<float>(g),
+                                                    static_cast<float>(b)));
+    };
+    header.insert("sunIrradianceRGB", v3(scale * c.r, scale * c.g, scale * c.b));
+    header.insert("sunRadianceRGB",
+                  v3(scale * c.r / disc_sr, scale * c.g / disc_sr, scale * c.b / disc_sr));
+    const double y = 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+    if (y > 0.0) header.insert("sunColour", v3(c.r / y, c.g / y, c.b / y));
+  }
+}
+
 // Rows [y0, y0 + rows) of the image into band (rows x width pixels of channel_count(s) floats,
-// channel-interleaved, the coverage A last), over the cores in pieces of kPiecePixels.
+// channel-interleaved, the coverage A last), over the cores in pieces of kPiecePixels: the sky
+// the model answers, the ground below the horizon (skydome_options.h) and the sun's disc
+// (sun_disc.h). Both writers (the EXR and the PNG) take their pixels from here.
 void compute_band(const SkydomeRender::Settings& s, int y0, int rows, float* band, unsigned threads,
                   std::atomic<int>& failed_pixels) {
   const int width = s.projection.width();
@@ -95,6 +183,28 @@ void compute_band(const SkydomeRender::Settings& s, int y0, int rows, float* ban
   const std::size_t alpha_channel = n_channels - 1;
   const SkyModel& model = *s.m.model;
   const ThreeWavelengthRgb& three = three_wavelength_method();
+  const double rgb_scale = s.options.units == PixelUnits::photometric ? kMaxLuminousEfficacy : 1.0;
+  // One pixel's channels from its spectral radiance on the model's grid; A = 1.
+  const auto write_pixel = [&](float* px, std::span<const double> l) {
+    px[alpha_channel] = 1.0f;
+    if (s.channels == "spectral") {
+      for (std::size_t c = 0; c < alpha_channel; ++c) px[c] = static_cast<float>(l[s.m.indices[c]]);
+    } else if (s.method == "three") {
+      const LinearSrgb c = three.rgb(l[s.m.indices[2]], l[s.m.indices[1]], l[s.m.indices[0]]);
+      if (s.channels == "rgb") {
+        write_rgb(px, c, rgb_scale);
+      } else {
+        px[0] = static_cast<float>(kMaxLuminousEfficacy * linear_srgb_to_xyz(c).y);
+      }
+    } else {
+      const Xyz xyz = s.xyz->xyz(l);
+      if (s.channels == "rgb") {
+        write_rgb(px, xyz_to_linear_srgb(xyz), rgb_scale);
+      } else {
+        px[0] = static_cast<float>(kMaxLuminousEfficacy * xyz.y);
+      }
+    }
+  };
   const std::size_t pieces = static_cast<std::size_t>((width + kPiecePixels - 1) / kPiecePixels);
   parallel_for(
       static_cast<std::size_t>(rows) * pieces,
@@ -104,47 +214,45 @@ void compute_band(const SkydomeRender::Settings& s, int y0, int rows, float* ban
         const int x_begin = static_cast<int>(task % pieces) * kPiecePixels;
         const int x_end = std::min(width, x_begin + kPiecePixels);
         std::vector<ViewDirection> views;
-        std::vector<int> columns;
+        std::vector<int> columns, ground_columns;
         views.reserve(static_cast<std::size_t>(x_end - x_begin));
         for (int x = x_begin; x < x_end; ++x) {
           SkyDirection d;
-          if (s.projection.direction(x, y, d)) {
-            views.push_back(d);
-            columns.push_back(x);
+          if (!s.projection.direction(x, y, d)) continue;
+          // Below the horizon (skydome_options.h): hidden, the albedo ground, or the model.
+          if (d.zenith_rad > 0.5 * kPi && s.options.ground != Ground::model) {
+            if (s.options.ground == Ground::albedo) ground_columns.push_back(x);
+            continue;
           }
+          views.push_back(d);
+          columns.push_back(x);
         }
         float* row = band + r * static_cast<std::size_t>(width) * n_channels;
         std::fill(row + static_cast<std::size_t>(x_begin) * n_channels,
                   row + static_cast<std::size_t>(x_end) * n_channels, 0.0f);
-        if (views.empty()) return;
         SpectralBatch batch;
-        model.sky_radiance(*s.sun_state, s.viewpoint, views, batch);
+        if (!views.empty()) model.sky_radiance(*s.sun_state, s.viewpoint, views, batch);
+        const bool disc_row = s.disc && s.disc->covers_row(y);
+        std::vector<double> with_sun;
+        const auto emit = [&](int x, std::span<const double> l) {
+          if (disc_row) {
+            if (const SolarDiscPixels::Pixel* sun_pixel = s.disc->find(x, y)) {
+              with_sun.assign(l.begin(), l.end());
+              for (std::size_t w = 0; w < with_sun.size(); ++w)
+                with_sun[w] += sun_pixel->radiance[w];
+              l = with_sun;
+            }
+          }
+          float* px = row + static_cast<std::size_t>(x) * n_channels;
+          write_pixel(px, l);
+        };
+        for (int x : ground_columns) emit(x, s.ground_radiance.values());
         for (std::size_t k = 0; k < views.size(); ++k) {
           if (batch.status[k] != SampleStatus::ok) {
             if (batch.status[k] != SampleStatus::view_below_horizon_unsupported) ++failed_pixels;
             continue;
           }
-          const auto l = batch.spectrum(k);
-          float* px = row + static_cast<std::size_t>(columns[k]) * n_channels;
-          px[alpha_channel] = 1.0f;
-          if (s.channels == "spectral") {
-            for (std::size_t c = 0; c < alpha_channel; ++c)
-              px[c] = static_cast<float>(l[s.m.indices[c]]);
-          } else if (s.method == "three") {
-            const LinearSrgb c = three.rgb(l[s.m.indices[2]], l[s.m.indices[1]], l[s.m.indices[0]]);
-            if (s.channels == "rgb") {
-              write_rgb(px, c);
-            } else {
-              px[0] = static_cast<float>(kMaxLuminousEfficacy * linear_srgb_to_xyz(c).y);
-            }
-          } else {
-            const Xyz xyz = s.xyz->xyz(l);
-            if (s.channels == "rgb") {
-              write_rgb(px, xyz_to_linear_srgb(xyz));
-            } else {
-              px[0] = static_cast<float>(kMaxLuminousEfficacy * xyz.y);
-            }
-          }
+          emit(columns[k], batch.spectrum(k));
         }
       },
       threads);
@@ -240,16 +348,37 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
   if (s->projection_name == "latlong" && size % 2 != 0)
     throw invalid_parameter("size", "must be even for latlong");
   s->channels = p.choice("channels", {"rgb", "luminance", "spectral"}, "rgb");
+  s->options = parse_skydome_options(p, s->channels == "rgb", *factory.descriptor);
   if (s->png) {
-    // The PNG is a display image of the colour; pixel_type is the EXR's (unread: refused).
+    // The PNG is a display image of the colour; pixel_type and compression are the EXR's, and
+    // its scale is the exposure (of radiometric values): all three refused.
     if (s->channels != "rgb") throw invalid_parameter("channels", "format=png takes rgb only");
+    if (s->options.units == PixelUnits::photometric)
+      throw invalid_parameter("units",
+                              "format=png is exposed from radiometric values (exposure); "
+                              "units=photometric is the EXR's");
+    if (s->options.compression != ExrCompression::none)
+      throw invalid_parameter("compression",
+                              "format=png is always deflate-compressed; "
+                              "compression is the EXR's");
     s->half = false;
     s->exposure_ev100 =
         p.number_or("exposure", kDefaultExposureEv100, kMinExposureEv100, kMaxExposureEv100);
     s->tone_curve = tone_curve_named(p.choice("tone_map", {"aces", "reinhard"}, "aces"));
   } else {
-    s->half = p.choice("pixel_type", {"half", "float"}, s->channels == "rgb" ? "half" : "float") ==
-              "half";
+    // half (at most 65504) holds a radiometric sky, not the sun's disc (about 1e7 W/(m2.sr)) nor
+    // photometric values (the sky near the sun reaches 1e5 cd/m2): float is their default, and
+    // half with them a 400 rather than infinities.
+    const bool needs_float =
+        s->options.sun == SunDisc::disc || s->options.units == PixelUnits::photometric;
+    s->half = p.choice("pixel_type", {"half", "float"},
+                       s->channels == "rgb" && !needs_float ? "half" : "float") == "half";
+    if (s->half && needs_float) {
+      throw invalid_parameter("pixel_type", s->options.sun == SunDisc::disc
+                                                ? "half cannot hold the sun's disc (sun=disc): use "
+                                                  "float"
+                                                : "half cannot hold photometric values: use float");
+    }
   }
   s->method = "spectral";
   if (s->channels == "rgb") s->method = p.choice("method", {"spectral", "three"}, "spectral");
@@ -276,6 +405,26 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
   checked_sky_radiance(context.models, s->m.model, s->sun, s->viewpoint, zenith);
   s->sun_state = prepare_sun(context.models, s->m.model, s->sun);
   s->xyz = std::make_unique<XyzWeights>(s->m.model->wavelengths());
+  const SkyModel& model = *s->m.model;
+  // The sun's light, for the disc and the header: only while some of the disc is above the
+  // horizon (the ground hides the rest).
+  const bool sun_visible = s->sun.zenith_deg < 90.0 + kSunAngularRadiusDeg;
+  if (sun_visible && model.descriptor().capabilities.sun_irradiance) {
+    const SpectralSample direct = model.sun_irradiance(*s->sun_state, s->viewpoint);
+    if (direct.status == SampleStatus::ok) s->sun_irradiance = direct.value;
+    if (s->options.sun == SunDisc::disc) require_answer(direct.status, "sun", s->model_id);
+  } else if (sun_visible && s->options.sun == SunDisc::disc) {
+    throw cannot_answer("sun", s->model_id, "it does not compute the direct sun irradiance");
+  }
+  if (s->options.sun == SunDisc::disc && s->sun_irradiance) {
+    const WavelengthGrid& grid = model.wavelengths();
+    std::vector<double> nm(grid.size());
+    for (std::size_t w = 0; w < grid.size(); ++w) nm[w] = grid[w];
+    s->disc = std::make_unique<SolarDiscPixels>(s->projection, SkyDirection{s->sun.sun}, nm,
+                                                *s->sun_irradiance);
+  }
+  if (s->options.ground == Ground::albedo)
+    s->ground_radiance = lambertian_ground_radiance(model, *s->sun_state, s->viewpoint);
   return SkydomeRender(std::move(s));
 }
 
@@ -294,7 +443,7 @@ std::size_t SkydomeRender::band_bytes() const {
     return static_cast<std::size_t>(band_rows(s)) * static_cast<std::size_t>(s.projection.width()) *
                channel_count(s) * sizeof(float) +
            static_cast<std::size_t>(s.projection.width()) * 4 +
-           PngStream::state_bytes(s.projection.width());
+           PngStream::state_bytes(s.projection.width()) + (s.disc ? s.disc->memory_bytes() : 0);
   }
   const std::size_t line_samples =
       static_cast<std::size_t>(s.projection.width()) * channel_count(s);
@@ -302,8 +451,15 @@ std::size_t SkydomeRender::band_bytes() const {
   const std::size_t band_samples = static_cast<std::size_t>(band_rows(s)) * line_samples;
   // Besides the band: the scan line in OpenEXR's line buffer, and the scan line the sink is
   // sending (the HTTP layer copies each write into a chunk while the client reads it).
-  return band_samples * sizeof(float) + (s.half ? band_samples * sample_bytes : 0) +
-         2 * line_samples * sample_bytes;
+  const std::size_t line_bytes = line_samples * sample_bytes;
+  // Compressed: OpenEXR's block and compressor buffers, and a compressed block being sent.
+  const std::size_t writer_bytes =
+      s.options.compression == ExrCompression::none
+          ? 2 * line_bytes
+          : compressor_bytes(s.options.compression, line_bytes) +
+                static_cast<std::size_t>(lines_per_block(s.options.compression)) * line_bytes;
+  return band_samples * sizeof(float) + (s.half ? band_samples * sample_bytes : 0) + writer_bytes +
+         (s.disc ? s.disc->memory_bytes() : 0);
 }
 
 bool SkydomeRender::write(const Sink& sink, unsigned threads,
@@ -332,16 +488,16 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
   const std::size_t sample_bytes = s.half ? 2 : 4;
 
   Imf::Header header(width, height);
-  header.compression() = Imf::NO_COMPRESSION;
+  header.compression() = openexr_compression(s.options.compression);
   header.lineOrder() = Imf::INCREASING_Y;
   for (const auto& name : names) header.channels().insert(name, Imf::Channel(type));
   header.insert("clearskyModel", Imf::StringAttribute(s.model_id));
   header.insert("clearskyProjection", Imf::StringAttribute(s.projection_name));
   header.insert("sunZenithDeg", Imf::FloatAttribute(static_cast<float>(s.sun.zenith_deg)));
   header.insert("sunAzimuthDeg", Imf::FloatAttribute(static_cast<float>(s.sun.azimuth_deg)));
-  header.insert(
-      "clearskyAlpha",
-      Imf::StringAttribute("A = 1 where the model answered, 0 where it did not (colour 0)"));
+  header.insert("clearskyAlpha", Imf::StringAttribute(alpha_rule(s.options.ground)));
+  header.insert("clearskyGround", Imf::StringAttribute(ground_name(s.options.ground)));
+  add_sun_attributes(header, s);
   header.insert("observerAltitudeM",
                 Imf::FloatAttribute(static_cast<float>(s.viewpoint.altitude_m)));
   if (s.projection.projection() == Projection::latlong) Imf::addEnvmap(header, Imf::ENVMAP_LATLONG);
@@ -350,6 +506,14 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
     Imf::addChromaticities(header, Imf::Chromaticities());  // Rec. 709 primaries = sRGB, D65
     header.insert("clearskyColourMethod", Imf::StringAttribute(s.method));
     header.insert("clearskyGamutMapping", Imf::StringAttribute(kGamutMapping));
+    const bool photometric = s.options.units == PixelUnits::photometric;
+    header.insert("clearskyUnits",
+                  Imf::StringAttribute(photometric ? "photometric: cd.m^-2 (683 lm/W x "
+                                                     "radiometric; luminance = 0.2126 R + 0.7152 "
+                                                     "G + 0.0722 B)"
+                                                   : "radiometric: Y in W.m^-2.sr^-1"));
+    // OpenEXR's standard attribute: the luminance, cd/m2, of R = G = B = 1.
+    Imf::addWhiteLuminance(header, photometric ? 1.0f : static_cast<float>(kMaxLuminousEfficacy));
   }
   if (s.channels == "luminance") header.insert("luminanceUnits", Imf::StringAttribute("cd.m^-2"));
   if (s.channels == "spectral") {
@@ -361,7 +525,12 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
   try {
     Imf::OutputFile file(stream, header, 0);
     const std::uint64_t line_bytes = static_cast<std::uint64_t>(width) * n_channels * sample_bytes;
-    stream.start(uncompressed_chunk_offsets(stream.tellp(), height, line_bytes));
+    if (s.options.compression == ExrCompression::none) {
+      stream.start(uncompressed_chunk_offsets(stream.tellp(), height, line_bytes));
+    } else {
+      const int block = lines_per_block(s.options.compression);
+      stream.start_with_zero_table(static_cast<std::size_t>((height + block - 1) / block));
+    }
 
     // One band of rows: channel-interleaved float, then converted to half when asked.
     const int rows_per_band = band_rows(s);

@@ -13,11 +13,15 @@
 // parameters of sky_request.h (model, sun or place and time, altitude, atmosphere). Spectral images
 // follow Fichet, Pacanowski and Wilkie 2021, "An OpenEXR Layout for Spectral Images" (JCGT 10(3)):
 // emissive channels "S0.<nm with comma decimals>nm" (e.g. S0.550,000000nm) in W/(m2.sr.nm),
-// attributes spectralLayoutVersion = "1.0" and emissiveUnits = "W.m^-2.sr^-1". Files are
-// uncompressed scan lines (the only layout whose offset table is known before the pixels, which
-// streaming needs). Directions the model does not answer (below the horizon for ground-only models,
-// outside the fisheye circle) are 0. RGB images have no negative component: out of gamut colours
-// are clipped (api/colour/srgb_gamut.h), as the attribute clearskyGamutMapping says.
+// attributes spectralLayoutVersion = "1.0" and emissiveUnits = "W.m^-2.sr^-1". The renderer
+// options sun, ground, units and compression are the table of api/skydome/skydome_options.h:
+// the solar disc (sun_disc.h), the ground below the horizon (skydome_ground.h), photometric RGB
+// and OpenEXR compression (exr_compression.h; uncompressed scan lines by default, whose offset
+// table is known before the pixels). Directions the model does not answer (outside the fisheye
+// circle, below the horizon without a ground) are 0 with A = 0. RGB images have no negative
+// component: out of gamut colours are clipped (api/colour/srgb_gamut.h), as the attribute
+// clearskyGamutMapping says. pixel_type defaults to half for radiometric RGB without the sun's
+// disc, float otherwise (half cannot hold the disc or photometric values: 400).
 // format=png (with exposure and tone_map, api/colour/display_tone_mapping.h) sends instead an
 // 8-bit RGBA sRGB PNG of the rgb image written row by row by libpng (api/skydome/png_stream.h),
 // alpha 0 where the model did not answer; same projections, sizes and bands.

@@ -141,6 +141,20 @@ TEST_F(SkydomePngTest, LatlongAndCubemapHaveTheirSizes) {
   EXPECT_EQ(cube.height, 96);
 }
 
+// The renderer options that apply to the display image as to the EXR (one band computation):
+// the albedo ground fills the lower half of a latlong image, which is transparent without it.
+TEST_F(SkydomePngTest, TheAlbedoGroundAppliesToThePng) {
+  const DecodedPng sky = fetch("size=32&projection=latlong&ground=none");
+  const DecodedPng ground = fetch("size=32&projection=latlong&ground=albedo");
+  ASSERT_EQ(sky.height, 16);
+  ASSERT_EQ(ground.height, 16);
+  const int below = 14;  // a row well below the horizon
+  EXPECT_EQ(sky.pixel(5, below)[3], 0);
+  EXPECT_EQ(ground.pixel(5, below)[3], 255);
+  EXPECT_GT(ground.pixel(5, below)[0] + ground.pixel(5, below)[1] + ground.pixel(5, below)[2], 0);
+  EXPECT_EQ(sky.pixel(5, 2)[3], 255);
+}
+
 TEST_F(SkydomePngTest, BadParametersAreRefusedByName) {
   EXPECT_EQ(refusal("size=32&exposure=99"), std::make_pair(400, std::string("exposure")));
   EXPECT_EQ(refusal("size=32&exposure=-11"), std::make_pair(400, std::string("exposure")));
@@ -149,6 +163,10 @@ TEST_F(SkydomePngTest, BadParametersAreRefusedByName) {
   EXPECT_EQ(refusal("size=32&tone_map=filmic"), std::make_pair(400, std::string("tone_map")));
   EXPECT_EQ(refusal("size=32&channels=spectral"), std::make_pair(400, std::string("channels")));
   EXPECT_EQ(refusal("size=32&pixel_type=half"), std::make_pair(400, std::string("pixel_type")));
+  // The EXR's renderer options that a display image cannot honour (docs/http-api.md "The PNG
+  // skydome"): photometric units (the exposure is the scale) and OpenEXR compression.
+  EXPECT_EQ(refusal("size=32&units=photometric"), std::make_pair(400, std::string("units")));
+  EXPECT_EQ(refusal("size=32&compression=zip"), std::make_pair(400, std::string("compression")));
   EXPECT_EQ(refusal("size=999999").second, "size");
   // The EXR takes no exposure: an unused parameter is refused (docs/request-parsing.md).
   auto c = client();
