@@ -54,7 +54,9 @@ SkyPatchScheme::SkyPatchScheme(int subdivision) : subdivision_(subdivision) {
 }
 
 std::size_t SkyPatchScheme::patch_of(double altitude_rad, double azimuth_rad) const {
-  if (!(altitude_rad >= 0.0)) return 0;
+  if (!std::isfinite(altitude_rad) || !std::isfinite(azimuth_rad))
+    throw std::invalid_argument("sky patch of a direction that is not finite");
+  if (altitude_rad < 0.0) return 0;
   const int bands = 7 * subdivision_;
   const int r = static_cast<int>(std::floor(altitude_rad / band_height_rad_));
   if (r >= bands) return patches_.size();  // the cap, the last patch

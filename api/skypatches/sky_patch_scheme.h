@@ -50,7 +50,8 @@ class SkyPatchScheme {
   // Sky patches plus the ground.
   std::size_t patch_count() const { return patches_.size() + 1; }
   // Radiance's number (1 ..) of the sky patch holding the direction (altitude in [0, pi / 2],
-  // azimuth clockwise from North, any turn); 0 (the ground) for an altitude below 0.
+  // azimuth clockwise from North, any turn); 0 (the ground) for an altitude below 0;
+  // std::invalid_argument for a direction that is not finite.
   std::size_t patch_of(double altitude_rad, double azimuth_rad) const;
 
  private:

@@ -27,8 +27,9 @@ TEST(SkyPatchScheme, CountsAreRadiances) {
 
 TEST(SkyPatchScheme, SolidAnglesSumToTheHemisphere) {
   for (int mf = 1; mf <= kMaxSkyPatchSubdivision; ++mf) {
+    const SkyPatchScheme scheme(mf);
     double sum = 0.0;
-    for (const SkyPatch& p : SkyPatchScheme(mf).sky_patches()) {
+    for (const SkyPatch& p : scheme.sky_patches()) {
       EXPECT_GT(p.solid_angle_sr, 0.0);
       sum += p.solid_angle_sr;
     }
@@ -80,6 +81,8 @@ TEST(SkyPatchScheme, PatchOfFindsEachPatchFromInside) {
     }
     EXPECT_EQ(scheme.patch_of(0.5 * kPi, 1.0), patches.size());
     EXPECT_EQ(scheme.patch_of(-0.01, 1.0), 0u);
+    EXPECT_THROW(scheme.patch_of(0.1, std::nan("")), std::invalid_argument);
+    EXPECT_THROW(scheme.patch_of(std::nan(""), 0.0), std::invalid_argument);
   }
 }
 
