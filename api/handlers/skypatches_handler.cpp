@@ -10,7 +10,7 @@
 // | mf                 | -    | 1        | [1, 6], integer            | Reinhart's subdivision (scheme=reinhart only)  |
 // | sun                | -    | separate | separate, patch            | the sun as its own source, or in its patch     |
 // | output             | -    | spectral | spectral, rgb, luminance   | W/(m2.sr.nm); Radiance RGB, W/(m2.sr); cd/m2   |
-// | wavelengths        | nm   | model's  | as on /v1/radiance         | output=spectral only                           |
+// | wavelengths        | nm   | model's  | as on /v1/radiance         | output=spectral only; patches x wavelengths <= 1e6 (413) |
 // | ground_reflectance | -    | 0.2      | [0, 1]                     | patch 0: Lambertian ground (gendaymtx's -g)    |
 // | format             | -    | json     | json, csv                  | csv: one row per patch (the sun last, if separate) |
 // clang-format on
@@ -19,6 +19,7 @@
 // and model parameters. Fitted models (clamp_negative_fit) default to clamping here: a patch
 // average is an integral, and like the sky irradiance it takes the physical limit of no light
 // where the fit goes negative (models/core/fit_domain.h).
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -101,12 +102,22 @@ ApiResponse skypatches(const ApiContext& context, const ApiRequest& request) {
   const double ground_reflectance = p.number_or("ground_reflectance", 0.2, 0.0, 1.0);
   const std::string format = p.choice("format", {"json", "csv"}, "json");
   p.reject_unused();
+  const SkyPatchScheme scheme(mf);
+  // Bounded answers: at most kMaxPatchValues numbers (patches x wavelengths), e.g. MF 6 with 192
+  // wavelengths or Tregenza with 2000. A spectral MF 6 vector on 1881 wavelengths was a 195 MB
+  // JSON body and a 640 MB peak; 1e6 values are about 20 MB.
+  constexpr std::size_t kMaxPatchValues = 1000000;
+  if (wavelengths && scheme.patch_count() * wavelengths->size() > kMaxPatchValues) {
+    throw too_large("wavelengths", "at most " + std::to_string(kMaxPatchValues) +
+                                       " values (patches x wavelengths) per sky vector; " +
+                                       std::to_string(scheme.patch_count()) + " patches x " +
+                                       std::to_string(wavelengths->size()) + " wavelengths");
+  }
 
   const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config),
                                              wavelengths, request.requester());
   const SkyModel& model = *m.model;
   const auto state = prepare_sun(context.models, m.model, sun);
-  const SkyPatchScheme scheme(mf);
   const PatchQuadratureOrder order = default_patch_quadrature_order(scheme);
   const SkyPatchVector vector = compute_sky_patch_vector(
       model, *state, viewpoint, scheme, order,

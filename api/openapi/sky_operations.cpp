@@ -496,7 +496,7 @@ Json operations() {
       {"name": "mf", "in": "query", "required": false, "description": "scheme=reinhart only: Reinhart's subdivision of each Tregenza patch into mf x mf.", "schema": {"type": "integer", "minimum": 1, "maximum": 6, "default": 1}},
       {"name": "sun", "in": "query", "required": false, "description": "separate: the sun's disk as its own source (sun_source); patch: its direct normal irradiance divided by the solid angle of the patch holding it, added to that patch.", "schema": {"type": "string", "enum": ["separate", "patch"], "default": "separate"}},
       {"name": "output", "in": "query", "required": false, "description": "spectral: W/(m2.sr.nm) per wavelength; rgb: Radiance's RGB, W/(m2.sr); luminance: cd/m2.", "schema": {"type": "string", "enum": ["spectral", "rgb", "luminance"], "default": "spectral"}},
-      {"name": "wavelengths", "in": "query", "required": false, "description": "output=spectral only: as GET /v1/radiance.", "schema": {"type": "string"}},
+      {"name": "wavelengths", "in": "query", "required": false, "description": "output=spectral only: as GET /v1/radiance; at most 1,000,000 values per vector (patches x wavelengths; above: 413).", "schema": {"type": "string"}},
       {"name": "ground_reflectance", "in": "query", "required": false, "description": "Reflectance of the Lambertian ground of patch 0 (gendaymtx's -g).", "schema": {"type": "number", "minimum": 0, "maximum": 1, "default": 0.2}},
       {"name": "format", "in": "query", "required": false, "description": "json, or csv: patch,altitude_deg,azimuth_deg,solid_angle_sr and the values, one row per patch from 0, then a row named sun when sun=separate and the sun is up.", "schema": {"type": "string", "enum": ["json", "csv"], "default": "json"}}
     ],

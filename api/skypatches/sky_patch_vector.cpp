@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <span>
 
 namespace clearsky::api {
 
@@ -40,14 +41,6 @@ SkyPatchVector compute_sky_patch_vector(const SkyModel& model, const SunState& s
 
   const PatchQuadrature q = patch_quadrature(scheme, order, sun_direction);
   out.directions = q.views.size();
-  SpectralBatch batch;
-  model.sky_radiance(sun, viewpoint, q.views, batch);
-  for (SampleStatus s : batch.status) {
-    if (s != SampleStatus::ok) {
-      out.status = s;
-      return out;
-    }
-  }
   if (sun_up) {
     const SpectralSample direct = model.sun_irradiance(sun, viewpoint);
     if (direct.status != SampleStatus::ok) {
@@ -60,10 +53,33 @@ SkyPatchVector compute_sky_patch_vector(const SkyModel& model, const SunState& s
   const auto patches = scheme.sky_patches();
   out.patches.assign(scheme.patch_count(), Spectrum(n, 0.0));
   Spectrum diffuse_exact(n, 0.0);  // the quadrature's own cosine-weighted sum, for the ground
+  // The radiance is queried for whole patches at a time, at most about kBatchDirections
+  // directions per batch, so the memory a request holds does not grow with directions x
+  // wavelengths (21,712 directions for MF 6 times up to --max-wavelengths).
+  constexpr std::size_t kBatchDirections = 2048;
+  SpectralBatch batch;
+  std::size_t batch_first_patch = 0;
+  std::size_t batch_end_patch = 0;
   for (std::size_t p = 0; p < patches.size(); ++p) {
+    if (p == batch_end_patch) {
+      batch_first_patch = p;
+      batch_end_patch = p + 1;
+      while (batch_end_patch < patches.size() &&
+             q.first[batch_end_patch + 1] - q.first[p] <= kBatchDirections)
+        ++batch_end_patch;
+      const std::span<const ViewDirection> views(q.views.data() + q.first[p],
+                                                 q.first[batch_end_patch] - q.first[p]);
+      model.sky_radiance(sun, viewpoint, views, batch);
+      for (SampleStatus s : batch.status) {
+        if (s != SampleStatus::ok) {
+          out.status = s;
+          return out;
+        }
+      }
+    }
     Spectrum& average = out.patches[p + 1];
     for (std::size_t node = q.first[p]; node < q.first[p + 1]; ++node) {
-      const auto spectrum = batch.spectrum(node);
+      const auto spectrum = batch.spectrum(node - q.first[batch_first_patch]);
       const double w = q.weights_sr[node];
       const double w_cos = w * std::cos(q.views[node].zenith_rad);
       for (std::size_t i = 0; i < n; ++i) {

@@ -14,6 +14,8 @@
 // irradiance of the sky the vector stands for, each patch uniformly at its value, the sum over
 // the sky patches of value x projected solid angle (the integral of cos(zenith) over the
 // patch), sun excluded.
+// The radiance is queried a few thousand directions at a time, so the memory held is bounded by
+// the answer (patches x wavelengths), not by the quadrature's nodes x wavelengths.
 // Pure given the model; thread-safe (the model's queries are).
 #pragma once
 

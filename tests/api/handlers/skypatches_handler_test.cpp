@@ -171,6 +171,8 @@ TEST_F(SkyPatchesHandler, RefusalsNameTheParameter) {
   refused({{"ground_reflectance", "1.5"}}, 400, "ground_reflectance");
   refused({{"format", "xml"}}, 400, "format");
   refused({{"view_zenith", "10"}}, 400, "view_zenith");
+  // 5186 patches x 200 wavelengths is above the 1e6 values of one sky vector.
+  refused({{"scheme", "reinhart"}, {"mf", "6"}, {"wavelengths", "400:599:1"}}, 413, "wavelengths");
   const ApiResponse below =
       call({{"model", "testsky"}, {"sun_zenith", "100"}, {"sun_azimuth", "0"}});
   EXPECT_EQ(below.status, 422) << below.body;
