@@ -14,5 +14,7 @@ ApiResponse radiance(const ApiContext& context, const ApiRequest& request);
 ApiResponse irradiance(const ApiContext& context, const ApiRequest& request);
 // GET (one view) and POST (a batch in the body).
 ApiResponse rgb(const ApiContext& context, const ApiRequest& request);
+// GET: a sky vector over Tregenza or Reinhart patches (skypatches_handler.cpp).
+ApiResponse skypatches(const ApiContext& context, const ApiRequest& request);
 
 }  // namespace clearsky::api

@@ -46,6 +46,8 @@ nlohmann::ordered_json sun_answer_to_json(const PlaceTime& request, const SunAns
       {"transit", time_or_null(answer.times.transit_utc_s)},
       {"sunset", time_or_null(answer.times.sunset_utc_s)},
       {"day", day_kind_name(answer.times.day_kind)},
+      {"delta_t_s", request.position.delta_t_s},
+      {"delta_t_source", request.delta_t_from_time ? "espenak_meeus" : "given"},
   };
 }
 

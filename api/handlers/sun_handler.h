@@ -2,9 +2,11 @@
 // (api/request/place_time.h), compute the position and the day's sunrise/transit/sunset with
 // SPA, encode the answer (GET /v1/sun and `clearsky sun --json`):
 //   {"zenith": DEG, "azimuth": DEG, "sunrise": ISO|null, "transit": ISO, "sunset": ISO|null,
-//    "day": "normal"|"polar_day"|"polar_night"}
+//    "day": "normal"|"polar_day"|"polar_night", "delta_t_s": S,
+//    "delta_t_source": "espenak_meeus"|"given"}
 // zenith topocentric (refraction applied unless refraction=false), azimuth clockwise from North,
-// times ISO 8601 in the request's UTC offset, null in polar day or night.
+// times ISO 8601 in the request's UTC offset, null in polar day or night; delta_t_s the TT - UT1
+// SPA used, computed from the time (models/solar/delta_t.h) unless the request gave delta_t.
 #pragma once
 
 #include <nlohmann/json.hpp>

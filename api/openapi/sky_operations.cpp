@@ -16,7 +16,7 @@ Json schemas() {
   "Sun": {
     "type": "object",
     "description": "The sun from NREL SPA and the local day's sunrise, transit and sunset (ISO 8601 in the request's UTC offset; null in polar day or night).",
-    "required": ["zenith", "azimuth", "sunrise", "transit", "sunset", "day"],
+    "required": ["zenith", "azimuth", "sunrise", "transit", "sunset", "day", "delta_t_s", "delta_t_source"],
     "additionalProperties": false,
     "properties": {
       "zenith": {"type": "number", "minimum": 0, "maximum": 180, "description": "Topocentric zenith angle, degrees (refraction applied unless refraction=false)."},
@@ -24,7 +24,9 @@ Json schemas() {
       "sunrise": {"type": "string", "nullable": true},
       "transit": {"type": "string", "nullable": true},
       "sunset": {"type": "string", "nullable": true},
-      "day": {"type": "string", "enum": ["normal", "polar_day", "polar_night"]}
+      "day": {"type": "string", "enum": ["normal", "polar_day", "polar_night"]},
+      "delta_t_s": {"type": "number", "description": "TT - UT1 used by SPA, seconds: the request's delta_t, or the Espenak-Meeus expression for the year and month of time (years -1999 to 3000)."},
+      "delta_t_source": {"type": "string", "enum": ["espenak_meeus", "given"]}
     }
   },
   "SunUsed": {
@@ -90,6 +92,10 @@ Json schemas() {
     "type": "string",
     "description": "format=csv: a header line, then one row per view and wavelength: view_zenith_deg,view_azimuth_deg,wavelength_nm,radiance_w_m2_sr_nm."
   },
+  "SkyPatchesCsv": {
+    "type": "string",
+    "description": "format=csv: a header line (patch,altitude_deg,azimuth_deg,solid_angle_sr, then L_<nm>nm per wavelength, R,G,B, or luminance_cd_m2), one row per patch from 0 (the ground) in Radiance's order, then a row named sun with the sun's disk when sun=separate and the sun is up."
+  },
   "RgbSample": {
     "type": "object",
     "required": ["view_zenith_deg", "view_azimuth_deg", "rgb", "gamut_clipped", "luminance_cd_m2"],
@@ -153,6 +159,66 @@ Json schemas() {
       "direct": {"$ref": "#/components/schemas/IrradianceComponent"},
       "diffuse": {"$ref": "#/components/schemas/IrradianceComponent"},
       "global": {"$ref": "#/components/schemas/IrradianceComponent"}
+    }
+  },
+  "SkyPatches": {
+    "type": "object",
+    "description": "A sky vector in Radiance's patch order (docs/building-energy.md): patch 0 the ground (rho x global horizontal / pi), then the Tregenza or Reinhart patches from the horizon band up, each band from North (azimuth 0) clockwise, the zenith cap last. value: the radiance averaged over the patch's solid angle (a Gauss-Legendre quadrature over the patch): W/(m2.sr.nm) per wavelength (spectral), Radiance RGB in W/(m2.sr) (rgb), or cd/m2 (luminance).",
+    "required": ["model", "model_version", "sun", "altitude_m", "scheme", "mf", "patch_count", "sun_handling", "sun_patch", "output", "unit", "ground_reflectance", "integrated_range_nm", "diffuse_horizontal_w_m2", "quadrature", "patches", "sun_source"],
+    "additionalProperties": false,
+    "properties": {
+      "model": {"type": "string"},
+      "model_version": {"type": "string"},
+      "sun": {"$ref": "#/components/schemas/SunUsed"},
+      "altitude_m": {"type": "number"},
+      "scheme": {"type": "string", "enum": ["tregenza", "reinhart"]},
+      "mf": {"type": "integer", "minimum": 1, "maximum": 6},
+      "patch_count": {"type": "integer", "description": "Patches with the ground: 146 (Tregenza, MF 1), 578, 1298, 2306, 3602, 5186."},
+      "sun_handling": {"type": "string", "enum": ["separate", "patch"]},
+      "sun_patch": {"type": "integer", "minimum": 0, "description": "The patch holding the sun's centre; 0 with the sun below the horizon."},
+      "output": {"type": "string", "enum": ["spectral", "rgb", "luminance"]},
+      "unit": {"type": "string"},
+      "ground_reflectance": {"type": "number"},
+      "integrated_range_nm": {"type": "array", "minItems": 2, "maxItems": 2, "items": {"type": "number"}},
+      "diffuse_horizontal_w_m2": {"type": "number", "description": "The horizontal irradiance of the vector's sky, each patch uniform at its value: value x projected solid angle summed over the sky patches, integrated over integrated_range_nm; the sun excluded."},
+      "quadrature": {
+        "type": "object",
+        "required": ["nodes_per_side", "near_sun_nodes_per_side", "near_sun_deg", "directions"],
+        "additionalProperties": false,
+        "properties": {"nodes_per_side": {"type": "integer"}, "near_sun_nodes_per_side": {"type": "integer"}, "near_sun_deg": {"type": "number"}, "directions": {"type": "integer"}}
+      },
+      "wavelengths_nm": {"type": "array", "items": {"type": "number"}, "description": "output=spectral."},
+      "gamut_clipped_values": {"type": "integer", "description": "output=rgb: values with a negative component clipped to 0."},
+      "gamut_mapping": {"type": "string"},
+      "patches": {
+        "type": "array",
+        "items": {
+          "type": "object",
+          "required": ["patch", "altitude_deg", "azimuth_deg", "solid_angle_sr", "value"],
+          "additionalProperties": false,
+          "properties": {
+            "patch": {"type": "integer", "minimum": 0},
+            "altitude_deg": {"type": "number", "description": "Centre altitude; the ground: -90."},
+            "azimuth_deg": {"type": "number", "description": "Centre azimuth, clockwise from North."},
+            "solid_angle_sr": {"type": "number"},
+            "value": {"oneOf": [{"type": "number"}, {"type": "array", "items": {"type": "number"}}]}
+          }
+        }
+      },
+      "sun_source": {
+        "type": "object",
+        "nullable": true,
+        "description": "sun=separate with the sun above the horizon: the sun's disk as a source (direction in Radiance's frame: x East, y North, z up); null otherwise.",
+        "required": ["altitude_deg", "azimuth_deg", "direction", "solid_angle_sr", "value"],
+        "additionalProperties": false,
+        "properties": {
+          "altitude_deg": {"type": "number"},
+          "azimuth_deg": {"type": "number"},
+          "direction": {"type": "array", "minItems": 3, "maxItems": 3, "items": {"type": "number"}},
+          "solid_angle_sr": {"type": "number"},
+          "value": {"oneOf": [{"type": "number"}, {"type": "array", "items": {"type": "number"}}]}
+        }
+      }
     }
   },
   "SkydomeImage": {
@@ -297,7 +363,7 @@ Json operations() {
       {"name": "altitude", "in": "query", "required": false, "description": "Observer elevation above sea level, m.", "schema": {"type": "number", "minimum": -6500000, "default": 0}},
       {"name": "pressure", "in": "query", "required": false, "description": "Annual mean pressure for refraction, mbar.", "schema": {"type": "number", "minimum": 0, "maximum": 5000, "default": 1013.25}},
       {"name": "temperature", "in": "query", "required": false, "description": "Annual mean temperature for refraction, degrees Celsius, above -273.", "schema": {"type": "number", "minimum": -273, "exclusiveMinimum": true, "maximum": 6000, "default": 15}},
-      {"name": "delta_t", "in": "query", "required": false, "description": "TT - UT1, seconds.", "schema": {"type": "number", "minimum": -8000, "maximum": 8000, "default": 69}},
+      {"name": "delta_t", "in": "query", "required": false, "description": "TT - UT1, seconds; absent: Delta T of the year and month of time by the Espenak-Meeus expressions (years -1999 to 3000; later years need delta_t).", "schema": {"type": "number", "minimum": -8000, "maximum": 8000}},
       {"name": "delta_ut1", "in": "query", "required": false, "description": "UT1 - UTC, seconds.", "schema": {"type": "number", "minimum": -1, "exclusiveMinimum": true, "maximum": 1, "exclusiveMaximum": true, "default": 0}},
       {"name": "refraction", "in": "query", "required": false, "description": "Apply atmospheric refraction (true/false or 1/0).", "schema": {"type": "boolean", "default": true}}
     ],
@@ -306,7 +372,7 @@ Json operations() {
         "description": "The sun.",
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/Sun"},
-          "example": {"zenith": 26.652540765126872, "azimuth": 136.0464246389158, "sunrise": "2013-05-27T05:34:08-04:00", "transit": "2013-05-27T13:03:10-04:00", "sunset": "2013-05-27T20:32:40-04:00", "day": "normal"}
+          "example": {"zenith": 26.652537342158503, "azimuth": 136.04644213319017, "sunrise": "2013-05-27T05:34:08-04:00", "transit": "2013-05-27T13:03:10-04:00", "sunset": "2013-05-27T20:32:40-04:00", "day": "normal", "delta_t_s": 68.228843453125, "delta_t_source": "espenak_meeus"}
         }}
       },
       "400": {
@@ -426,6 +492,30 @@ Json operations() {
       }
     }
   },
+  "getSkyPatches": {
+    "operationId": "getSkyPatches",
+    "tags": ["sky"],
+    "summary": "A sky vector over Tregenza or Reinhart patches",
+    "description": "The model's sky averaged over each patch of Radiance's Tregenza (145 + ground) or Reinhart (MF 1 to 6) subdivision, in the order of reinhart.cal and gendaymtx, for multiplication with daylight coefficients (rfluxmtx, dctimestep; docs/building-energy.md). The sun is its own source (sun=separate) or folded into the patch holding it (sun=patch). JSON, or CSV with one row per patch.",
+    "parameters": [
+      {"name": "scheme", "in": "query", "required": false, "description": "tregenza (145 patches and the ground) or reinhart (with mf).", "schema": {"type": "string", "enum": ["tregenza", "reinhart"], "default": "tregenza"}},
+      {"name": "mf", "in": "query", "required": false, "description": "scheme=reinhart only: Reinhart's subdivision of each Tregenza patch into mf x mf.", "schema": {"type": "integer", "minimum": 1, "maximum": 6, "default": 1}},
+      {"name": "sun", "in": "query", "required": false, "description": "separate: the sun's disk as its own source (sun_source); patch: its direct normal irradiance divided by the solid angle of the patch holding it, added to that patch.", "schema": {"type": "string", "enum": ["separate", "patch"], "default": "separate"}},
+      {"name": "output", "in": "query", "required": false, "description": "spectral: W/(m2.sr.nm) per wavelength; rgb: Radiance's RGB, W/(m2.sr); luminance: cd/m2.", "schema": {"type": "string", "enum": ["spectral", "rgb", "luminance"], "default": "spectral"}},
+      {"name": "wavelengths", "in": "query", "required": false, "description": "output=spectral only: as GET /v1/radiance; at most 1,000,000 values per vector (patches x wavelengths; above: 413).", "schema": {"type": "string"}},
+      {"name": "ground_reflectance", "in": "query", "required": false, "description": "Reflectance of the Lambertian ground of patch 0 (gendaymtx's -g).", "schema": {"type": "number", "minimum": 0, "maximum": 1, "default": 0.2}},
+      {"name": "format", "in": "query", "required": false, "description": "json, or csv: patch,altitude_deg,azimuth_deg,solid_angle_sr and the values, one row per patch from 0, then a row named sun when sun=separate and the sun is up.", "schema": {"type": "string", "enum": ["json", "csv"], "default": "json"}}
+    ],
+    "responses": {
+      "200": {
+        "description": "The sky vector.",
+        "content": {
+          "application/json": {"schema": {"$ref": "#/components/schemas/SkyPatches"}},
+          "text/csv": {"schema": {"$ref": "#/components/schemas/SkyPatchesCsv"}}
+        }
+      }
+    }
+  },
   "getSkydome": {
     "operationId": "getSkydome",
     "tags": ["sky"],
@@ -502,6 +592,7 @@ Json operations() {
                                              : std::string())},
          {"schema", std::move(schema)}});
   }
+  with_sky(ops["getSkyPatches"], {}, true);
   // The sun query has no model, tables or limits: 400 only. Without time its answer is the
   // current sun, which no cache may keep (Cache-Control: no-store).
   add_revalidation(ops["getSun"]);

@@ -137,8 +137,8 @@ Json place_parameters() {
   },
   "delta_t": {
     "name": "delta_t", "in": "query", "required": false,
-    "description": "TT - UT1, seconds (with lat, lon and time).",
-    "schema": {"type": "number", "minimum": -8000, "maximum": 8000, "default": 69}
+    "description": "TT - UT1, seconds (with lat, lon and time); absent: Delta T of the year and month of time by the Espenak-Meeus expressions (years -1999 to 3000; later years need delta_t).",
+    "schema": {"type": "number", "minimum": -8000, "maximum": 8000}
   },
   "refraction": {
     "name": "refraction", "in": "query", "required": false,

@@ -9,6 +9,7 @@
 #include "api/parse/coordinates.h"
 #include "api/parse/iso8601_time.h"
 #include "models/core/invalid_input.h"
+#include "models/solar/delta_t.h"
 
 namespace clearsky::api {
 
@@ -16,6 +17,9 @@ namespace {
 
 using Kind = PlaceTimeKind;
 using In = SolarPositionInput;
+
+// The default of delta_t: computed from the request's time (place_time.h).
+constexpr std::string_view kFromTime = "from time";
 
 // The table of place_time.h (a test compares the two).
 // clang-format off
@@ -32,7 +36,8 @@ constexpr PlaceTimeParameter kParameters[] = {
      "annual mean local pressure, for refraction", &In::pressure_mbar},
     {"temperature", Kind::number, "Celsius", "15", {-273.0, 6000.0, true, false},
      "annual mean local temperature, for refraction", &In::temperature_c},
-    {"delta_t", Kind::number, "s", "69", {-8000.0, 8000.0}, "TT - UT1", &In::delta_t_s},
+    {"delta_t", Kind::number, "s", "from time", {-8000.0, 8000.0},
+     "TT - UT1; absent: Espenak-Meeus for the year", &In::delta_t_s},
     {"delta_ut1", Kind::number, "s", "0", {-1.0, 1.0, true, true}, "UT1 - UTC", &In::delta_ut1_s},
     {"refraction", Kind::boolean, "bool", "true", {}, "apply atmospheric refraction to the zenith",
      nullptr},
@@ -142,6 +147,16 @@ PlaceTime parse_place_and_time(Parameters& p, std::optional<double> now_unix_s) 
         in.refraction = p.boolean_or(std::string(r.name), r.fallback == "true");
         break;
       case Kind::number:
+        if (r.fallback == kFromTime && !p.text(std::string(r.name))) {
+          // delta_t, by the table's row order read after time (models/solar/delta_t.h).
+          try {
+            in.*r.field = espenak_meeus_delta_t_at_s(in.unix_time_utc_s);
+          } catch (const InvalidInput& e) {
+            throw from_invalid_input(e);
+          }
+          out.delta_t_from_time = true;
+          break;
+        }
         in.*r.field = number_of(p, r);
         break;
     }

@@ -5,19 +5,23 @@
 // tests/api/request/place_time_table_test.cpp reads this comment and compares the two.
 //
 // clang-format off
-// | parameter   | unit     | default  | range           | meaning                                                 |
-// |-------------|----------|----------|-----------------|---------------------------------------------------------|
-// | lat         | degree   | required | [-90, 90]       | latitude, North positive: decimal or DMS (42d26'36"N)   |
-// | lon         | degree   | required | [-180, 180]     | longitude, East positive: decimal or DMS (76d28'55"W)   |
-// | time        | ISO 8601 | now      | years [0, 6000] | instant with offset or Z (2013-05-27T11:45:00-04:00)    |
-// | altitude    | m        | 0        | [-500, 1e7]     | observer above sea level (also the sky's viewpoint)     |
-// | pressure    | mbar     | 1013.25  | [0, 5000]       | annual mean local pressure, for refraction              |
-// | temperature | Celsius  | 15       | (-273, 6000]    | annual mean local temperature, for refraction           |
-// | delta_t     | s        | 69       | [-8000, 8000]   | TT - UT1                                                |
-// | delta_ut1   | s        | 0        | (-1, 1)         | UT1 - UTC                                               |
-// | refraction  | bool     | true     | true/false      | apply atmospheric refraction to the zenith              |
+// | parameter   | unit     | default   | range           | meaning                                                 |
+// |-------------|----------|-----------|-----------------|---------------------------------------------------------|
+// | lat         | degree   | required  | [-90, 90]       | latitude, North positive: decimal or DMS (42d26'36"N)   |
+// | lon         | degree   | required  | [-180, 180]     | longitude, East positive: decimal or DMS (76d28'55"W)   |
+// | time        | ISO 8601 | now       | years [0, 6000] | instant with offset or Z (2013-05-27T11:45:00-04:00)    |
+// | altitude    | m        | 0         | [-500, 1e7]     | observer above sea level (also the sky's viewpoint)     |
+// | pressure    | mbar     | 1013.25   | [0, 5000]       | annual mean local pressure, for refraction              |
+// | temperature | Celsius  | 15        | (-273, 6000]    | annual mean local temperature, for refraction           |
+// | delta_t     | s        | from time | [-8000, 8000]   | TT - UT1; absent: Espenak-Meeus for the year            |
+// | delta_ut1   | s        | 0         | (-1, 1)         | UT1 - UTC                                               |
+// | refraction  | bool     | true      | true/false      | apply atmospheric refraction to the zenith              |
 // clang-format on
 //
+// delta_t defaults to Delta T of the request's year and month by the Espenak-Meeus expressions
+// (models/solar/delta_t.h); for a year after 3000, where none is published, a request without
+// delta_t is refused naming delta_t. The value used is PlaceTime::position.delta_t_s, and
+// delta_t_from_time says whether it was computed.
 // time defaults to now on GET /v1/sun and `clearsky sun`; the sky endpoints require it (a GET
 // answer there is cacheable, so it must not depend on the clock). Years are those of the
 // instant in UTC; SPA itself covers -2000 to 6000, the ISO 8601 parser
@@ -70,8 +74,9 @@ std::span<const PlaceTimeParameter> place_time_parameters();
 
 struct PlaceTime {
   SolarPositionInput position;
-  int utc_offset_min = 0;      // of the request's time; the local day of sunrise/sunset
-  bool utc_designator = true;  // the time was given with Z (or defaulted to now)
+  int utc_offset_min = 0;          // of the request's time; the local day of sunrise/sunset
+  bool utc_designator = true;      // the time was given with Z (or defaulted to now)
+  bool delta_t_from_time = false;  // position.delta_t_s computed (Espenak-Meeus), not given
 };
 
 // The current instant, seconds since 1970-01-01T00:00:00Z (the default of time).

@@ -30,6 +30,7 @@ constexpr std::array kRoutes = {
   Route{"GET",    "/v1/rgb",                           "getRgb",              rgb,                  none,   kOpen,  deterministic},
   Route{"POST",   "/v1/rgb",                           "postRgb",             rgb,                  json,   kOpen,  no_store},
   Route{"GET",    "/v1/skydome",                       "getSkydome",          get_skydome,          none,   kOpen,  deterministic},
+  Route{"GET",    "/v1/skypatches",                    "getSkyPatches",       skypatches,           none,   kOpen,  deterministic},
   Route{"GET",    "/v1/datasets",                      "listDatasets",        list_datasets_route,  none,   kOpen,  no_store},
   Route{"POST",   "/v1/datasets",                      "importDataset",       import_dataset_route, upload, kToken, no_store},
   Route{"GET",    "/v1/datasets/{name}",               "getDataset",          get_dataset_route,    none,   kOpen,  no_store},

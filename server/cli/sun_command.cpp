@@ -33,7 +33,7 @@ constexpr SunOption kSunOptions[] = {
     {"pressure", "--pressure", "Annual mean local pressure for refraction, mbar (default 1013.25)"},
     {"temperature", "--temperature",
      "Annual mean local temperature for refraction, Celsius (default 15)"},
-    {"delta_t", "--delta-t", "TT - UT1, s (default 69)"},
+    {"delta_t", "--delta-t", "TT - UT1, s (default: Espenak-Meeus for the year)"},
     {"delta_ut1", "--delta-ut1", "UT1 - UTC, s (default 0)"},
 };
 
@@ -66,6 +66,8 @@ void print_text(const api::PlaceTime& request, const api::SunAnswer& answer) {
   out << "zenith   " << answer.position.zenith_deg << " degrees (topocentric"
       << (request.position.refraction ? ", with refraction" : ", without refraction") << ")\n";
   out << "azimuth  " << answer.position.azimuth_deg << " degrees (clockwise from North)\n";
+  out << "delta T  " << request.position.delta_t_s << " s ("
+      << (request.delta_t_from_time ? "Espenak-Meeus for the year" : "given") << ")\n";
   out << "sunrise  " << describe_time(answer.times.sunrise_utc_s, request, answer.times.day_kind)
       << '\n';
   out << "transit  " << describe_time(answer.times.transit_utc_s, request, answer.times.day_kind)

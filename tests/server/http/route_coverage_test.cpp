@@ -24,6 +24,7 @@ const std::map<std::string_view, std::pair<std::string, std::string>> kExamples 
     {"getRgb", {"?model=testsky&sun_zenith=40&sun_azimuth=100&view_zenith=60&view_azimuth=10", ""}},
     {"postRgb", {"", R"({"model":"testsky","sun_zenith":40,"sun_azimuth":100,"views":[[60,10]]})"}},
     {"getSkydome", {"?model=testsky&sun_zenith=40&sun_azimuth=100&size=16", ""}},
+    {"getSkyPatches", {"?model=testsky&sun_zenith=40&sun_azimuth=100", ""}},
     {"importDataset", {"?name=d", "not an archive"}},
     {"createEvaluation", {"", R"({"models": ["preetham"], "dataset": "d"})"}},
     {"createJob", {"", R"({"name": "n", "schedule": "0 3 * * *", "dataset": "d"})"}},

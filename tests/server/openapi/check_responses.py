@@ -332,6 +332,16 @@ def run(checker, workdir):
     c.call("getSkydome", 200, query=c.query("getSkydome", *sun, size=16, projection="latlong",
                                             channels="spectral", wavelengths="450,550,650"))
     c.call("getSkydome", 413, query=c.query("getSkydome", *sun, size=100000))
+    c.call("getSkyPatches", 200, query=c.query("getSkyPatches", *sun))
+    check_not_modified(c, "getSkyPatches", c.query("getSkyPatches", *sun))
+    c.call("getSkyPatches", 200, query=c.query("getSkyPatches", *place, scheme="reinhart", mf=2,
+                                               sun="patch", output="rgb"))
+    c.call("getSkyPatches", 200, query=c.query("getSkyPatches", *sun, output="luminance",
+                                               format="csv"))
+    c.call("getSkyPatches", 400, query=c.query("getSkyPatches", *sun, mf=2))
+    c.call("getSkyPatches", 400, query=c.query("getSkyPatches", *sun, scheme="reinhart", mf=7))
+    c.call("getSkyPatches", 422, query=c.query("getSkyPatches", "model", "sun_azimuth",
+                                               sun_zenith=100))
 
     # Datasets and imports: a synthetic capture imported from a folder on the server.
     folder = synthetic_kider.write_capture(os.path.join(workdir, "capture"))
