@@ -1,8 +1,9 @@
 // Synthetic captures whose "measurements" a model made (docs/fits.md "Tests"): on the Kider
 // 81-direction layout (tests/models/evaluation/synthetic_sky.h), every sample's spectrum is the
-// model's radiance for that view, linearly interpolated between the model's grid wavelengths,
-// so that the evaluation (which reads measurements at the grid wavelengths) finds exactly the
-// model's values, and a fit of that model must recover the parameters that made them.
+// model's radiance for that view, linearly interpolated between the model's grid wavelengths.
+// With a grid of whole nanometres (integer_nm_grid) the evaluation, which reads the 1-nm
+// measurements at the grid wavelengths, finds exactly the model's values, and a fit of that
+// model must recover the parameters that made them.
 #pragma once
 
 #include <cstddef>
@@ -11,9 +12,17 @@
 
 #include "models/core/numeric.h"
 #include "models/core/sky_model.h"
+#include "models/spectral/wavelength_grid.h"
 #include "tests/models/evaluation/synthetic_sky.h"
 
 namespace clearsky::testing {
+
+// Whole nanometres from 360 to 720 every step_nm: the wavelengths of the evaluation's range.
+inline WavelengthGrid integer_nm_grid(int step_nm) {
+  std::vector<double> nm;
+  for (int w = 360; w <= 720; w += step_nm) nm.push_back(w);
+  return WavelengthGrid::points(std::move(nm));
+}
 
 inline MeasuredCapture model_made_capture(const SkyModel& model, double sun_zenith_deg,
                                           double sun_azimuth_deg) {
