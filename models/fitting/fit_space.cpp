@@ -67,10 +67,11 @@ std::vector<FreeParameter> make_free_parameters(const ModelDescriptor& descripto
     }
     if (const auto it = bounds.find(name); it != bounds.end()) {
       const auto [low, high] = it->second;
-      if (!(low >= spec->min_value && high <= spec->max_value && low <= high))
+      // Equal bounds are refused: a fixed value belongs in the fixed parameters.
+      if (!(low >= spec->min_value && high <= spec->max_value && low < high))
         throw InvalidInput("bounds", name + ": [" + fmt(low) + ", " + fmt(high) +
-                                         "] must be ordered and inside [" + fmt(spec->min_value) +
-                                         ", " + fmt(spec->max_value) + "]");
+                                         "] must be increasing and inside [" +
+                                         fmt(spec->min_value) + ", " + fmt(spec->max_value) + "]");
       p.min_value = low;
       p.max_value = high;
     }

@@ -33,7 +33,7 @@ using FitBounds = std::map<std::string, std::pair<double, double>>;
 // The free parameters with their bounds and grid counts. Throws InvalidInput naming "free" for a
 // name the descriptor does not list, an integer option, a name given twice or an empty list;
 // naming "bounds" for bounds of a parameter that is not free, outside the descriptor's range,
-// NaN, or with min > max; naming "grid" when grid_points is not empty and does not hold one
+// NaN, or with min >= max; naming "grid" when grid_points is not empty and does not hold one
 // count in [1, 101] per free parameter.
 std::vector<FreeParameter> make_free_parameters(const ModelDescriptor& descriptor,
                                                 std::span<const std::string> names,

@@ -178,6 +178,7 @@ TEST(FitSpace, RefusesWhatCannotBeFitted) {
   EXPECT_EQ(refused({}, {}, {}), "free");
   EXPECT_EQ(refused({"beta"}, {{"alpha", {0, 1}}}, {}), "bounds");
   EXPECT_EQ(refused({"beta"}, {{"beta", {0.2, 0.1}}}, {}), "bounds");
+  EXPECT_EQ(refused({"beta"}, {{"beta", {0.1, 0.1}}}, {}), "bounds");
   EXPECT_EQ(refused({"beta"}, {{"beta", {0.1, 5}}}, {}), "bounds");
   EXPECT_EQ(refused({"beta"}, {{"beta", {std::nan(""), 0.1}}}, {}), "bounds");
   EXPECT_EQ(refused({"beta"}, {}, {0}), "grid");
