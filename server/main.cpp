@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   clearsky::cli::add_import_command(app);
   clearsky::cli::add_datasets_command(app);
   clearsky::cli::add_evaluate_command(app, CLEARSKY_VERSION);
+  clearsky::cli::add_fit_command(app, CLEARSKY_VERSION);
   clearsky::cli::add_stress_command(app);
   try {
     app.parse(argc, argv);

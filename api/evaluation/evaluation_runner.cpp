@@ -3,13 +3,10 @@
 
 #include <stdexcept>
 
+#include "api/evaluation/prepared_dataset.h"
 #include "api/request/sky_request.h"
 #include "models/core/invalid_input.h"
-#include "models/core/parallel.h"
-#include "models/evaluation/capture_preparation.h"
 #include "models/registry.h"
-#include "storage/repositories/capture_repository.h"
-#include "storage/repositories/dataset_repository.h"
 #include "storage/repositories/evaluation_run_repository.h"
 
 namespace clearsky::api {
@@ -115,31 +112,9 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
 EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& request,
                                 std::span<const ModelFactory> available) {
   const std::vector<const ModelFactory*> factories = resolve_models(request.models, available);
-  const auto dataset = storage::DatasetRepository(db).find(request.dataset);
-  if (!dataset) throw std::invalid_argument("no dataset named '" + request.dataset + "'");
-  storage::CaptureRepository capture_repository(db);
-  std::vector<storage::StoredCapture> stored = capture_repository.load(dataset->id);
-  if (stored.empty())
-    throw std::invalid_argument("dataset '" + request.dataset + "' has no captures");
-
-  // The paper's preparation, applied to the captures as stored (the estimate is deterministic,
-  // so it is recomputed rather than trusted from an earlier run).
-  std::vector<MeasuredCapture> captures;
-  for (auto& s : stored) {
-    s.capture.sun_azimuth_estimated_deg = kNotComputed;
-    captures.push_back(std::move(s.capture));
-  }
-  parallel_for(captures.size(), [&](std::size_t i) { prepare_capture(captures[i]); });
-  std::string steps;
-  for (const MeasuredCapture& c : captures)
-    for (const std::string& step : c.processing_steps) steps += c.label + ": " + step + "\n";
-  {
-    storage::Transaction transaction(db);
-    for (std::size_t i = 0; i < captures.size(); ++i)
-      capture_repository.set_estimated_sun_azimuth(stored[i].id,
-                                                   captures[i].sun_azimuth_estimated_deg);
-    transaction.commit();
-  }
+  const PreparedDataset prepared = load_prepared_dataset(db, request.dataset);
+  const std::vector<MeasuredCapture>& captures = prepared.captures;
+  const std::string& steps = prepared.processing_steps;
 
   EvaluationOptions options = request.options;
   options.out_of_domain = out_of_domain_of(request.parameters);
@@ -153,7 +128,7 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
     const ModelFactory& factory = *factory_pointer;
     const std::string& id = factory.descriptor->id;
     storage::NewRun run;
-    run.dataset_id = dataset->id;
+    run.dataset_id = prepared.dataset_id;
     run.job_id = request.job_id;
     run.model_id = id;
     run.model_version = factory.descriptor->version;
@@ -175,7 +150,7 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
       for (std::size_t i = 0; i < result.captures.size(); ++i) {
         const CaptureEvaluation& c = result.captures[i];
         storage::RunCaptureResult r;
-        r.capture_id = stored[i].id;
+        r.capture_id = prepared.capture_ids[i];
         r.sun_zenith_deg = c.sun_zenith_deg;
         r.sun_azimuth_deg = c.sun_azimuth_deg;
         r.rmse = c.rmse;

@@ -1,8 +1,8 @@
 // Schema migrations (migrations.h). Tables (docs/architecture.md "Storage and durability"):
 // datasets of measured captures, their samples (spectra as float64 blobs), evaluation runs with
 // per-capture results, and scheduled evaluation jobs; dataset imports; from version 4, ids never
-// reused and run parameters as JSON (docs/data-api.md). Times are ISO 8601 UTC text except
-// capture instants (unix seconds).
+// reused and run parameters as JSON (docs/data-api.md); from version 7, atmosphere fits
+// (docs/fits.md). Times are ISO 8601 UTC text except capture instants (unix seconds).
 #include "storage/schema/migrations.h"
 
 #include <string>
@@ -332,6 +332,44 @@ CREATE TABLE evaluation_ticket_models (
   PRIMARY KEY (ticket_id, position)
 );
 CREATE INDEX tickets_by_status ON evaluation_tickets(status);
+)sql",
+      // Version 7 (docs/fits.md "Stored fits"): atmosphere fits. A fit names its dataset, model
+      // and model version, the free parameters with their bounds and grid counts, the fixed
+      // parameters, the search's table options and the captures it used, all as JSON text; it
+      // is `running` with a progress and stage while computed, then `succeeded` with its values,
+      // RMSE before, at the search setting and after, the cross-validated RMSE when asked, and
+      // the per-capture results, uncertainty ranges, objective history and stage timings (JSON),
+      // or `failed` / `interrupted` with the error. Ids are never reused (AUTOINCREMENT).
+      R"sql(
+CREATE TABLE fits (
+  id INTEGER PRIMARY KEY AUTOINCREMENT,
+  dataset_id INTEGER NOT NULL REFERENCES datasets(id) ON DELETE CASCADE,
+  model_id TEXT NOT NULL,
+  model_version TEXT NOT NULL,
+  free_parameters TEXT NOT NULL,
+  fixed_parameters TEXT NOT NULL,
+  search_options TEXT NOT NULL,
+  captures TEXT NOT NULL,
+  settings TEXT NOT NULL,
+  software_version TEXT NOT NULL,
+  status TEXT NOT NULL
+    CHECK (status IN ('queued', 'running', 'succeeded', 'failed', 'interrupted')),
+  progress REAL NOT NULL DEFAULT 0,
+  stage TEXT,
+  result TEXT,
+  rmse_before REAL,
+  rmse_search REAL,
+  rmse_after REAL,
+  cross_validated_rmse REAL,
+  per_capture TEXT,
+  uncertainty TEXT,
+  history TEXT,
+  timings TEXT,
+  error TEXT,
+  created_utc TEXT NOT NULL,
+  finished_utc TEXT
+);
+CREATE INDEX fits_by_dataset ON fits(dataset_id);
 )sql",
   };
   return migrations;
