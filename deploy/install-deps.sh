@@ -1,16 +1,27 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages clearsky builds, tests and runs with, when any is missing.
 # Idempotent: does nothing (and needs no network) when everything is present.
+# --build-only: only what building the clearsky executable needs (-DCLEARSKY_BUILD_TESTS=OFF: the
+# container image's build stage, deploy/container/Containerfile), not the test, benchmark and
+# deployment tools.
 set -euo pipefail
 
-packages=(
-  build-essential cmake pkg-config git clang-format
+build_only=false
+[ "${1:-}" = "--build-only" ] && build_only=true
+
+# Compiling and linking the executable.
+build_packages=(
+  build-essential cmake pkg-config
   libcpp-httplib-dev libssl-dev zlib1g-dev nlohmann-json3-dev
-  libopenexr-dev openexr libpng-dev libgeographiclib-dev
-  libsqlite3-dev sqlite3 libarchive-dev p7zip-full libxxhash-dev
+  libopenexr-dev libpng-dev libgeographiclib-dev
+  libsqlite3-dev libarchive-dev libxxhash-dev
   prometheus-cpp-dev libspdlog-dev libcli11-dev libnlopt-cxx-dev
-  libhowardhinnant-date-dev tzdata libxxhash-dev
+  libhowardhinnant-date-dev tzdata
+)
+packages=(
+  "${build_packages[@]}"
   libgtest-dev libgmock-dev libbenchmark-dev
+  git clang-format openexr sqlite3 p7zip-full
   wrk curl python3 haproxy
   # systemd-analyze checks deploy/systemd/clearsky.service; graphviz renders the topology of
   # docs/deploy.md (docs/figures/deploy-topology.dot).
@@ -36,6 +47,10 @@ fi
 # already has a node with its npm (another distribution's nodejs package ships both).
 if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
   packages+=(nodejs npm)
+fi
+
+if [ "$build_only" = true ]; then
+  packages=("${build_packages[@]}")
 fi
 
 missing=()
