@@ -1,9 +1,13 @@
 // The clearsky browser viewer (docs/viewer.md): every figure comes from this server's API.
 // The sky is GET /v1/skydome?format=png, the sun's marker GET /v1/sun, the spectrum under the
-// pointer GET /v1/radiance, the figures GET /v1/irradiance, the charts GET /v1/evaluations.
+// pointer GET /v1/radiance, the figures GET /v1/irradiance, the charts GET /v1/evaluations,
+// the error map GET /v1/evaluations/{id}?samples=true, the job history GET /v1/jobs.
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 import './style.css';
+import { toPixel, toDirection } from './sky_projection.js';
+import { colourScale, drawErrorMap, sampleAt, describeSample } from './error_map.js';
+import { drawJobHistory } from './job_history.js';
 
 const $ = (id) => document.getElementById(id);
 const SKY_PX = 400;
@@ -60,34 +64,6 @@ function timeText() {
 
 function place() {
   return new URLSearchParams({ lat: $('lat').value, lon: $('lon').value, time: timeText() });
-}
-
-// Pixel <-> direction of the skydome projections (api/skydome/skydome_projection.h): fisheye
-// equidistant, North up, East left; latlong North at the centre column, East right, zenith on top.
-function toPixel(projection, zenithDeg, azimuthDeg, width, height) {
-  const az = azimuthDeg * Math.PI / 180;
-  if (projection === 'fisheye') {
-    const r = (zenithDeg / 90) * (width / 2);
-    return [width / 2 - r * Math.sin(az), height / 2 - r * Math.cos(az)];
-  }
-  const u = ((azimuthDeg / 360 + 0.5) % 1 + 1) % 1;
-  return [u * width, (zenithDeg / 180) * height];
-}
-
-function toDirection(projection, x, y, width, height) {
-  if (projection === 'fisheye') {
-    const dx = (width / 2 - x) / (width / 2), dy = (height / 2 - y) / (height / 2);
-    const r = Math.hypot(dx, dy);
-    if (r > 1) return null;
-    let az = Math.atan2(dx, dy) * 180 / Math.PI;
-    if (az < 0) az += 360;
-    return { zenith: r * 90, azimuth: az };
-  }
-  const zenith = (y / height) * 180;
-  if (zenith > 90) return null;
-  let az = (x / width) * 360 - 180;
-  if (az < 0) az += 360;
-  return { zenith, azimuth: az };
 }
 
 const skies = {
@@ -225,13 +201,90 @@ async function loadEvaluations() {
 }
 
 
+let runAnswer = null;  // the chosen run with its samples (GET /v1/evaluations/{id}?samples=true)
 async function loadRun() {
   const id = $('run').value;
   if (!id) return;
   try {
-    const run = await api(`/v1/evaluations/${encodeURIComponent(id)}`);
+    const run = await api(`/v1/evaluations/${encodeURIComponent(id)}?samples=true`);
+    if (run.id !== Number($('run').value)) return;  // another run was chosen meanwhile
+    runAnswer = run;
     const captures = (run.captures ?? []).filter((c) => c.rmse != null);
     capturesPlot = barChart($('rmse-captures'), captures.map((c) => (c.time ?? c.label).slice(11, 16)), captures.map((c) => c.rmse), 'RMSE per capture', capturesPlot);
+    const withSamples = captures.filter((c) => (c.samples ?? []).length > 0);
+    $('error-map-section').hidden = withSamples.length === 0;
+    const previous = $('map-capture').value;
+    $('map-capture').innerHTML = withSamples.map((c) => `<option value="${c.label}">${c.label} (${(c.time ?? '').slice(11, 16)})</option>`).join('');
+    if (withSamples.some((c) => c.label === previous)) $('map-capture').value = previous;
+    drawMap();
+  } catch (e) { showError(e); }
+}
+
+// The error map of the chosen capture of the chosen run (error_map.js).
+let errorMap = null;
+function drawMap() {
+  const capture = (runAnswer?.captures ?? []).find((c) => c.label === $('map-capture').value);
+  if (!capture) return;
+  const quantity = $('map-quantity').value;
+  const scale = colourScale(quantity, runAnswer.captures);
+  errorMap = drawErrorMap($('error-map'), $('error-legend'), capture, scale);
+  const canvas = $('error-map');
+  canvas.dataset.run = String(runAnswer.id);
+  canvas.dataset.capture = capture.label;
+  canvas.dataset.quantity = quantity;
+  $('error-legend-text').textContent = quantity === 'bias'
+    ? `Bias of ${runAnswer.model} (mean of model − measured over ${runAnswer.wavelength_range_nm.join('–')} nm, mW/(m²·sr·nm)): red where the model is too bright, blue too dark; the scale spans every capture of run #${runAnswer.id}.`
+    : `RMSE of ${runAnswer.model} per sample (over ${runAnswer.wavelength_range_nm.join('–')} nm, mW/(m²·sr·nm)); the scale spans every capture of run #${runAnswer.id}.`;
+  $('error-readout').textContent = `${capture.samples.length} samples; sun (yellow ring) at zenith ${capture.sun_zenith.toFixed(1)}°, azimuth ${capture.sun_azimuth.toFixed(1)}°. Move the pointer over a marker.`;
+  delete $('error-readout').dataset.index;
+}
+
+function onMapPointer(event) {
+  if (!errorMap) return;
+  const canvas = event.currentTarget;
+  const rect = canvas.getBoundingClientRect();
+  const x = (event.clientX - rect.left) * (canvas.width / rect.width);
+  const y = (event.clientY - rect.top) * (canvas.height / rect.height);
+  const sample = sampleAt(errorMap, x, y);
+  if (!sample) return;
+  $('error-readout').textContent = describeSample(sample);
+  $('error-readout').dataset.index = String(sample.index);
+}
+
+// The jobs, and the run history of the chosen one (job_history.js).
+let historyPlot = null;
+async function loadJobs() {
+  let jobs;
+  try {
+    jobs = await api('/v1/jobs?limit=1000');
+  } catch (e) {
+    $('job-note').textContent = e.message;
+    return;
+  }
+  if (jobs.length === 0) {
+    $('job-note').textContent = 'No job yet (POST /v1/jobs, docs/data-api.md).';
+    return;
+  }
+  $('job-label').hidden = false;
+  $('job').innerHTML = jobs.map((j) => `<option value="${j.id}">${j.name} #${j.id} (${j.dataset}, ${j.schedule})</option>`).join('');
+  await loadJobHistory();
+}
+
+async function loadJobHistory() {
+  const id = $('job').value;
+  if (!id) return;
+  try {
+    const [job, runs] = await Promise.all([
+      api(`/v1/jobs/${encodeURIComponent(id)}`),
+      api(`/v1/evaluations?job=${encodeURIComponent(id)}&status=succeeded&limit=1000`),
+    ]);
+    if (String(job.id) !== $('job').value) return;
+    const drawn = drawJobHistory($('job-history'), runs, historyPlot);
+    historyPlot = drawn.plot;
+    $('job-history').dataset.points = String(drawn.points);
+    $('job-note').textContent = `${job.name}: ${drawn.points} succeeded runs of ${drawn.models} models on ${job.dataset}, ` +
+      `schedule "${job.schedule}" (UTC)${job.paused ? ', paused' : ''}, next run ${job.next_run ?? 'none'}` +
+      (runs.length === 1000 ? '; the newest 1000 runs' : '') + '.';
   } catch (e) { showError(e); }
 }
 
@@ -269,9 +322,13 @@ async function start() {
     $('time').addEventListener('input', () => { $('time-text').textContent = timeText().slice(11, 16); });
     $('time').addEventListener('change', update);
     $('run').addEventListener('change', loadRun);
+    $('map-capture').addEventListener('change', drawMap);
+    $('map-quantity').addEventListener('change', drawMap);
+    $('error-map').addEventListener('mousemove', onMapPointer);
+    $('job').addEventListener('change', loadJobHistory);
     skies.a.img.addEventListener('mousemove', onPointer);
     skies.b.img.addEventListener('mousemove', onPointer);
-    await Promise.all([update(), loadEvaluations()]);
+    await Promise.all([update(), loadEvaluations(), loadJobs()]);
   } catch (e) {
     showError(e);
   } finally {
