@@ -45,7 +45,11 @@ fi
 
 echo "== podman build $tag (base $base)"
 start=$(date +%s)
-podman build --isolation chroot --format docker --build-arg "DEBIAN_IMAGE=$base" \
+# The host's CA bundle for npm (a TLS-inspecting proxy's CA is in it where there is one).
+ca=${NODE_EXTRA_CA_CERTS:-/etc/ssl/certs/ca-certificates.crt}
+secret=()
+[ -s "$ca" ] && secret=(--secret "id=npm_ca,src=$ca")
+podman build --isolation chroot --format docker --build-arg "DEBIAN_IMAGE=$base" "${secret[@]}" \
   -f deploy/container/Containerfile -t "$tag" .
 echo "built in $(($(date +%s) - start)) s"
 
