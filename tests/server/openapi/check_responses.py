@@ -394,8 +394,10 @@ def run(checker, workdir):
     c.call("createFit", 400, body={"dataset": name, "model": "preetham",
                                    "bounds": {"turbidity": [6, 2]}}, token=TOKEN)
     fit = c.call("createFit", 202, body=c.body_example("createFit"), token=TOKEN)
-    wait_for(c, "getFit", {"id": fit["id"]},
-             lambda state: state["status"] in ("succeeded", "failed"))
+    done = wait_for(c, "getFit", {"id": fit["id"]},
+                    lambda state: state["status"] in ("succeeded", "failed"))
+    if done["status"] != "succeeded":
+        raise RuntimeError(f"the example fit did not succeed: {done}")
     c.call("getFit", 200, {"id": fit["id"]}, query="history=true")
     c.call("getFit", 404, {"id": 999})
     c.call("getFit", 400, {"id": "abc"})
