@@ -7,6 +7,7 @@
 #include "api/error/api_error.h"
 #include "api/evaluation/evaluations_api.h"
 #include "api/http/json_body.h"
+#include "storage/repositories/capture_repository.h"
 #include "storage/repositories/dataset_repository.h"
 #include "storage/repositories/fit_repository.h"
 
@@ -84,9 +85,14 @@ FitRequest parse_fit_request(storage::Database& db, const std::string& body,
   } catch (const std::invalid_argument& e) {
     throw from_invalid_argument(e);
   }
-  if (!storage::DatasetRepository(db).find(request.dataset))
+  const auto dataset = storage::DatasetRepository(db).find(request.dataset);
+  if (!dataset)
     throw ApiError(404, "unknown_dataset", "dataset",
                    "dataset: no dataset named '" + request.dataset + "'");
+  for (const std::string& label : request.captures)
+    if (!storage::CaptureRepository(db).find_by_label(dataset->id, label))
+      throw invalid_parameter(
+          "captures", "no capture labelled '" + label + "' in dataset '" + request.dataset + "'");
   return request;
 }
 

@@ -21,7 +21,8 @@ namespace clearsky::api {
 // parameters, search_options, per_capture, cross_validate, max_evaluations, fold_evaluations
 // (the options of `clearsky fit`, docs/fits.md). 400 naming the member for an unknown member,
 // a wrong type or what check_fit_request refuses (unknown model, a parameter that cannot be
-// fitted, bad bounds or grid counts); 404 unknown_dataset when no such dataset is stored.
+// fitted, bad bounds or grid counts, a capture label the dataset does not hold); 404
+// unknown_dataset when no such dataset is stored.
 FitRequest parse_fit_request(storage::Database& db, const std::string& body,
                              const std::string& software_version);
 

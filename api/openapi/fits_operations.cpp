@@ -112,7 +112,7 @@ Json operations() {
         "headers": {"Location": {"description": "/v1/fits/{id}", "required": true, "schema": {"type": "string"}}},
         "content": {"application/json": {"schema": {"$ref": "#/components/schemas/Fit"}}}
       },
-      "400": {"description": "A body that is not a JSON object, an unknown member, no dataset or model, an unknown model, a parameter that cannot be fitted, bad bounds or grid counts, or an invalid parameter (the error names the member)."},
+      "400": {"description": "A body that is not a JSON object, an unknown member, no dataset or model, an unknown model, a parameter that cannot be fitted, bad bounds or grid counts, a capture label the dataset does not hold, or an invalid parameter (the error names the member)."},
       "404": {"description": "No such dataset (unknown_dataset)."},
       "503": {"description": "The fit queue is full (code busy)."}
     }

@@ -1,7 +1,7 @@
 // The fit route handlers without a server (api/routes/fit_routes.cpp, docs/fits.md "Over
 // HTTP"), on a fresh database with a dataset Preetham made: POST /v1/fits refuses with a 400
 // naming the member (unknown member, unknown model, a parameter that cannot be fitted, bad
-// bounds) and a 404 for an unknown dataset, before anything is recorded; an accepted fit
+// bounds, an unknown capture label) and a 404 for an unknown dataset, before anything is recorded; an accepted fit
 // answers 202 with its Location, is queued, runs on the pool and is listed; GET /v1/fits/{id}
 // answers 404 unknown_fit and 400 for a bad id; without a database the routes answer 404.
 #include <gtest/gtest.h>
@@ -100,6 +100,8 @@ TEST_F(FitRouteHandlers, RefusalsNameTheMember) {
   EXPECT_EQ(
       refusal(R"({"dataset": "made", "model": "preetham", "parameters": {"turbidity": "x"}})"),
       Refusal(400, "turbidity"));
+  EXPECT_EQ(refusal(R"({"dataset": "made", "model": "preetham", "captures": ["made 0", "x"]})"),
+            Refusal(400, "captures"));
   EXPECT_EQ(refusal("[1]"), Refusal(400, "body"));
   const ApiResponse unknown = call("POST", "/v1/fits", R"({"dataset": "none", "model": "hosek"})");
   EXPECT_EQ(unknown.status, 404);
