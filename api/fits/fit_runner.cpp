@@ -147,7 +147,8 @@ std::int64_t run_fit(storage::Database& db, const FitRequest& request,
     const FitResult result = fit_model(*checked.factory, captures, checked.settings);
     fits.finish(id, fit_outcome(result));
   } catch (const PrecomputeCancelled& e) {
-    fits.fail(id, e.what(), "interrupted");
+    fits.fail(id, std::string("interrupted: the fit was cancelled (") + e.what() + ")",
+              "interrupted");
     throw;
   } catch (const std::exception& e) {
     fits.fail(id, e.what());

@@ -24,6 +24,7 @@ namespace clearsky::api {
 
 class AnswerMemoryBudget;
 class EvaluationPool;
+class FitPool;
 class ImportPool;
 
 using NameValues = std::vector<std::pair<std::string, std::string>>;
@@ -83,6 +84,8 @@ struct DataServices {
   ImportRoots import_roots;
   EvaluationPool* evaluations = nullptr;
   ImportPool* imports = nullptr;
+  // Atmosphere fits (POST /v1/fits, api/fits/fit_pool.h); null: that route answers 503.
+  FitPool* fits = nullptr;
   std::span<const ModelFactory> models;
   std::string software_version;
 };

@@ -25,6 +25,8 @@ Area sky_area();
 Area datasets_area();
 // evaluations and jobs (evaluations_operations.cpp).
 Area evaluations_area();
+// atmosphere fits (fits_operations.cpp).
+Area fits_area();
 // Error, the shared responses, headers, parameters and the bearer scheme (openapi_common.cpp).
 Json common_components();
 

@@ -29,8 +29,9 @@ void merge_members(Json& into, const Json& from, const std::string& where) {
 const Content& content() {
   static const Content all = [] {
     Content c;
-    for (const openapi::Area& area : {openapi::service_area(), openapi::sky_area(),
-                                      openapi::datasets_area(), openapi::evaluations_area()}) {
+    for (const openapi::Area& area :
+         {openapi::service_area(), openapi::sky_area(), openapi::datasets_area(),
+          openapi::evaluations_area(), openapi::fits_area()}) {
       merge_members(c.operations, area.operations, "operation");
       for (const auto& [kind, members] : area.components.items()) {
         if (!c.components.contains(kind)) c.components[kind] = Json::object();
@@ -72,6 +73,7 @@ nlohmann::ordered_json openapi_tags() {
   {"name": "datasets", "description": "Stored measured skies"},
   {"name": "imports", "description": "Background dataset imports"},
   {"name": "evaluations", "description": "Runs of models against a dataset (RMSE)"},
+  {"name": "fits", "description": "Atmosphere parameters fitted to a dataset"},
   {"name": "jobs", "description": "Scheduled evaluations (cron, UTC)"},
   {"name": "operations", "description": "Liveness, readiness, metrics and this document"}
 ])json");

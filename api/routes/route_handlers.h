@@ -34,6 +34,11 @@ ApiResponse create_evaluation_route(const ApiContext& context, const ApiRequest&
 ApiResponse get_evaluation_route(const ApiContext& context, const ApiRequest& request);
 ApiResponse get_ticket_route(const ApiContext& context, const ApiRequest& request);
 
+// fit_routes.cpp
+ApiResponse list_fits_route(const ApiContext& context, const ApiRequest& request);
+ApiResponse create_fit_route(const ApiContext& context, const ApiRequest& request);
+ApiResponse get_fit_route(const ApiContext& context, const ApiRequest& request);
+
 // job_routes.cpp
 ApiResponse list_jobs_route(const ApiContext& context, const ApiRequest& request);
 ApiResponse create_job_route(const ApiContext& context, const ApiRequest& request);

@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "api/datasets/upload_spool.h"
+#include "api/fits/fit_pool.h"
 #include "api/imports/imports_api.h"
 #include "models/colour/three_wavelength_rgb.h"
 #include "models/registry.h"
@@ -47,7 +48,8 @@ std::vector<ModelFactory> served_models(const std::vector<std::string>& ids) {
 
 // The writer's data services (docs/deploy.md "Roles"): the database opened (created and
 // migrated) at start, so that a bad --db fails here rather than at the first request; runs and
-// imports a crash interrupted marked failed; the evaluation and import pools; the scheduler.
+// imports a crash interrupted marked failed (fits interrupted); the evaluation, import and fit
+// pools; the scheduler.
 class WriterServices {
  public:
   WriterServices(const server::ServerConfig& config, const api::ImportRoots& import_roots,
@@ -56,7 +58,8 @@ class WriterServices {
         db_path_(config.db_path),
         evaluations_(open_database(), models,
                      {config.evaluation_workers, config.evaluation_queue, 1}),
-        imports_(open_database(), import_options(config)) {
+        imports_(open_database(), import_options(config)),
+        fits_(open_database(), {1, config.evaluation_queue, 1}) {
     data_.db_path = db_path_;
     data_.upload_dir =
         (db_path_.has_parent_path() ? db_path_.parent_path() : std::filesystem::path(".")) /
@@ -69,6 +72,7 @@ class WriterServices {
       spdlog::info("path imports may read {}", root.string());
     data_.imports = &imports_;
     data_.evaluations = &evaluations_;
+    data_.fits = &fits_;
     data_.models = models;
     data_.software_version = software_version;
     scheduler_.emplace(open_database(), evaluations_, software_version);
@@ -96,6 +100,8 @@ class WriterServices {
       spdlog::warn("{} evaluation tickets were interrupted; marked interrupted", tickets);
     const int imports = api::fail_interrupted_imports(db);
     if (imports > 0) spdlog::warn("{} imports were interrupted; marked failed", imports);
+    const int fits = api::interrupt_unfinished_fits(db);
+    if (fits > 0) spdlog::warn("{} fits were interrupted; marked interrupted", fits);
     return database;
   }
   api::EvaluationPool::OpenDatabase open_database() const {
@@ -120,6 +126,7 @@ class WriterServices {
   std::filesystem::path db_path_;
   api::EvaluationPool evaluations_;
   api::ImportPool imports_;
+  api::FitPool fits_;
   api::DataServices data_;
   std::optional<server::Scheduler> scheduler_;
 };

@@ -9,7 +9,7 @@ Example:
 
 from .client import Client
 from .data_results import (Dataset, DatasetSummary, Evaluation, EvaluationSummary,
-                           EvaluationTicket, Import, Job, Page)
+                           EvaluationTicket, Fit, Import, Job, Page)
 from .errors import ClearskyError
 from .exr_image import SkydomeImage, read_skydome
 from .retry import RetryNotice, RetryPolicy
@@ -22,5 +22,5 @@ __all__ = [
     "Client", "ClearskyError", "RetryPolicy", "RetryNotice", "Page", "Sun", "SunUsed",
     "ModelInfo", "ModelParameter", "Radiance", "Rgb", "Irradiance", "IrradianceComponent",
     "SkydomeFile", "SkydomeImage", "read_skydome", "DatasetSummary", "Dataset", "Import",
-    "EvaluationTicket", "EvaluationSummary", "Evaluation", "Job",
+    "EvaluationTicket", "EvaluationSummary", "Evaluation", "Fit", "Job",
 ]

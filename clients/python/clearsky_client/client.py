@@ -10,7 +10,7 @@ from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, TypeV
 from urllib.parse import quote
 
 from .data_results import (Dataset, DatasetSummary, Evaluation, EvaluationSummary,
-                           EvaluationTicket, Import, Job, Page, next_cursor_of)
+                           EvaluationTicket, Fit, Import, Job, Page, next_cursor_of)
 from .errors import ClearskyError
 from .exr_image import SkydomeImage, read_skydome
 from .retry import RetryPolicy
@@ -394,6 +394,46 @@ class Client:
                 "parameters": dict(parameters or {})}
         return Job.from_json(self._transport.request("POST", "/v1/jobs", json_body=body,
                                                      authorize=True).json())
+
+    def create_fit(self, dataset: str, model: str, free: Optional[Sequence[str]] = None,
+                   bounds: Optional[Mapping[str, Sequence[float]]] = None,
+                   **options: Any) -> Fit:
+        """POST /v1/fits (token): fits the model's free parameters to the dataset (docs/fits.md);
+        options are the other members of the body (grid, captures, parameters, search_options,
+        per_capture, cross_validate, max_evaluations, fold_evaluations). Answers the queued fit
+        (follow it with ``wait_for_fit``).
+
+        Example:
+            >>> fit = client.create_fit("kider", "preetham", ["turbidity"], {"turbidity": [2, 6]})
+            >>> client.wait_for_fit(fit.id).values
+            {'turbidity': 2.348...}
+        """
+        body: Dict[str, Any] = {"dataset": dataset, "model": model, **options}
+        if free is not None:
+            body["free"] = list(free)
+        if bounds is not None:
+            body["bounds"] = {name: list(range_) for name, range_ in bounds.items()}
+        answer = self._transport.request("POST", "/v1/fits", json_body=body, authorize=True)
+        return Fit.from_json(answer.json())
+
+    def get_fit(self, fit_id: int, history: bool = False) -> Fit:
+        """GET /v1/fits/{id}; history adds every point evaluated (in ``raw``)."""
+        return Fit.from_json(self._get(f"/v1/fits/{int(fit_id)}",
+                                       {"history": "true" if history else None}).json())
+
+    def list_fits(self, limit: Optional[int] = None, cursor: Optional[str] = None) -> Page[Fit]:
+        """GET /v1/fits: newest first."""
+        return _page(self._get("/v1/fits", {"limit": limit, "cursor": cursor}), Fit.from_json)
+
+    def wait_for_fit(self, fit_id: int, poll_s: float = 0.25, timeout_s: float = 600.0) -> Fit:
+        """Polls a fit until it has succeeded and answers it; raises ClearskyError (code
+        ``fit_failed`` or ``fit_interrupted``) when it did not, and with code ``timeout`` after
+        timeout_s."""
+        final = _poll(lambda: self.get_fit(fit_id), poll_s, timeout_s, f"fit {fit_id}")
+        if final.status != "succeeded":
+            raise ClearskyError(None, "fit_" + final.status,
+                                f"fit {fit_id} {final.status}: {final.error}", body=final.raw)
+        return final
 
     def list_jobs(self, limit: Optional[int] = None, cursor: Optional[str] = None) -> Page[Job]:
         """GET /v1/jobs: by name."""

@@ -1,6 +1,6 @@
-"""Typed answers of the data endpoints: datasets, imports, evaluations, tickets and jobs
+"""Typed answers of the data endpoints: datasets, imports, evaluations, tickets, fits and jobs
 (docs/data-api.md; the schemas DatasetSummary, Dataset, Import, EvaluationTicket,
-EvaluationSummary, Evaluation and Job of /openapi.json), and a page of a list.
+EvaluationSummary, Evaluation, Fit and Job of /openapi.json), and a page of a list.
 
 Times are the server's ISO 8601 texts. Every answer keeps its whole JSON in ``raw``: the
 captures of a dataset and of an evaluation, with their samples, are read from there."""
@@ -119,6 +119,36 @@ class EvaluationTicket:
     def from_json(cls, j: Dict[str, Any]) -> "EvaluationTicket":
         return cls(j["ticket"], j["dataset"], j["status"], list(j["runs"]), list(j["models"]),
                    j.get("error"), j)
+
+
+@dataclass(frozen=True)
+class Fit:
+    """An atmosphere fit (POST /v1/fits, GET /v1/fits/{id}; docs/fits.md): status ``queued``,
+    ``running`` (with ``progress`` 0..1 and ``stage``), ``succeeded`` (with ``values`` and the
+    RMSE before and after, mW/(m2.sr.nm)), ``failed`` or ``interrupted`` (with ``error``)."""
+
+    id: int
+    dataset: str
+    model: str
+    status: str
+    progress: float
+    stage: Optional[str]
+    values: Optional[Dict[str, float]]
+    rmse_before: Optional[float]
+    rmse_after: Optional[float]
+    cross_validated_rmse: Optional[float]
+    error: Optional[str]
+    raw: Dict[str, Any] = field(repr=False)
+
+    @property
+    def done(self) -> bool:
+        return self.status in ("succeeded", "failed", "interrupted")
+
+    @classmethod
+    def from_json(cls, j: Dict[str, Any]) -> "Fit":
+        return cls(j["id"], j["dataset"], j["model"], j["status"], j["progress"], j.get("stage"),
+                   j.get("values"), j.get("rmse_before"), j.get("rmse_after"),
+                   j.get("cross_validated_rmse"), j.get("error"), j)
 
 
 @dataclass(frozen=True)

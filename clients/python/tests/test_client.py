@@ -49,6 +49,7 @@ CLIENT_METHODS = {
     "deleteDataset": "delete_dataset", "listImports": "list_imports", "getImport": "get_import",
     "listEvaluations": "list_evaluations", "createEvaluation": "create_evaluation",
     "getEvaluation": "get_evaluation", "getEvaluationTicket": "get_evaluation_ticket",
+    "listFits": "list_fits", "createFit": "create_fit", "getFit": "get_fit",
     "listJobs": "list_jobs", "createJob": "create_job", "getJob": "get_job",
     "deleteJob": "delete_job", "pauseJob": "pause_job", "resumeJob": "resume_job",
 }
@@ -305,6 +306,17 @@ class ClientAgainstWriter(unittest.TestCase):
         self.assertEqual([r.id for r in listed.items], finished.runs)
         self.assertRefused(lambda: self.client.create_evaluation("synthetic", ["bruneton"]),
                            404, "unknown_model", "models")
+
+        queued_fit = self.client.create_fit("synthetic", "preetham", ["turbidity"],
+                                            {"turbidity": [2, 6]}, grid=[9])
+        self.assertEqual((queued_fit.model, queued_fit.dataset), ("preetham", "synthetic"))
+        fit = self.client.wait_for_fit(queued_fit.id, timeout_s=300)
+        self.assertTrue(2 <= fit.values["turbidity"] <= 6)
+        self.assertLessEqual(fit.rmse_after, fit.rmse_before)
+        self.assertIn("history", self.client.get_fit(fit.id, history=True).raw)
+        self.assertEqual([f.id for f in self.client.list_fits().items], [fit.id])
+        self.assertRefused(lambda: self.client.create_fit("synthetic", "preetham", ["alpha"]),
+                           400, "invalid_parameter", "free")
 
         job = self.client.create_job("nightly", "0 3 * * *", "synthetic", ["preetham", "hosek"],
                                      {"turbidity": 3})

@@ -39,6 +39,9 @@ const char* const kOperationIds[] = {"healthz",
                                      "createEvaluation",
                                      "getEvaluation",
                                      "getEvaluationTicket",
+                                     "listFits",
+                                     "createFit",
+                                     "getFit",
                                      "listJobs",
                                      "createJob",
                                      "getJob",
@@ -108,8 +111,8 @@ TEST(OperationDocs, EveryResponseBodyIsANamedSchema) {
 
 TEST(OperationDocs, WritesNeedTheBearerToken) {
   const std::set<std::string> writes = {"importDataset", "deleteDataset", "createEvaluation",
-                                        "createJob",     "deleteJob",     "pauseJob",
-                                        "resumeJob"};
+                                        "createFit",     "createJob",     "deleteJob",
+                                        "pauseJob",      "resumeJob"};
   for (const char* id : kOperationIds) {
     const Json& operation = *operation_doc(id);
     if (writes.contains(id)) {

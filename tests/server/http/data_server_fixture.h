@@ -1,4 +1,4 @@
-// A server with the data endpoints (datasets, imports, evaluations, jobs) on an ephemeral
+// A server with the data endpoints (datasets, imports, evaluations, fits, jobs) on an ephemeral
 // loopback port, on a fresh database in a temporary folder, with the analytic test sky for the
 // query endpoints, for tests that talk to it with cpp-httplib's client.
 #pragma once
@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "api/evaluation/evaluation_pool.h"
+#include "api/fits/fit_pool.h"
 #include "api/imports/import_pool.h"
 #include "models/registry.h"
 #include "server/http/http_server.h"
@@ -42,6 +43,7 @@ class DataServerFixture : public ::testing::Test {
     pool = std::make_unique<api::EvaluationPool>([path] { return storage::Database::open(path); },
                                                  registered_models());
     imports = std::make_unique<api::ImportPool>([path] { return storage::Database::open(path); });
+    fits = std::make_unique<api::FitPool>([path] { return storage::Database::open(path); });
     auth = std::make_unique<WriteAuthorizer>(token);
     services.db_path = db_path;
     services.upload_dir = dir.path / "uploads";
@@ -49,6 +51,7 @@ class DataServerFixture : public ::testing::Test {
     services.import_roots = api::ImportRoots(import_roots);
     services.evaluations = pool.get();
     services.imports = imports.get();
+    services.fits = fits.get();
     services.models = registered_models();
     services.software_version = "test";
     http = std::make_unique<HttpServer>(config, *tables, metrics);
@@ -65,6 +68,7 @@ class DataServerFixture : public ::testing::Test {
     http.reset();
     pool.reset();
     imports.reset();
+    fits.reset();
   }
   httplib::Client client(const std::string& token = "") const {
     httplib::Client c("127.0.0.1", port);
@@ -93,6 +97,7 @@ class DataServerFixture : public ::testing::Test {
   std::unique_ptr<TableStore> tables;
   std::unique_ptr<api::EvaluationPool> pool;
   std::unique_ptr<api::ImportPool> imports;
+  std::unique_ptr<api::FitPool> fits;
   std::unique_ptr<WriteAuthorizer> auth;
   api::DataServices services;
   std::unique_ptr<HttpServer> http;

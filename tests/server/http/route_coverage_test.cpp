@@ -27,6 +27,7 @@ const std::map<std::string_view, std::pair<std::string, std::string>> kExamples 
     {"getSkyPatches", {"?model=testsky&sun_zenith=40&sun_azimuth=100", ""}},
     {"importDataset", {"?name=d", "not an archive"}},
     {"createEvaluation", {"", R"({"models": ["preetham"], "dataset": "d"})"}},
+    {"createFit", {"", R"({"dataset": "d", "model": "preetham"})"}},
     {"createJob", {"", R"({"name": "n", "schedule": "0 3 * * *", "dataset": "d"})"}},
 };
 

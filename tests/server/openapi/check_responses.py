@@ -386,6 +386,24 @@ def run(checker, workdir):
     c.call("listEvaluations", 200, query=c.query("listEvaluations", "model", status="succeeded"))
     c.call("listEvaluations", 404, query="dataset=nope")
 
+    # Fits: Preetham's turbidity on the synthetic capture.
+    c.call("createFit", 401, body=c.body_example("createFit"))
+    c.call("createFit", 404, body={"dataset": "nope", "model": "preetham"}, token=TOKEN)
+    c.call("createFit", 400, body={"dataset": name, "model": "preetham", "free": ["alpha"]},
+           token=TOKEN)
+    c.call("createFit", 400, body={"dataset": name, "model": "preetham",
+                                   "bounds": {"turbidity": [6, 2]}}, token=TOKEN)
+    fit = c.call("createFit", 202, body=c.body_example("createFit"), token=TOKEN)
+    done = wait_for(c, "getFit", {"id": fit["id"]},
+                    lambda state: state["status"] in ("succeeded", "failed"))
+    if done["status"] != "succeeded":
+        raise RuntimeError(f"the example fit did not succeed: {done}")
+    c.call("getFit", 200, {"id": fit["id"]}, query="history=true")
+    c.call("getFit", 404, {"id": 999})
+    c.call("getFit", 400, {"id": "abc"})
+    c.call("listFits", 200)
+    c.call("listFits", 400, query="limit=0")
+
     # Jobs.
     c.call("createJob", 401, body=c.body_example("createJob"))
     c.call("createJob", 201, body=c.body_example("createJob"), token=TOKEN)
