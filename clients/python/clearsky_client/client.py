@@ -245,6 +245,33 @@ class Client:
         exr_image.read_skydome)."""
         return read_skydome(path)
 
+    def sky_patches(self, model: str, *, scheme: Optional[str] = None, mf: Optional[int] = None,
+                    sun: Optional[str] = None, output: Optional[str] = None,
+                    ground_reflectance: Optional[Number] = None,
+                    wavelengths: Optional[Wavelengths] = None,
+                    sun_zenith: Optional[Number] = None, sun_azimuth: Optional[Number] = None,
+                    lat: Optional[Union[Number, str]] = None,
+                    lon: Optional[Union[Number, str]] = None, time: Optional[Time] = None,
+                    **parameters: ParameterValue) -> Dict[str, Any]:
+        """GET /v1/skypatches: the sky vector of Radiance's daylight-coefficient tools
+        (docs/building-energy.md), the JSON answer as a dict: ``patches`` in Radiance's order
+        (patch 0 the ground), each with its centre, solid angle (sr) and values, and the sun
+        when ``sun="separate"`` (the default). scheme: tregenza or reinhart (with mf 1..6);
+        output: spectral, rgb (Radiance's) or luminance.
+
+        Example:
+            >>> len(client.sky_patches("preetham", sun_zenith=30, sun_azimuth=135,
+            ...                        output="luminance")["patches"])
+            146
+        """
+        query = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time, wavelengths,
+                               parameters)
+        for name, value in (("scheme", scheme), ("mf", mf), ("sun", sun), ("output", output),
+                            ("ground_reflectance", ground_reflectance)):
+            if value is not None:
+                query[name] = value
+        return self._get("/v1/skypatches", query).json()
+
     # --- datasets and imports ------------------------------------------------------------------
 
     def list_datasets(self, limit: Optional[int] = None,

@@ -44,7 +44,7 @@ CLIENT_METHODS = {
     "healthz": "health", "readyz": "readiness", "metrics": "metrics", "openapi": "openapi",
     "listModels": "models", "getSun": "sun", "getRadiance": "radiance",
     "postRadiance": "radiance_batch", "getIrradiance": "irradiance", "getRgb": "rgb",
-    "postRgb": "rgb_batch", "getSkydome": "skydome", "listDatasets": "list_datasets",
+    "postRgb": "rgb_batch", "getSkydome": "skydome", "getSkyPatches": "sky_patches", "listDatasets": "list_datasets",
     "importDataset": "upload_dataset", "getDataset": "get_dataset",
     "deleteDataset": "delete_dataset", "listImports": "list_imports", "getImport": "get_import",
     "listEvaluations": "list_evaluations", "createEvaluation": "create_evaluation",
@@ -176,6 +176,14 @@ class ClientAgainstWriter(unittest.TestCase):
         diffuse = self.client.irradiance("preetham", component="diffuse", **SUN)
         self.assertIsNone(diffuse.direct)
         self.assertGreater(diffuse.diffuse.illuminance_lx, 0)
+
+    def test_sky_patches(self) -> None:
+        vector = self.client.sky_patches("preetham", output="luminance", **SUN)
+        self.assertEqual(len(vector["patches"]), 146)  # Tregenza: the ground and 145 patches
+        reinhart = self.client.sky_patches("hosek", scheme="reinhart", mf=2, output="rgb", **SUN)
+        self.assertEqual(len(reinhart["patches"]), 578)
+        self.assertRefused(lambda: self.client.sky_patches("preetham", scheme="klems", **SUN),
+                           400, "invalid_parameter", "scheme")
 
     def test_rgb_single_and_batch(self) -> None:
         one = self.client.rgb("preetham", 45, 0, **SUN)
