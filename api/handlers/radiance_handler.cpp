@@ -7,6 +7,7 @@
 
 #include "api/handlers/handlers.h"
 #include "api/handlers/sky_radiance_query.h"
+#include "api/http/answer_memory_reservation.h"
 
 namespace clearsky::api {
 
@@ -36,10 +37,15 @@ ApiResponse radiance(const ApiContext& context, const ApiRequest& request) {
 
   const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config),
                                              wavelengths, request.requester());
+  // The answer is built whole: its bytes are reserved before the sky is computed and held
+  // until it was sent (api/http/batch_answer_bytes.h).
+  auto reservation = reserve_batch_answer_memory(context, views.views.size(),
+                                                 m.model->wavelengths().size(), m.indices.size());
   const SpectralBatch batch = checked_sky_radiance(context.models, m.model, sun, viewpoint, views);
 
   ApiResponse response;
   response.model_id = factory.descriptor->id;
+  response.held_until_sent = std::move(reservation);
   if (format == "csv") {
     std::string body = "view_zenith_deg,view_azimuth_deg,wavelength_nm,radiance_w_m2_sr_nm\n";
     for (std::size_t v = 0; v < batch.size(); ++v) {

@@ -14,11 +14,15 @@
 #include "api/colour/xyz_weights.h"
 #include "api/handlers/handlers.h"
 #include "api/handlers/sky_radiance_query.h"
+#include "api/http/answer_memory_reservation.h"
 #include "models/colour/three_wavelength_rgb.h"
 
 namespace clearsky::api {
 
 namespace {
+
+// The numbers an answer gives per view: rgb (3), gamut_clipped, luminance_cd_m2.
+constexpr std::size_t kRgbSampleNumbers = 5;
 
 const ThreeWavelengthRgb& three_wavelength_method() {
   static const ThreeWavelengthRgb method;
@@ -48,6 +52,10 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
   }
   const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config),
                                              wavelengths, request.requester());
+  // The answer is built whole: its bytes are reserved before the sky is computed and held
+  // until it was sent (api/http/batch_answer_bytes.h).
+  auto reservation = reserve_batch_answer_memory(context, views.views.size(),
+                                                 m.model->wavelengths().size(), kRgbSampleNumbers);
   const SpectralBatch batch = checked_sky_radiance(context.models, m.model, sun, viewpoint, views);
 
   nlohmann::json samples = nlohmann::json::array();
@@ -106,6 +114,7 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
   }
   ApiResponse response = json_response(body);
   response.model_id = factory.descriptor->id;
+  response.held_until_sent = std::move(reservation);
   return response;
 }
 

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
@@ -68,6 +69,9 @@ struct ApiResponse {
   // A streamed body (sent chunked, as it is computed): when set, body is unused. Returns false
   // when the sink refused data (the client left), which stops the computation.
   std::function<bool(const ByteSink& sink)> stream = {};
+  // What the answer holds until its last byte was sent or its connection was cut (a body's
+  // answer memory reservation, api/http/answer_memory_reservation.h); null: nothing.
+  std::shared_ptr<const void> held_until_sent = {};
 
   // The first header of that name, compared without case.
   std::optional<std::string_view> header(std::string_view name) const;

@@ -343,8 +343,22 @@ void add_sky_errors(Json& operation, bool get) {
         "(code too_large); error.parameter names it.";
     // Streamed: no tag, since the body is not known before it is sent.
     r["200"]["headers"]["Cache-Control"] = ref("headers", "Cache-Control");
-  } else if (get) {
-    add_revalidation(operation);
+  } else {
+    const std::string id = operation["operationId"].get<std::string>();
+    if (id == "getRadiance" || id == "postRadiance" || id == "getRgb" || id == "postRgb") {
+      // Batch answers in the answer memory budget (api/http/batch_answer_bytes.h).
+      r["503"]["description"] =
+          "The tables this request needs are being built (code model_not_ready), or the "
+          "answer's estimated memory (from its views and wavelengths; answers below 64 KiB are "
+          "not counted) does not fit in the answer memory budget that answers being sent hold "
+          "(--answer-memory; code busy, error.parameter answer_memory): retry after "
+          "Retry-After seconds.";
+      r["413"]["description"] =
+          "Above a configured limit: views, wavelengths, the request body, or an answer whose "
+          "estimated memory alone is above the answer memory budget (--answer-memory; "
+          "error.parameter answer_memory) (code too_large); error.parameter names it.";
+    }
+    if (get) add_revalidation(operation);
   }
   add_common_errors(operation, !get);
 }

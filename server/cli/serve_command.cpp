@@ -378,7 +378,7 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
   command
       ->add_option("--answer-memory", config->answer_memory_bytes,
                    "Bytes of answer buffers in flight, every worker together (a streamed "
-                   "skydome's band; 503 beyond)")
+                   "skydome's band, a radiance or RGB answer of 64 KiB or more; 503 beyond)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   command

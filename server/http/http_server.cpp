@@ -309,6 +309,16 @@ void HttpServer::send(const httplib::Request& req, httplib::Response& res,
           if (complete) sink.done();
           return complete;
         });
+  } else if (response.held_until_sent && response.status != 204 && response.status != 304) {
+    // A body that holds memory of the answer budget: a content provider of its known length
+    // keeps the reservation until cpp-httplib has written the last byte (or the connection was
+    // cut) and the response is destroyed.
+    auto body = std::make_shared<const std::string>(std::move(response.body));
+    res.set_content_provider(body->size(), response.content_type,
+                             [body, held = std::move(response.held_until_sent)](
+                                 std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                               return sink.write(body->data() + offset, length);
+                             });
   } else if (response.status != 204 && response.status != 304) {
     res.set_content(std::move(response.body), response.content_type);
   }
