@@ -363,10 +363,12 @@ def finding_5(binary, a):
 def finding_6(binary, a):
     configs = ["beta=0.4", "beta=1", "g=0.95", "beta=0.2", "alpha=1.8"][:a.bruneton_configs]
     result = {"did": "anonymous GET /v1/radiance?model=bruneton with %d new atmospheres (%s), "
-                     "each answered or refused before the next" % (len(configs),
-                                                                  ", ".join(configs)),
+                     "each answered or refused before the next%s" % (
+                         len(configs), ", ".join(configs), (", --table-memory %d" % a.table_memory)
+                         if a.table_memory else ""),
               "statuses": []}
-    server = Server(binary, "bruneton", ready_s=900)
+    server = Server(binary, "bruneton", ["--table-memory", str(a.table_memory)] if
+                    a.table_memory else [], ready_s=900)
     try:
         result["resident_mb_ready"] = server.rss_mb()
         start = time.monotonic()
@@ -505,7 +507,7 @@ def finding_10(binary, a):
 
 def finding_11(binary, a):
     archive = first_archive()
-    result = {"did": "token holder: a dataset, POST /v1/evaluations for 3 models, SIGKILL 1 s "
+    result = {"did": "token holder: a dataset, POST /v1/evaluations for 3 models, SIGKILL 0.2 s "
                      "later, restart: what the ticket (or the run list) says of each model"}
     if archive is None:
         result["skipped"] = "no Kider archive under " + ARCHIVES
@@ -522,7 +524,7 @@ def finding_11(binary, a):
             ticket = json.loads(answer).get("ticket")
         except ValueError:
             ticket = None
-        time.sleep(1)
+        time.sleep(0.2)
         server.process.send_signal(signal.SIGKILL)
         server.process.wait()
         process, port = start_server(binary, server.dir, server.models,
@@ -533,18 +535,20 @@ def finding_11(binary, a):
             status, body = get(port, "/v1/evaluations/tickets/%s" % ticket, 10)
             try:
                 models = json.loads(body).get("models", [])
-                result["after_restart"] = {m.get("model"): m.get("status") for m in models}
-            except ValueError:
-                result["after_restart"] = status
+                result["ticket_after_restart"] = "%s: %s" % (status, {
+                    m.get("model"): m.get("status") for m in models})
+            except (ValueError, AttributeError):
+                result["ticket_after_restart"] = status
         else:
-            status, body = get(port, "/v1/evaluations", 10)
-            try:
-                doc = json.loads(body)
-                runs = doc if isinstance(doc, list) else doc.get("runs", doc.get("items", []))
-                result["after_restart"] = {"runs recorded": len(runs), "of models asked": 3,
-                                           "statuses": [r.get("status") for r in runs]}
-            except ValueError:
-                result["after_restart"] = status
+            result["ticket_after_restart"] = "no ticket in the 202"
+        status, body = get(port, "/v1/evaluations", 10)
+        try:
+            doc = json.loads(body)
+            runs = doc if isinstance(doc, list) else doc.get("runs", doc.get("items", []))
+            result["runs_after_restart"] = "%d runs of 3 models asked: %s" % (
+                len(runs), [(r.get("model"), r.get("status")) for r in runs])
+        except (ValueError, AttributeError):
+            result["runs_after_restart"] = status
         return finish(server, result)
     finally:
         server.stop()
@@ -636,6 +640,8 @@ def main():
     p.add_argument("--campaign-requests", type=int, default=3000)
     p.add_argument("--table-cache-model", default="", help="finding 12: a model with a table "
                    "cache on disk (bruneton); default: that part is not run")
+    p.add_argument("--table-memory", type=int, default=0, help="finding 6: serve --table-memory "
+                   "(default: the server's own)")
     p.add_argument("--expect-fixed", action="store_true")
     p.add_argument("--json", action="store_true")
     p.add_argument("--archives", default=ARCHIVES, help="a folder of Kider .7z captures "
