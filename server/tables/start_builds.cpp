@@ -26,21 +26,18 @@ std::vector<std::pair<const ModelFactory*, ModelConfig>> start_builds(
   for (const std::string& item : prebuild) {
     const std::size_t colon = item.find(':');
     if (colon == std::string::npos) {
-      throw std::invalid_argument("--prebuild: '" + item +
-                                  "' is not model:level (e.g. bruneton:standard)");
+      throw std::invalid_argument("'" + item + "' is not model:level (e.g. bruneton:standard)");
     }
     const std::string id = item.substr(0, colon);
     const auto level = parse_quality_level(item.substr(colon + 1));
     if (!level) {
-      throw std::invalid_argument("--prebuild: '" + item +
-                                  "': the level is draft, standard or reference");
+      throw std::invalid_argument("'" + item + "': the level is draft, standard or reference");
     }
     const ModelFactory* factory = nullptr;
     for (const ModelFactory& f : served) {
       if (f.descriptor->id == id) factory = &f;
     }
-    if (factory == nullptr)
-      throw std::invalid_argument("--prebuild: '" + item + "': " + id + " is not served");
+    if (factory == nullptr) throw std::invalid_argument("'" + item + "': " + id + " is not served");
     builds.emplace_back(factory, level_config(*factory->descriptor, *level));
   }
   return builds;

@@ -18,7 +18,7 @@ namespace clearsky::server {
 // The model's configuration at a quality level: the defaults with the level's options.
 ModelConfig level_config(const ModelDescriptor& descriptor, QualityLevel level);
 
-// std::invalid_argument naming --prebuild for an item that is not model:level, a model not
+// std::invalid_argument (the CLI names --prebuild) for an item that is not model:level, a model not
 // served or an unknown level.
 std::vector<std::pair<const ModelFactory*, ModelConfig>> start_builds(
     std::span<const ModelFactory> served, const std::vector<std::string>& prebuild);
