@@ -1,6 +1,7 @@
 // `clearsky fit --dataset NAME --model ID [--free a,b] [--bounds JSON] [--grid N,..]
 // [--captures LABEL,..] [--parameters JSON] [--search-options JSON] [--per-capture]
-// [--cross-validate] [--max-evaluations N] [--fold-evaluations N] [--history] [--json]
+// [--cross-validate] [--max-evaluations N] [--fold-evaluations N] [--quality LEVEL] [--history]
+// [--json]
 // [--db PATH]`: fits the model's atmosphere to a stored dataset (docs/fits.md); the fit is
 // stored (the fits table) and printed as GET /v1/fits/{id} answers it (api/encode/fit_json.h).
 #include <iomanip>
