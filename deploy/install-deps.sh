@@ -30,6 +30,9 @@ packages=(
   # The Python client (clients/python, docs/clients.md): numpy for its arrays, OpenImageIO's
   # Python bindings for decoding skydome images in its tests.
   python3-numpy python3-openimageio
+  # The broadband irradiance against the pyranometer (docs/building-energy.md) is plotted by
+  # tools/broadband/pyranometer_validation.py.
+  python3-matplotlib
   # The browser viewer's test (docs/viewer.md) drives Debian's chromium headless.
   chromium
   # The fuzz programs (fuzz/run.sh, docs/fuzzing.md): clang 14 with its sanitizer and libFuzzer

@@ -149,10 +149,12 @@ Json schemas() {
   },
   "IrradianceComponent": {
     "type": "object",
-    "required": ["irradiance_w_m2", "illuminance_lx"],
+    "required": ["model_range_irradiance_w_m2", "irradiance_w_m2", "broadband_irradiance_w_m2", "illuminance_lx"],
     "additionalProperties": false,
     "properties": {
-      "irradiance_w_m2": {"type": "number", "minimum": 0, "description": "Sum over the answered grid (integrated_range_nm)."},
+      "model_range_irradiance_w_m2": {"type": "number", "minimum": 0, "description": "Sum over the answered grid (integrated_range_nm), at 1 au, without molecular absorption: the model's own figure, not the solar irradiance a pyranometer measures."},
+      "irradiance_w_m2": {"type": "number", "minimum": 0, "deprecated": true, "description": "Deprecated alias of model_range_irradiance_w_m2 (the same number); use model_range_irradiance_w_m2, or broadband_irradiance_w_m2 for the whole solar spectrum."},
+      "broadband_irradiance_w_m2": {"type": ["number", "null"], "minimum": 0, "description": "300..4000 nm, absorbed by water vapour, ozone and mixed gases (Bird and Riordan 1986) and at the date's Earth-Sun distance when time is given (docs/http-api.md \"Broadband irradiance\"); null when the model cannot go broadband (broadband_unavailable says why). On a horizontal plane: DNI (direct_normal), DHI (diffuse), GHI (global)."},
       "illuminance_lx": {"type": "number", "minimum": 0},
       "spectral_w_m2_nm": {"type": "array", "items": {"type": "number", "minimum": 0}, "description": "With spectral=true, one per wavelengths_nm."}
     }
@@ -180,6 +182,20 @@ Json schemas() {
       },
       "integrated_range_nm": {"type": "array", "minItems": 2, "maxItems": 2, "items": {"type": "number"}},
       "ground_reflection": {"type": "string", "enum": ["excluded"]},
+      "broadband": {
+        "type": ["object", "null"],
+        "description": "How the broadband figures were computed; null when the model cannot go broadband.",
+        "required": ["range_nm", "precipitable_water_cm", "ozone_atm_cm", "earth_sun_distance_factor", "method"],
+        "additionalProperties": false,
+        "properties": {
+          "range_nm": {"type": "array", "minItems": 2, "maxItems": 2, "items": {"type": "number"}},
+          "precipitable_water_cm": {"type": "number"},
+          "ozone_atm_cm": {"type": "number"},
+          "earth_sun_distance_factor": {"type": "number", "description": "(1 au / r)^2 of the date (Spencer 1971); 1 for a sun given by its angles."},
+          "method": {"type": "string"}
+        }
+      },
+      "broadband_unavailable": {"type": "string", "description": "Why the model's answer cannot be extended to 300..4000 nm (broadband is null)."},
       "wavelengths_nm": {"type": "array", "items": {"type": "number"}, "description": "With spectral=true."},
       "direct_normal": {"$ref": "#/components/schemas/IrradianceComponent"},
       "direct": {"$ref": "#/components/schemas/IrradianceComponent"},
@@ -485,14 +501,16 @@ Json operations() {
       {"name": "tilt", "in": "query", "required": false, "description": "Plane tilt from horizontal, degrees.", "schema": {"type": "number", "minimum": 0, "maximum": 180, "default": 0}},
       {"name": "surface_azimuth", "in": "query", "required": false, "description": "Azimuth of the plane's normal, degrees clockwise from North.", "schema": {"type": "number", "minimum": -360, "maximum": 360, "default": 180}},
       {"name": "component", "in": "query", "required": false, "description": "Which components to answer (a model without sun or sky irradiance answers 422 for the components it lacks).", "schema": {"type": "string", "enum": ["all", "direct", "diffuse", "global"], "default": "all"}},
-      {"name": "spectral", "in": "query", "required": false, "description": "Add each component's spectrum and the wavelengths.", "schema": {"type": "boolean", "default": false}}
+      {"name": "spectral", "in": "query", "required": false, "description": "Add each component's spectrum and the wavelengths.", "schema": {"type": "boolean", "default": false}},
+      {"name": "precipitable_water_cm", "in": "query", "required": false, "description": "Precipitable water of the vertical column, cm: the water vapour absorption of the broadband figures (default: ASTM G-173's reference atmosphere).", "schema": {"type": "number", "minimum": 0, "maximum": 10, "default": 1.42}},
+      {"name": "ozone_atm_cm", "in": "query", "required": false, "description": "Ozone column, atm-cm (1 atm-cm = 1000 DU): the ozone absorption of the broadband figures (default: ASTM G-173's reference atmosphere).", "schema": {"type": "number", "minimum": 0, "maximum": 1, "default": 0.34}}
     ],
     "responses": {
       "200": {
         "description": "Irradiance.",
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/Irradiance"},
-          "example": {"altitude_m": 0.0, "diffuse": {"illuminance_lx": 28493.223923522513, "irradiance_w_m2": 180.52086377322016}, "direct": {"illuminance_lx": 88658.85993633908, "irradiance_w_m2": 479.46653007527397}, "direct_normal": {"illuminance_lx": 95663.66999330047, "irradiance_w_m2": 517.348496685935}, "global": {"illuminance_lx": 117152.08385986158, "irradiance_w_m2": 659.987393848494}, "ground_reflection": "excluded", "integrated_range_nm": [360.0, 830.0], "model": "preetham", "model_version": "1", "quality": "standard", "quality_error": {"against": "reference", "max_relative": 0.0, "p95_relative": 0.0}, "quality_setting": {}, "served_quality": "standard", "plane": {"surface_azimuth_deg": 180.0, "tilt_deg": 30.0}, "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}}
+          "example": {"altitude_m": 0.0, "diffuse": {"model_range_irradiance_w_m2": 180.52086377322016, "irradiance_w_m2": 180.52086377322016, "broadband_irradiance_w_m2": null, "illuminance_lx": 28493.223923522513}, "direct": {"model_range_irradiance_w_m2": 479.46653007527397, "irradiance_w_m2": 479.46653007527397, "broadband_irradiance_w_m2": null, "illuminance_lx": 88658.85993633908}, "direct_normal": {"model_range_irradiance_w_m2": 517.348496685935, "irradiance_w_m2": 517.348496685935, "broadband_irradiance_w_m2": null, "illuminance_lx": 95663.66999330047}, "global": {"model_range_irradiance_w_m2": 659.987393848494, "irradiance_w_m2": 659.987393848494, "broadband_irradiance_w_m2": null, "illuminance_lx": 117152.08385986158}, "ground_reflection": "excluded", "integrated_range_nm": [360.0, 830.0], "model": "preetham", "model_version": "1", "quality": "standard", "quality_error": {"against": "reference", "max_relative": 0.0, "p95_relative": 0.0}, "quality_setting": {}, "served_quality": "standard", "plane": {"surface_azimuth_deg": 180.0, "tilt_deg": 30.0}, "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}, "broadband": null, "broadband_unavailable": "preetham is a fit over the visible range whose atmosphere is a turbidity, not an extinction the 300..4000 nm extension can continue (docs/http-api.md \"Broadband irradiance\")"}
         }}
       }
     }

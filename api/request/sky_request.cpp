@@ -36,8 +36,9 @@ SunSpec parse_sun(Parameters& p) {
       throw missing_parameter("sun_zenith",
                               "give sun_zenith and sun_azimuth, or lat, lon and time");
     }
-    const SolarPosition position =
-        solar_position_checked(parse_place_and_time(p, std::nullopt).position);
+    const SolarPositionInput input = parse_place_and_time(p, std::nullopt).position;
+    const SolarPosition position = solar_position_checked(input);
+    spec.unix_time_utc_s = input.unix_time_utc_s;
     spec.zenith_deg = position.zenith_deg;
     spec.azimuth_deg = position.azimuth_deg;
     spec.from_place_and_time = true;

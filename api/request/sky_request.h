@@ -39,6 +39,9 @@ struct SunSpec {
   double zenith_deg = 0;
   double azimuth_deg = 0;
   bool from_place_and_time = false;
+  // The instant (UTC, unix seconds) of a sun given by place and time; empty for one given by
+  // its angles.
+  std::optional<double> unix_time_utc_s;
   // The parameter to name when the model cannot answer for this sun.
   std::string parameter = "sun_zenith";
 };

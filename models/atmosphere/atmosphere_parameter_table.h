@@ -35,6 +35,10 @@ struct AtmosphereParameterInfo {
   // When not empty, the value must also exceed this other parameter's (the top of the
   // atmosphere above the ground).
   std::string_view above{};
+  // False for the molecular absorbers, which the broadband irradiance applies after the model
+  // (api/irradiance/broadband_irradiance.h): no model's sky depends on them, so they are left
+  // out of canonical_string() and do not key any model's tables or caches.
+  bool keys_models = true;
   // Exactly one of the two is set: the member, or the optional member whose absence means
   // default_text (the ground albedo).
   double AtmosphereParameters::*member = nullptr;
@@ -69,7 +73,7 @@ inline constexpr double kNoNumber = std::numeric_limits<double>::quiet_NaN();
 // In the order of canonical_string(). The aerosol ranges are those the descriptors have always
 // published: |g| <= 0.999 keeps the Cornette-Shanks phase function's forward peak finite on the
 // models' angular grids.
-inline constexpr std::array<AtmosphereParameterInfo, 11> kAtmosphereParameterTable = {{
+inline constexpr std::array<AtmosphereParameterInfo, 13> kAtmosphereParameterTable = {{
     {.name = "earth_radius_m",
      .canonical_key = "R",
      .unit = "m",
@@ -168,6 +172,29 @@ inline constexpr std::array<AtmosphereParameterInfo, 11> kAtmosphereParameterTab
      .min_value = 0.0,
      .max_value = 1.0,
      .optional_member = &AtmosphereParameters::ground_albedo},
+    // The absorbers of the broadband (300..4000 nm) irradiance (Bird and Riordan 1986,
+    // models/atmosphere/spctral2.h). Defaults: the reference atmosphere of ASTM G-173-03 (the
+    // U.S. Standard Atmosphere 1976: 1.42 cm of precipitable water, 0.34 atm-cm of ozone).
+    {.name = "precipitable_water_cm",
+     .canonical_key = "w",
+     .unit = "cm",
+     .description = "precipitable water of the vertical column (water vapour absorption of the "
+                    "broadband irradiance)",
+     .default_value = 1.42,
+     .min_value = 0.0,
+     .max_value = 10.0,
+     .keys_models = false,
+     .member = &AtmosphereParameters::precipitable_water_cm},
+    {.name = "ozone_atm_cm",
+     .canonical_key = "o3",
+     .unit = "atm-cm",
+     .description = "ozone column (ozone absorption of the broadband irradiance); 1 atm-cm = "
+                    "1000 Dobson units",
+     .default_value = 0.34,
+     .min_value = 0.0,
+     .max_value = 1.0,
+     .keys_models = false,
+     .member = &AtmosphereParameters::ozone_atm_cm},
 }};
 
 // The entry of a request name, or nullptr.

@@ -55,6 +55,7 @@ std::string AtmosphereParameters::canonical_string() const {
   out.precision(17);
   bool first = true;
   for (const AtmosphereParameterInfo& p : kAtmosphereParameterTable) {
+    if (!p.keys_models) continue;
     out << (first ? "" : ";") << p.canonical_key << '=';
     first = false;
     if (p.optional_member != nullptr && !(this->*p.optional_member)) {

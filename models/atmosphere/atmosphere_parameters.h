@@ -18,7 +18,12 @@
 // | g                            | mie_phase_g                  | -    | 0.7     | [-0.999, 0.999] | Cornette-Shanks asymmetry                   |
 // | turbidity                    | turbidity                    | -    | 2.53    | [1, 10]         | Linke-style turbidity (Preetham, Hosek)     |
 // | albedo                       | ground_albedo                | -    | grass   | [0, 1]          | Lambertian ground reflectance               |
+// | precipitable_water_cm        | precipitable_water_cm        | cm   | 1.42    | [0, 10]         | water vapour column (broadband only)        |
+// | ozone_atm_cm                 | ozone_atm_cm                 | atm-cm | 0.34  | [0, 1]          | ozone column, 1000 DU (broadband only)      |
 //
+// The last two are applied after the model, by the broadband irradiance of /v1/irradiance
+// (api/irradiance/broadband_irradiance.h, Bird and Riordan 1986): no model takes them, and they
+// are not part of canonical_string() (no model's tables depend on them).
 // "name" is the name in requests and in InvalidInput::field(). A model may narrow a range in
 // its descriptor (Preetham: turbidity in [2, 10]). Value type; thread-safe. validate() is
 // written so that NaN fails it.
@@ -45,6 +50,8 @@ struct AtmosphereParameters {
   double turbidity;
   // Empty: the spectral albedo of grass (Feister and Grewe 1995); otherwise a constant.
   std::optional<double> ground_albedo;
+  double precipitable_water_cm;
+  double ozone_atm_cm;
 
   // Throws InvalidInput (models/core/invalid_input.h) naming the offending parameter.
   void validate() const;

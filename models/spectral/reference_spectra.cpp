@@ -33,6 +33,12 @@ ReferenceSpectra build() {
   r.rayleigh_penndorf_0c_per_m = penndorf.spectrum(0, 1);
   const NumericTable grass = load("spectra/grass_albedo_feister1995.csv");
   r.grass_albedo = grass.spectrum(0, 1);
+  const NumericTable spctral2 = load("spectra/spctral2_bird_riordan1986.csv");
+  r.spctral2_extraterrestrial =
+      spctral2.spectrum(0, spctral2.column_index("extraterrestrial_w_m2_nm"));
+  r.spctral2_water_vapour_a_w = spctral2.spectrum(0, spctral2.column_index("water_vapour_a_w"));
+  r.spctral2_ozone_a_o = spctral2.spectrum(0, spctral2.column_index("ozone_a_o"));
+  r.spctral2_mixed_gases_a_u = spctral2.spectrum(0, spctral2.column_index("mixed_gases_a_u"));
   return r;
 }
 

@@ -118,6 +118,8 @@ IrradianceResult Client::irradiance(const IrradianceRequest& request) const {
   query.add("surface_azimuth", request.surface_azimuth_deg);
   query.add("component", request.component);
   if (request.spectral) query.add("spectral", true);
+  query.add("precipitable_water_cm", request.precipitable_water_cm);
+  query.add("ozone_atm_cm", request.ozone_atm_cm);
   return detail::irradiance_of(json_of(transport_->get(query.target("/v1/irradiance"))));
 }
 

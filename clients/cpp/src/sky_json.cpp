@@ -61,6 +61,10 @@ std::optional<IrradianceComponent> component_of(const nlohmann::json& json, cons
   if (!part) return std::nullopt;
   IrradianceComponent component;
   component.irradiance_w_m2 = member<double>(*part, "irradiance_w_m2");
+  component.model_range_irradiance_w_m2 =
+      optional_member<double>(*part, "model_range_irradiance_w_m2")
+          .value_or(component.irradiance_w_m2);
+  component.broadband_irradiance_w_m2 = optional_member<double>(*part, "broadband_irradiance_w_m2");
   component.illuminance_lx = member<double>(*part, "illuminance_lx");
   component.spectral_w_m2_nm = optional_member<std::vector<double>>(*part, "spectral_w_m2_nm")
                                    .value_or(std::vector<double>{});
@@ -193,6 +197,7 @@ IrradianceResult irradiance_of(const nlohmann::json& json) {
   result.direct = component_of(json, "direct");
   result.diffuse = component_of(json, "diffuse");
   result.global = component_of(json, "global");
+  result.broadband_unavailable = optional_member<std::string>(json, "broadband_unavailable");
   return result;
 }
 

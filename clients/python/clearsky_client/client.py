@@ -145,10 +145,14 @@ class Client:
                    lat: Optional[Union[Number, str]] = None,
                    lon: Optional[Union[Number, str]] = None, time: Optional[Time] = None,
                    quality: Optional[str] = None,
+                   precipitable_water_cm: Optional[Number] = None,
+                   ozone_atm_cm: Optional[Number] = None,
                    **parameters: ParameterValue) -> Irradiance:
         """GET /v1/irradiance: direct, diffuse and global irradiance (W/m2) and illuminance (lx)
         on a plane (tilt from horizontal and the azimuth of its normal, degrees; horizontal by
         default). component: all, direct, diffuse or global; spectral=True adds the spectra.
+        Each component's broadband_irradiance_w_m2 (300..4000 nm) uses the absorbers
+        precipitable_water_cm and ozone_atm_cm (defaults 1.42 cm and 0.34 atm-cm).
 
         Example:
             >>> client.irradiance("preetham", sun_zenith=30, sun_azimuth=135,
@@ -158,7 +162,9 @@ class Client:
         query = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time, None, parameters,
                                quality)
         for name, value in (("tilt", tilt), ("surface_azimuth", surface_azimuth),
-                            ("component", component)):
+                            ("component", component),
+                            ("precipitable_water_cm", precipitable_water_cm),
+                            ("ozone_atm_cm", ozone_atm_cm)):
             if value is not None:
                 query[name] = value
         if spectral:

@@ -168,17 +168,24 @@ class Rgb:
 
 @dataclass(frozen=True)
 class IrradianceComponent:
-    """One component of the irradiance on the plane; spectral_w_m2_nm with spectral=True."""
+    """One component of the irradiance on the plane; spectral_w_m2_nm with spectral=True.
+    model_range_irradiance_w_m2 is over integrated_range_nm (irradiance_w_m2: its deprecated
+    alias); broadband_irradiance_w_m2 over 300..4000 nm with molecular absorption, None when
+    the model cannot go broadband (Irradiance.broadband_unavailable says why)."""
 
     irradiance_w_m2: float
     illuminance_lx: float
     spectral_w_m2_nm: Optional[np.ndarray]
+    model_range_irradiance_w_m2: float
+    broadband_irradiance_w_m2: Optional[float]
 
     @classmethod
     def from_json(cls, j: Dict[str, Any]) -> "IrradianceComponent":
         spectrum = j.get("spectral_w_m2_nm")
         return cls(j["irradiance_w_m2"], j["illuminance_lx"],
-                   None if spectrum is None else np.asarray(spectrum, dtype=np.float64))
+                   None if spectrum is None else np.asarray(spectrum, dtype=np.float64),
+                   j.get("model_range_irradiance_w_m2", j["irradiance_w_m2"]),
+                   j.get("broadband_irradiance_w_m2"))
 
 
 @dataclass(frozen=True)
@@ -207,6 +214,11 @@ class Irradiance:
     def served_quality(self) -> str:
         """The level whose tables answered: quality, or draft while standard is being built."""
         return self.raw["served_quality"]
+
+    @property
+    def broadband_unavailable(self) -> Optional[str]:
+        """Why the model's answer has no broadband figures (None when it has them)."""
+        return self.raw.get("broadband_unavailable")
 
     @classmethod
     def from_json(cls, j: Dict[str, Any]) -> "Irradiance":

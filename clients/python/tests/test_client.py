@@ -196,6 +196,13 @@ class ClientAgainstWriter(unittest.TestCase):
         diffuse = self.client.irradiance("preetham", component="diffuse", **SUN)
         self.assertIsNone(diffuse.direct)
         self.assertGreater(diffuse.diffuse.illuminance_lx, 0)
+        # Preetham cannot go broadband: no broadband number, a reason instead; the figure over
+        # its own range keeps its deprecated alias.
+        dry = self.client.irradiance("preetham", precipitable_water_cm=0.5, ozone_atm_cm=0.3,
+                                     **SUN)
+        self.assertIsNone(dry.global_.broadband_irradiance_w_m2)
+        self.assertIn("turbidity", dry.broadband_unavailable)
+        self.assertEqual(dry.global_.model_range_irradiance_w_m2, dry.global_.irradiance_w_m2)
 
     def test_sky_patches(self) -> None:
         vector = self.client.sky_patches("preetham", output="luminance", **SUN)

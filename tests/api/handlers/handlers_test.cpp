@@ -234,6 +234,26 @@ TEST_F(Handlers, IrradianceOfTheAnalyticSky) {
   expect_error(call(irradiance, "GET", "/v1/irradiance", with({{"tilt", "-1"}})), 400, "tilt");
 }
 
+TEST_F(Handlers, IrradianceSaysWhyAModelCannotGoBroadband) {
+  // The analytic test sky has no Angstrom aerosols to continue beyond its range: its answer
+  // keeps its model-range figures (and their deprecated alias) and names why there is no
+  // broadband figure instead of giving a smaller number under that name.
+  const auto r = call(irradiance, "GET", "/v1/irradiance",
+                      with({{"precipitable_water_cm", "2.5"}, {"ozone_atm_cm", "0.3"}}));
+  ASSERT_EQ(r.status, 200) << r.body;
+  const auto j = json_of(r);
+  EXPECT_TRUE(j["broadband"].is_null());
+  EXPECT_NE(j["broadband_unavailable"].get<std::string>().find("testsky"), std::string::npos);
+  for (const char* part : {"direct_normal", "direct", "diffuse", "global"}) {
+    EXPECT_TRUE(j[part]["broadband_irradiance_w_m2"].is_null()) << part;
+    EXPECT_EQ(j[part]["irradiance_w_m2"], j[part]["model_range_irradiance_w_m2"]) << part;
+  }
+  expect_error(call(irradiance, "GET", "/v1/irradiance", with({{"precipitable_water_cm", "-1"}})),
+               400, "precipitable_water_cm");
+  expect_error(call(irradiance, "GET", "/v1/irradiance", with({{"ozone_atm_cm", "2"}})), 400,
+               "ozone_atm_cm");
+}
+
 TEST_F(Handlers, RgbSpectralAndThreeWavelengthAgreeOnLuminance) {
   auto spectral =
       call(rgb, "GET", "/v1/rgb", with({{"view_zenith", "20"}, {"view_azimuth", "90"}}));

@@ -113,6 +113,14 @@ TEST_F(SkyClient, IrradianceOnATiltedPlane) {
   EXPECT_GT(result.global->illuminance_lx, 0);
   EXPECT_EQ(result.global->spectral_w_m2_nm.size(), result.wavelengths_nm.size());
   EXPECT_FALSE(result.wavelengths_nm.empty());
+  EXPECT_EQ(result.global->model_range_irradiance_w_m2, result.global->irradiance_w_m2);
+  // The analytic test model has no aerosols to continue: no broadband figure, a reason.
+  request.precipitable_water_cm = 2.0;
+  request.ozone_atm_cm = 0.3;
+  const IrradianceResult absorbed = client().irradiance(request);
+  EXPECT_FALSE(absorbed.global->broadband_irradiance_w_m2.has_value());
+  ASSERT_TRUE(absorbed.broadband_unavailable.has_value());
+  EXPECT_FALSE(absorbed.broadband_unavailable->empty());
 }
 
 TEST_F(SkyClient, RgbOfOneViewAndOfABatchAgree) {

@@ -131,7 +131,9 @@ TEST_P(AtmosphereParameterDocumentation, TableMatches) {
       {"angstrom_beta", &AtmosphereParameters::angstrom_beta},
       {"mie_single_scattering_albedo", &AtmosphereParameters::mie_single_scattering_albedo},
       {"mie_phase_g", &AtmosphereParameters::mie_phase_g},
-      {"turbidity", &AtmosphereParameters::turbidity}};
+      {"turbidity", &AtmosphereParameters::turbidity},
+      {"precipitable_water_cm", &AtmosphereParameters::precipitable_water_cm},
+      {"ozone_atm_cm", &AtmosphereParameters::ozone_atm_cm}};
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const testing::TableRow& row = rows[i];
     const AtmosphereParameterInfo& p = kAtmosphereParameterTable[i];

@@ -149,9 +149,16 @@ struct IrradianceRequest : SkyQuery {
   std::optional<double> surface_azimuth_deg;
   std::optional<std::string> component;  // "all" (default), "direct", "diffuse", "global"
   bool spectral = false;                 // add each component's spectrum
+  // The absorbers of the broadband figures (server defaults: 1.42 cm, 0.34 atm-cm).
+  std::optional<double> precipitable_water_cm;
+  std::optional<double> ozone_atm_cm;
 };
 struct IrradianceComponent {
-  double irradiance_w_m2 = 0;
+  double irradiance_w_m2 = 0;              // deprecated alias of model_range_irradiance_w_m2
+  double model_range_irradiance_w_m2 = 0;  // over integrated_range_nm
+  // 300..4000 nm with molecular absorption; empty when the model cannot go broadband
+  // (IrradianceResult::broadband_unavailable says why).
+  std::optional<double> broadband_irradiance_w_m2;
   double illuminance_lx = 0;
   std::vector<double> spectral_w_m2_nm;  // with spectral=true
 };
@@ -167,6 +174,8 @@ struct IrradianceResult {
   std::vector<double> wavelengths_nm;  // with spectral=true
   // The components present follow IrradianceRequest::component.
   std::optional<IrradianceComponent> direct_normal, direct, diffuse, global;
+  // Why there are no broadband figures (empty when there are).
+  std::optional<std::string> broadband_unavailable;
 };
 
 // GET /v1/rgb (one view) and POST /v1/rgb (a batch): linear sRGB, radiometric
