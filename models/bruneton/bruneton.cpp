@@ -194,7 +194,14 @@ std::shared_ptr<const BrunetonModel> BrunetonModel::create(const ModelDescriptor
 std::shared_ptr<const BrunetonModel> BrunetonModel::build(const ValidatedConfig& config,
                                                           const PrecomputeContext& context) {
   return std::shared_ptr<const BrunetonModel>(
-      new BrunetonModel(config.descriptor(), config.config(), context));
+      new BrunetonModel(config.descriptor(), config.config(), context, nullptr));
+}
+
+std::shared_ptr<const BrunetonModel> BrunetonModel::build_with_aerosols(
+    const ValidatedConfig& config, const PrecomputeContext& context,
+    const AerosolOptics& aerosols) {
+  return std::shared_ptr<const BrunetonModel>(
+      new BrunetonModel(config.descriptor(), config.config(), context, &aerosols));
 }
 
 std::size_t BrunetonModel::estimated_table_bytes(const ValidatedConfig& config) {
@@ -203,12 +210,22 @@ std::size_t BrunetonModel::estimated_table_bytes(const ValidatedConfig& config) 
 }
 
 BrunetonModel::BrunetonModel(const ModelDescriptor& descriptor, ModelConfig config,
-                             const PrecomputeContext& context)
+                             const PrecomputeContext& context, const AerosolOptics* aerosols)
     : SkyModel(std::move(config)), descriptor_(descriptor) {
   const auto start = std::chrono::steady_clock::now();
   const bruneton::Resolution res = resolution(descriptor, this->config());
-  const std::string description = table_description(this->config());
-  const std::string key = cache_key(this->config());
+  std::string description = table_description(this->config());
+  std::string key = cache_key(this->config());
+  AtmosphereSpectra spectra = atmosphere();
+  std::shared_ptr<const TabulatedPhaseFunction> precomputation_phase;
+  if (aerosols != nullptr) {
+    description = aerosols->description + ";" + description;
+    key = aerosols->cache_prefix + "-" + hex64(fnv1a_64(description));
+    spectra.mie_extinction_per_m = aerosols->mie_extinction_per_m;
+    spectra.mie_scattering_per_m = aerosols->mie_scattering_per_m;
+    precomputation_phase = aerosols->precomputation_phase;
+    mie_phase_ = aerosols->phase;
+  }
   const auto load_or_precompute = [&]() -> bruneton::Tables {
     if (context.cache != nullptr) {
       if (std::optional<std::string> blob = context.cache->load(key)) {
@@ -219,7 +236,8 @@ BrunetonModel::BrunetonModel(const ModelDescriptor& descriptor, ModelConfig conf
         }
       }
     }
-    bruneton::Tables built = bruneton::precompute_tables(atmosphere(), res, context);
+    bruneton::Tables built =
+        bruneton::precompute_tables(spectra, res, context, precomputation_phase);
     if (context.cache != nullptr)
       context.cache->store(key, bruneton::serialise_tables(built, description));
     return built;
@@ -244,8 +262,24 @@ void BrunetonModel::radiance(double r, double mu, double mu_s, double nu, float*
     return;
   }
   r = std::clamp(r, g.bottom_m, g.top_m);
-  tables_->scattering(r, mu, mu_s, nu, atmosphere().parameters.mie_phase_g, out);
+  scattering(r, mu, mu_s, nu, out);
   if (mu < bruneton::horizon_mu(r, g)) add_ground(r, mu, mu_s, nu, out);
+}
+
+void BrunetonModel::scattering(const bruneton::Coord4& c, double nu, float* out) const {
+  if (!mie_phase_) {
+    tables_->scattering(c, nu, atmosphere().parameters.mie_phase_g, out);
+    return;
+  }
+  ScratchRow phase(tables_->stride);
+  std::fill(phase.data(), phase.data() + tables_->stride, 0.0f);
+  mie_phase_->evaluate(nu, phase.data());
+  tables_->scattering(c, nu, phase.data(), out);
+}
+
+void BrunetonModel::scattering(double r, double mu, double mu_s, double nu, float* out) const {
+  scattering(bruneton::coordinates_4d(r, mu, mu_s, nu, tables_->resolution, tables_->geometry), nu,
+             out);
 }
 
 void BrunetonModel::add_ground(double r, double mu, double mu_s, double nu, float* out) const {
@@ -278,7 +312,6 @@ void BrunetonModel::compute_sky_radiance(const SunState& sun, const Viewpoint& v
   const double mu_s = std::cos(sun.sun().zenith_rad);
   const double sin_s = std::sin(sun.sun().zenith_rad);
   const std::size_t n = wavelengths().size();
-  const double mie_g = atmosphere().parameters.mie_phase_g;
   ScratchRow value(tables_->stride);
   // Inside the atmosphere the altitude and sun axes of the lookup are the same for every view.
   const bool inside = r <= g.top_m;
@@ -296,7 +329,7 @@ void BrunetonModel::compute_sky_radiance(const SunState& sun, const Viewpoint& v
     if (inside) {
       const bruneton::Coord4 c{r_axis, bruneton::mu_axis_4d(r_lookup, mu, tables_->resolution, g),
                                mu_s_axis, bruneton::nu_axis_4d(nu, tables_->resolution)};
-      tables_->scattering(c, nu, mie_g, value.data());
+      scattering(c, nu, value.data());
       if (mu < mu_horizon) add_ground(r_lookup, mu, mu_s, nu, value.data());
     } else {
       radiance(r, mu, mu_s, nu, value.data());
@@ -361,7 +394,6 @@ ScatteringAlongRay BrunetonModel::compute_aerial_perspective(const SunState& sun
   double travelled = 0.0;
   if (!enter_atmosphere(g, r, mu, mu_s, nu, &travelled) || distance_m <= travelled) return sample;
   r = std::clamp(r, g.bottom_m, g.top_m);
-  const double mie_g = atmosphere().parameters.mie_phase_g;
   const AtmosphereSegment segment = atmosphere_segment(r, mu, g.bottom_m, g.top_m);
   const double d = std::min(distance_m - travelled, segment.end);
   sample.length_m = d;
@@ -373,7 +405,7 @@ ScatteringAlongRay BrunetonModel::compute_aerial_perspective(const SunState& sun
   tables_->transmittance_between(r, mu, d, t);
   if (d >= segment.end) {
     // To the end of the ray: the full in-scattered radiance.
-    tables_->scattering(r, mu, mu_s, nu, mie_g, l);
+    scattering(r, mu, mu_s, nu, l);
   } else {
     // S(x) - T(x, x0) S(x0) (paper Eq. 11), with the 2008 code's fix near the horizon, where the
     // difference of two lookups is imprecise: interpolate between mu_h - eps and mu_h + eps.
@@ -381,8 +413,8 @@ ScatteringAlongRay BrunetonModel::compute_aerial_perspective(const SunState& sun
     auto difference = [&](double mu_used, float* out, float* scratch) {
       const double r0 = std::clamp(radius_at_distance(r, mu_used, d), g.bottom_m, g.top_m);
       const double mu0 = clamp_cosine((r * mu_used + d) / std::max(r0, 1.0));
-      tables_->scattering(r, mu_used, mu_s, nu, mie_g, out);
-      tables_->scattering(r0, mu0, mu_s0, nu, mie_g, scratch);
+      scattering(r, mu_used, mu_s, nu, out);
+      scattering(r0, mu0, mu_s0, nu, scratch);
       for (int w = 0; w < stride; ++w) out[w] = std::max(out[w] - t[w] * scratch[w], 0.0f);
     };
     constexpr double kHorizonEpsilon = 0.004;

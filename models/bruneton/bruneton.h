@@ -34,11 +34,28 @@
 #include <memory>
 #include <string>
 
+#include "models/atmosphere/spectral_phase_function.h"
 #include "models/bruneton/bruneton_tables.h"
 #include "models/core/model_factory.h"
 #include "models/core/sky_model.h"
 
 namespace clearsky {
+
+// Aerosols given by their optical properties instead of the atmosphere's Angstrom law and
+// Cornette-Shanks phase function (models/measured_aerosols): everything else of the model (the
+// air, the ground, the tables and their resolution) stays Bruneton's.
+struct AerosolOptics {
+  Spectrum mie_extinction_per_m;  // at sea level, on the configuration's grid
+  Spectrum mie_scattering_per_m;  // at sea level, on the configuration's grid
+  // Per wavelength: the single scattering of every query.
+  std::shared_ptr<const SpectralPhaseFunction> phase;
+  // One function for all wavelengths: the precomputation of the orders >= 2.
+  std::shared_ptr<const TabulatedPhaseFunction> precomputation_phase;
+  // What the tables depend on beyond the configuration (the source of the optics), and the
+  // prefix of their cache key.
+  std::string description;
+  std::string cache_prefix;
+};
 
 class BrunetonModel : public SkyModel {
  public:
@@ -51,6 +68,12 @@ class BrunetonModel : public SkyModel {
   // stores them in the cache). Throws PrecomputeCancelled when cancelled.
   static std::shared_ptr<const BrunetonModel> build(const ValidatedConfig& config,
                                                     const PrecomputeContext& context);
+  // The same engine with the aerosols given by their optics (the atmosphere's alpha, beta,
+  // mie_single_scattering_albedo and g are not used). The tables' description and cache key are
+  // aerosols.description / aerosols.cache_prefix followed by those of the configuration.
+  static std::shared_ptr<const BrunetonModel> build_with_aerosols(const ValidatedConfig& config,
+                                                                  const PrecomputeContext& context,
+                                                                  const AerosolOptics& aerosols);
   // table_bytes() of the model build(config) makes, from the resolution and the wavelength
   // count alone (ModelFactory::estimate_table_bytes).
   static std::size_t estimated_table_bytes(const ValidatedConfig& config);
@@ -95,7 +118,11 @@ class BrunetonModel : public SkyModel {
 
  private:
   BrunetonModel(const ModelDescriptor& descriptor, ModelConfig config,
-                const PrecomputeContext& context);
+                const PrecomputeContext& context, const AerosolOptics* aerosols);
+
+  // All orders of scattering at c (and nu), with the aerosol phase function of the model.
+  void scattering(const bruneton::Coord4& c, double nu, float* out) const;
+  void scattering(double r, double mu, double mu_s, double nu, float* out) const;
 
   // Radiance seen along (r, mu) for the sun at (mu_s, nu), per unit solar irradiance:
   // scattering of all orders plus, when the ray hits the ground, the attenuated light the
@@ -110,6 +137,8 @@ class BrunetonModel : public SkyModel {
   std::shared_ptr<const bruneton::Tables> tables_;
   std::vector<float> solar_;  // padded
   std::vector<float> albedo_over_pi_;
+  // Set for aerosols given by their optics: the phase function per wavelength.
+  std::shared_ptr<const SpectralPhaseFunction> mie_phase_;
   bool loaded_from_cache_ = false;
   bool shares_tables_ = false;
   double precompute_seconds_ = 0;

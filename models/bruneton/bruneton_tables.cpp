@@ -147,12 +147,25 @@ void Tables::scattering(const Coord4& c, double nu, double mie_g, float* out) co
   list.sum(stride, out);
 }
 
+void Tables::scattering(const Coord4& c, double nu, const float* mie_phase, float* out) const {
+  FixedRowList<std::uint16_t, 32> list;
+  gather_4d(single_rayleigh, c, rayleigh_phase(nu), list);
+  if (!multiple.empty()) gather_4d(multiple, c, 1.0, list);
+  list.sum(stride, out);
+  FixedRowList<std::uint16_t, 16> mie;
+  gather_4d(single_mie, c, 1.0, mie);
+  ScratchRow single(stride);
+  mie.sum(stride, single.data());
+  for (int w = 0; w < stride; ++w) out[w] += mie_phase[w] * single.data()[w];
+}
+
 namespace {
 
 // Spectral coefficients as padded float rows.
 struct Coefficients {
   std::vector<float> rayleigh, mie_scattering, mie_extinction, albedo_over_pi;
-  double rayleigh_height_m = 0, mie_height_m = 0, mie_g = 0;
+  double rayleigh_height_m = 0, mie_height_m = 0;
+  MiePhase mie_phase;
 };
 
 Coefficients coefficients(const AtmosphereSpectra& s, int stride) {
@@ -169,7 +182,7 @@ Coefficients coefficients(const AtmosphereSpectra& s, int stride) {
   }
   c.rayleigh_height_m = s.parameters.rayleigh_scale_height_m;
   c.mie_height_m = s.parameters.mie_scale_height_m;
-  c.mie_g = s.parameters.mie_phase_g;
+  c.mie_phase.g = s.parameters.mie_phase_g;
   return c;
 }
 
@@ -477,7 +490,7 @@ struct Builder {
         if constexpr (First) {
           // Single scattering gets its phase functions here (2008 code, first iteration).
           const double p1r = rayleigh_phase(nu1);
-          const double p1m = cornette_shanks_phase(nu1, k.mie_g);
+          const double p1m = k.mie_phase(nu1);
           ar[slice.i0] += f1 * p1r * pr;
           ar[slice.i1] += f2 * p1r * pr;
           am[slice.i0] += f1 * p1r * pm;
@@ -555,7 +568,7 @@ struct Builder {
       for (std::size_t d = 0; d < n_dir; ++d) {
         const double nu2 = vx * wx[d] + mu * wz[d];
         phase_r[d] = rayleigh_phase(nu2) * dw[d];
-        phase_m[d] = cornette_shanks_phase(nu2, k.mie_g) * dw[d];
+        phase_m[d] = k.mie_phase(nu2) * dw[d];
       }
       for (int knu = 0; knu < n_nu; ++knu) {
         const double var = std::sqrt(1.0 - mu * mu) * std::sqrt(1.0 - mu_s * mu_s);
@@ -633,7 +646,8 @@ struct Builder {
                const int j = static_cast<int>(texel / res.irradiance_mu_s);
                const double r = irradiance_texel_r(j, res.irradiance_r, g);
                const double mu_s = irradiance_texel_mu_s(i, res.irradiance_mu_s, res.sun);
-               const double sx = std::sqrt(1.0 - mu_s * mu_s);
+               // The last texel may hold mu_s one rounding above 1 (extended sun ranges).
+               const double sx = safe_sqrt(1.0 - mu_s * mu_s);
                std::vector<float> profile_a, profile_b;
                build_profiles(source, r, mu_s, cos_t, profile_a, profile_b);
                const std::size_t n_profile = cos_t.size() * static_cast<std::size_t>(res.nu);
@@ -650,7 +664,7 @@ struct Builder {
                    weight_a[s0] += (1.0 - slice.f) * wa;
                    weight_a[s1] += slice.f * wa;
                    if (source.first()) {
-                     const double wb = cornette_shanks_phase(nu, k.mie_g) * w;
+                     const double wb = k.mie_phase(nu) * w;
                      weight_b[s0] += (1.0 - slice.f) * wb;
                      weight_b[s1] += slice.f * wb;
                    }
@@ -754,7 +768,8 @@ void validate(const Resolution& res) {
 }  // namespace
 
 Tables precompute_tables(const AtmosphereSpectra& spectra, const Resolution& resolution,
-                         const PrecomputeContext& context) {
+                         const PrecomputeContext& context,
+                         std::shared_ptr<const TabulatedPhaseFunction> mie_phase_table) {
   validate(resolution);
   Tables t;
   t.resolution = resolution;
@@ -763,7 +778,8 @@ Tables precompute_tables(const AtmosphereSpectra& spectra, const Resolution& res
   t.geometry.limit_m = spectra.parameters.top_radius_m + 1000.0;
   t.wavelengths = static_cast<int>(spectra.grid.size());
   t.stride = padded_stride(t.wavelengths);
-  const Coefficients k = coefficients(spectra, t.stride);
+  Coefficients k = coefficients(spectra, t.stride);
+  k.mie_phase.table = std::move(mie_phase_table);
   // Progress units: single scattering 1, per order density 3, transport 1.5.
   const int later_orders = std::max(resolution.orders - 1, 0);
   Progress progress(context, 1.0 + 4.5 * later_orders + 0.05);

@@ -16,12 +16,15 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "models/atmosphere/atmosphere_spectra.h"
+#include "models/atmosphere/phase_functions.h"
+#include "models/atmosphere/tabulated_phase_function.h"
 #include "models/bruneton/bruneton_functions.h"
 #include "models/bruneton/spectral_rows.h"
 #include "models/core/precompute_context.h"
@@ -159,12 +162,26 @@ struct Tables {
   void scattering(double r, double mu, double mu_s, double nu, double mie_g, float* out) const;
   // The same at precomputed coordinates (batches share the r and mu_s axes).
   void scattering(const Coord4& c, double nu, double mie_g, float* out) const;
+  // The same with an aerosol phase function per wavelength: mie_phase holds its values at nu
+  // (1/sr, one per wavelength; models/measured_aerosols).
+  void scattering(const Coord4& c, double nu, const float* mie_phase, float* out) const;
+};
+
+// The aerosol phase function of the precomputation (the first order's light as the source of
+// the second, and the scattering of every later order): Cornette-Shanks with the atmosphere's g,
+// or, when `table` is set, a tabulated one (the same at every wavelength).
+struct MiePhase {
+  double g = 0.0;
+  std::shared_ptr<const TabulatedPhaseFunction> table;
+  double operator()(double mu) const { return table ? (*table)(mu) : cornette_shanks_phase(mu, g); }
 };
 
 // Builds every table on spectra.grid with the given resolution; all cores unless
-// context.threads says otherwise. Throws PrecomputeCancelled when cancelled.
+// context.threads says otherwise. Throws PrecomputeCancelled when cancelled. The aerosol phase
+// function is Cornette-Shanks with spectra.parameters.mie_phase_g unless mie_phase_table is set.
 Tables precompute_tables(const AtmosphereSpectra& spectra, const Resolution& resolution,
-                         const PrecomputeContext& context);
+                         const PrecomputeContext& context,
+                         std::shared_ptr<const TabulatedPhaseFunction> mie_phase_table = nullptr);
 
 // The byte form of the tables for a TableCache: magic, format version, the description the
 // tables were built for (model, version, configuration), the data, and a 64-bit checksum of

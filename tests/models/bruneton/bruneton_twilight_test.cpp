@@ -319,3 +319,25 @@ TEST(BrunetonTwilight, SingleScatteringMatchesDirectIntegrationBelowTheHorizon) 
 
 }  // namespace
 }  // namespace clearsky
+
+namespace clearsky {
+namespace {
+
+// At some ranges the irradiance table's last texel holds mu_s one rounding above 1, whose
+// sqrt(1 - mu_s^2) was NaN and made the whole sky irradiance, and from the second order the
+// sky, NaN (found by the physics properties of measured_aerosols at 117.1146 degrees).
+TEST(BrunetonTwilight, EveryRangeGivesFiniteTables) {
+  ModelConfig config = testing::small_bruneton_config(2);
+  config.options["max_sun_zenith_deg"] = 117.11460929772474;
+  const auto model = BrunetonModel::create(bruneton_descriptor(), config, {});
+  const bruneton::Tables& t = model->tables();
+  for (float v : t.sky_irradiance.values) ASSERT_TRUE(std::isfinite(v));
+  const auto sun = model->prepare_sun({30.0 * kDegree, 0.0});
+  SpectralBatch out;
+  const std::vector<ViewDirection> views{{45.0 * kDegree, 1.0}};
+  model->sky_radiance(*sun, {0.0}, views, out);
+  EXPECT_EQ(out.status[0], SampleStatus::ok);
+}
+
+}  // namespace
+}  // namespace clearsky
