@@ -30,6 +30,8 @@ packages=(
   # The Python client (clients/python, docs/clients.md): numpy for its arrays, OpenImageIO's
   # Python bindings for decoding skydome images in its tests.
   python3-numpy python3-openimageio
+  # The run-time-vs-error plots of docs/performance.md (tools/atlas/plot_atlas.py).
+  python3-matplotlib
   # The browser viewer's test (docs/viewer.md) drives Debian's chromium headless.
   chromium
   # The fuzz programs (fuzz/run.sh, docs/fuzzing.md): clang 14 with its sanitizer and libFuzzer
