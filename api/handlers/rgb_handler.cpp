@@ -14,11 +14,15 @@
 #include "api/colour/xyz_weights.h"
 #include "api/handlers/handlers.h"
 #include "api/handlers/sky_radiance_query.h"
+#include "api/http/answer_memory_reservation.h"
 #include "models/colour/three_wavelength_rgb.h"
 
 namespace clearsky::api {
 
 namespace {
+
+// The numbers an answer gives per view: rgb (3), gamut_clipped, luminance_cd_m2.
+constexpr std::size_t kRgbSampleNumbers = 5;
 
 const ThreeWavelengthRgb& three_wavelength_method() {
   static const ThreeWavelengthRgb method;
@@ -33,6 +37,8 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
   const SunSpec sun = parse_sun(p);
   const Viewpoint viewpoint = parse_viewpoint(p);
   ModelConfig config = parse_config(p, *factory.descriptor);
+  const RequestQuality quality =
+      parse_quality(p, *factory.descriptor, config, context.default_quality);
   const std::string method = p.choice("method", {"spectral", "three"}, "spectral");
   const ViewList views =
       request.method == "POST"
@@ -47,7 +53,11 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
     config.wavelengths = three.grid();
   }
   const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config),
-                                             wavelengths, request.requester());
+                                             wavelengths, request.requester(), &quality);
+  // The answer is built whole: its bytes are reserved before the sky is computed and held
+  // until it was sent (api/http/batch_answer_bytes.h).
+  auto reservation = reserve_batch_answer_memory(context, views.views.size(),
+                                                 m.model->wavelengths().size(), kRgbSampleNumbers);
   const SpectralBatch batch = checked_sky_radiance(context.models, m.model, sun, viewpoint, views);
 
   nlohmann::json samples = nlohmann::json::array();
@@ -104,8 +114,11 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
                         "] nm (missing light counts as zero)";
     }
   }
+  add_quality_members(body, quality, m.served_quality);
   ApiResponse response = json_response(body);
   response.model_id = factory.descriptor->id;
+  add_quality_headers(response.headers, quality, m.served_quality);
+  response.held_until_sent = std::move(reservation);
   return response;
 }
 

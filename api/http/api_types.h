@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
@@ -68,6 +69,9 @@ struct ApiResponse {
   // A streamed body (sent chunked, as it is computed): when set, body is unused. Returns false
   // when the sink refused data (the client left), which stops the computation.
   std::function<bool(const ByteSink& sink)> stream = {};
+  // What the answer holds until its last byte was sent or its connection was cut (a body's
+  // answer memory reservation, api/http/answer_memory_reservation.h); null: nothing.
+  std::shared_ptr<const void> held_until_sent = {};
 
   // The first header of that name, compared without case.
   std::optional<std::string_view> header(std::string_view name) const;
@@ -110,6 +114,9 @@ struct ApiContext {
   // Bytes of answer buffers in flight, every worker together (a streamed skydome's band); null:
   // unbounded. Thread-safe.
   AnswerMemoryBudget* answer_memory = nullptr;
+  // The quality level of a sky request that does not give `quality` (serve --quality;
+  // docs/quality-levels.md).
+  QualityLevel default_quality = QualityLevel::standard;
 };
 
 // The request's parameters: the query for GET; for POST, the JSON body's scalar members (the

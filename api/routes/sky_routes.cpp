@@ -2,7 +2,7 @@
 #include <memory>
 
 #include "api/handlers/handlers.h"
-#include "api/http/answer_memory_budget.h"
+#include "api/http/answer_memory_reservation.h"
 #include "api/routes/route_handlers.h"
 #include "api/skydome/skydome_render.h"
 
@@ -18,46 +18,18 @@ ApiResponse get_sun_route(const ApiContext& context, const ApiRequest& request) 
   return response;
 }
 
-namespace {
-
-// The band's bytes out of the server's answer memory budget (api/http/answer_memory_budget.h),
-// held until the answer ends or its connection is cut: 503 while other answers hold the budget,
-// 413 for a band larger than the whole budget (it could never be answered).
-std::shared_ptr<const AnswerMemoryBudget::Reservation> reserve_band(const ApiContext& context,
-                                                                    const SkydomeRender& job) {
-  if (context.answer_memory == nullptr) return nullptr;
-  AnswerMemoryBudget& budget = *context.answer_memory;
-  const std::size_t bytes = job.band_bytes();
-  if (bytes > budget.limit_bytes()) {
-    throw too_large("answer_memory", "the image needs " + std::to_string(bytes) +
-                                         " bytes in flight, above the answer memory budget of " +
-                                         std::to_string(budget.limit_bytes()) +
-                                         " bytes; ask for a smaller size or fewer wavelengths");
-  }
-  auto reservation = budget.try_reserve(bytes);
-  if (!reservation) {
-    throw ApiError(503, "busy", "answer_memory",
-                   "answer_memory: the image needs " + std::to_string(bytes) +
-                       " bytes in flight and the answer memory budget of " +
-                       std::to_string(budget.limit_bytes()) + " bytes is held by answers being " +
-                       "sent (" + std::to_string(budget.reserved_bytes()) +
-                       " bytes); try again later",
-                   context.retry_after_s);
-  }
-  return reservation;
-}
-
-}  // namespace
-
 // The image is checked completely before the answer starts (errors are ordinary error
 // answers); then its band's bytes are reserved, and it is computed band by band as the client
 // reads it (api/skydome/).
 ApiResponse get_skydome(const ApiContext& context, const ApiRequest& request) {
   auto job = std::make_shared<const SkydomeRender>(prepare_skydome(context, request));
-  auto reservation = reserve_band(context, *job);
+  // The band's bytes, held until the answer ends or its connection is cut.
+  auto reservation = reserve_answer_memory(context, job->band_bytes(), "the image",
+                                           "ask for a smaller size or fewer wavelengths");
   ApiResponse response;
   response.content_type = job->content_type();
   response.model_id = job->model_id();
+  job->add_quality_headers(response.headers);
   response.headers.emplace_back("Content-Disposition",
                                 std::string("inline; filename=\"") + job->file_name() + "\"");
   // The stream owns the reservation: it is released when the answer is destroyed, after the

@@ -229,7 +229,8 @@ HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& 
                config.retry_after_s,
                [](const std::string& message) { spdlog::warn("{}", message); },
                [this] { return http_->draining(); },
-               &answer_memory_},
+               &answer_memory_,
+               parse_quality_level(config.quality).value_or(QualityLevel::standard)},
       http_(std::make_unique<ConnectionServer>(connection_limits(config), worker_pool(config))) {
   // The library's one limit is the largest body any route takes (an upload); the other routes
   // apply payload_max_bytes themselves (request_body.h and the pre-routing handler).
@@ -309,6 +310,16 @@ void HttpServer::send(const httplib::Request& req, httplib::Response& res,
           if (complete) sink.done();
           return complete;
         });
+  } else if (response.held_until_sent && response.status != 204 && response.status != 304) {
+    // A body that holds memory of the answer budget: a content provider of its known length
+    // keeps the reservation until cpp-httplib has written the last byte (or the connection was
+    // cut) and the response is destroyed.
+    auto body = std::make_shared<const std::string>(std::move(response.body));
+    res.set_content_provider(body->size(), response.content_type,
+                             [body, held = std::move(response.held_until_sent)](
+                                 std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                               return sink.write(body->data() + offset, length);
+                             });
   } else if (response.status != 204 && response.status != 304) {
     res.set_content(std::move(response.body), response.content_type);
   }

@@ -4,6 +4,8 @@ loopback port, the server started on it with a database and cache in a work fold
 
 import http.client
 import os
+import resource
+import signal
 import socket
 import subprocess
 import time
@@ -15,16 +17,26 @@ def free_port():
         return s.getsockname()[1]
 
 
-def start_server(binary, workdir, models, extra=()):
-    """Starts `binary serve` on a free port; returns (process, port) once it is ready (120 s at
-    most). Its output goes to workdir/server.log."""
+def start_server(binary, workdir, models, extra=(), open_files=None, file_bytes=None,
+                 ready_s=120):
+    """Starts `binary serve` on a free port; returns (process, port) once it is ready (ready_s
+    at most). Its output goes to workdir/server.log. open_files: its RLIMIT_NOFILE;
+    file_bytes: its RLIMIT_FSIZE (SIGXFSZ ignored, so that a write beyond fails with EFBIG)."""
     port = free_port()
     log = open(os.path.join(workdir, "server.log"), "ab")
+
+    def limits():
+        if open_files is not None:
+            resource.setrlimit(resource.RLIMIT_NOFILE, (open_files, open_files))
+        if file_bytes is not None:
+            signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+            resource.setrlimit(resource.RLIMIT_FSIZE, (file_bytes, file_bytes))
+
     process = subprocess.Popen(
         [binary, "serve", "--port", str(port), "--db", os.path.join(workdir, "db.sqlite"),
          "--cache-dir", os.path.join(workdir, "cache"), "--models", models, *extra],
-        stdout=log, stderr=subprocess.STDOUT)
-    deadline = time.time() + 120
+        stdout=log, stderr=subprocess.STDOUT, preexec_fn=limits)
+    deadline = time.time() + ready_s
     while time.time() < deadline:
         if process.poll() is not None:
             raise RuntimeError("the server exited at start (see %s/server.log)" % workdir)
@@ -37,7 +49,7 @@ def start_server(binary, workdir, models, extra=()):
             pass
         time.sleep(0.2)
     process.kill()
-    raise RuntimeError("the server was not ready within 120 s")
+    raise RuntimeError("the server was not ready within %d s" % ready_s)
 
 
 def status_kib(pid, field):
