@@ -32,6 +32,7 @@ packages=(
   python3-numpy python3-openimageio
   # The broadband irradiance against the pyranometer (docs/building-energy.md) is plotted by
   # tools/broadband/pyranometer_validation.py.
+  # The run-time-vs-error plots of docs/performance.md (tools/atlas/plot_atlas.py).
   python3-matplotlib
   # The browser viewer's test (docs/viewer.md) drives Debian's chromium headless.
   chromium

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   clearsky::cli::add_evaluate_command(app, CLEARSKY_VERSION);
   clearsky::cli::add_fit_command(app, CLEARSKY_VERSION);
   clearsky::cli::add_stress_command(app);
+  clearsky::cli::add_atlas_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -15,5 +15,6 @@ void add_datasets_command(CLI::App& app);
 void add_evaluate_command(CLI::App& app, const std::string& software_version);
 void add_fit_command(CLI::App& app, const std::string& software_version);
 void add_stress_command(CLI::App& app);
+void add_atlas_command(CLI::App& app);
 
 }  // namespace clearsky::cli
