@@ -1,17 +1,21 @@
-// GET /v1/irradiance: direct sun, diffuse sky and global irradiance on a horizontal or tilted
-// plane (tilt from horizontal, surface_azimuth of the plane's normal clockwise from North,
-// degrees), integrated (W/m2 over the model's answered grid) with illuminance (lx), and
-// spectral (W/(m2.nm)) when spectral=true. component=all|direct|diffuse|global.
-//  - direct = E_normal(lambda) max(0, cos(incidence)), zero when the sun is below the horizon
-//    (the ground hides it);
+// GET /v1/irradiance: direct sun, diffuse sky, ground-reflected and global irradiance on a
+// horizontal or tilted plane (tilt from horizontal, surface_azimuth of the plane's normal
+// clockwise from North, degrees), integrated (W/m2 over the model's answered grid) with
+// illuminance (lx), and spectral (W/(m2.nm)) when spectral=true.
+// component=all|direct|diffuse|ground_diffuse|global; the computation is
+// api/irradiance/plane_irradiance.h (shared with GET /v1/irradiance/series):
+//  - direct = E_normal(lambda) max(0, cos(incidence)), zero when the sun is below the horizon;
 //  - diffuse = the model's sky irradiance on the plane (sky radiance over the plane's
-//    hemisphere; ground-reflected light excluded);
-//  - global = direct + diffuse.
+//    hemisphere);
+//  - ground_diffuse = albedo x global horizontal x (1 - cos tilt) / 2, the isotropic ground
+//    (ground_albedo, or the model's ground albedo); ground_reflection=exclude leaves it out;
+//  - global = direct + diffuse + ground_diffuse.
 #include <cmath>
 
-#include "api/colour/xyz_weights.h"
 #include "api/handlers/handlers.h"
 #include "api/handlers/sky_radiance_query.h"
+#include "api/irradiance/ground_reflection_request.h"
+#include "api/irradiance/plane_irradiance.h"
 #include "models/core/numeric.h"
 
 namespace clearsky::api {
@@ -21,11 +25,9 @@ namespace {
 nlohmann::json component_json(const Spectrum& e, const SkyModel& model,
                               const std::vector<std::size_t>& indices, const XyzWeights& xyz,
                               bool spectral) {
-  const WavelengthGrid& grid = model.wavelengths();
-  double integrated = 0.0;
-  for (std::size_t i : indices) integrated += grid.integration_weight_nm(i) * e[i];
-  nlohmann::json out = {{"irradiance_w_m2", finite(integrated)},
-                        {"illuminance_lx", finite(xyz.luminance({e.data(), e.size()}))}};
+  const IntegratedIrradiance sum = integrated(e, model, indices, xyz);
+  nlohmann::json out = {{"irradiance_w_m2", finite(sum.irradiance_w_m2)},
+                        {"illuminance_lx", finite(sum.illuminance_lx)}};
   if (spectral) {
     nlohmann::json values = nlohmann::json::array();
     for (std::size_t i : indices) values.push_back(finite(e[i]));
@@ -48,12 +50,19 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
   const double tilt_deg = p.number_or("tilt", 0.0, 0.0, 180.0);
   const double surface_azimuth_deg = p.number_or("surface_azimuth", 180.0, -360.0, 360.0);
   const std::string component =
-      p.choice("component", {"all", "direct", "diffuse", "global"}, "all");
+      p.choice("component", {"all", "direct", "diffuse", "ground_diffuse", "global"}, "all");
   const bool spectral = p.boolean_or("spectral", false);
+  const GroundReflection ground = parse_ground_reflection(p);
   p.reject_unused();
+  if (component == "ground_diffuse" && !ground.included)
+    throw conflicting_parameters("component", "ground_reflection=exclude");
 
-  const bool want_direct = component != "diffuse";
-  const bool want_diffuse = component != "direct";
+  const bool all = component == "all";
+  const bool want_ground =
+      ground.included && (all || component == "global" || component == "ground_diffuse");
+  // The ground is lit by the global horizontal irradiance: it needs both of the model's parts.
+  const bool want_direct = component != "diffuse" || want_ground;
+  const bool want_diffuse = component != "direct" || want_ground;
   if (want_direct && !d.capabilities.sun_irradiance) {
     throw cannot_answer("component", d.id, "it does not compute the direct sun irradiance");
   }
@@ -66,27 +75,12 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
   const auto state = prepare_sun(context.models, m.model, sun);
   const PlaneOrientation plane{degrees_to_radians(tilt_deg),
                                degrees_to_radians(surface_azimuth_deg)};
-  const std::size_t n = model.wavelengths().size();
-
-  Spectrum direct_normal(n, 0.0), direct(n, 0.0), diffuse(n, 0.0);
-  if (want_direct) {
-    const SpectralSample s = model.sun_irradiance(*state, viewpoint);
-    require_answer(s.status,
-                   s.status == SampleStatus::viewpoint_unsupported ? "altitude" : sun.parameter,
-                   d.id);
-    direct_normal = s.value;
-    const double cos_incidence = dot(SkyDirection{plane.tilt_rad, plane.azimuth_rad}.unit_vector(),
-                                     SkyDirection{sun.sun}.unit_vector());
-    const double above_horizon = sun.sun.zenith_rad <= 0.5 * kPi ? 1.0 : 0.0;
-    direct = direct_normal * (std::max(0.0, cos_incidence) * above_horizon);
-  }
-  if (want_diffuse) {
-    const SpectralSample s = model.sky_irradiance(*state, viewpoint, plane);
-    require_answer(s.status,
-                   s.status == SampleStatus::viewpoint_unsupported ? "altitude" : sun.parameter,
-                   d.id);
-    diffuse = s.value;
-  }
+  const HorizontalIrradiance horizontal =
+      horizontal_irradiance(model, *state, viewpoint, want_direct, want_diffuse, sun.parameter);
+  const GroundReflection used{want_ground, ground.albedo};
+  const PlaneIrradiance on_plane =
+      plane_irradiance(model, *state, viewpoint, plane, horizontal,
+                       ground_albedo_spectrum(model, ground), used, want_diffuse, sun.parameter);
 
   const XyzWeights xyz(model.wavelengths());
   nlohmann::json body = {
@@ -98,17 +92,20 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
       {"integrated_range_nm",
        {model.wavelengths().lower_edge_nm(m.indices.front()),
         model.wavelengths().upper_edge_nm(m.indices.back())}},
-      {"ground_reflection", "excluded"}};
+      {"ground_reflection", ground_reflection_json(ground)}};
   if (spectral) body["wavelengths_nm"] = m.wavelengths_nm;
-  const bool all = component == "all";
   if (all || component == "direct") {
-    body["direct_normal"] = component_json(direct_normal, model, m.indices, xyz, spectral);
-    body["direct"] = component_json(direct, model, m.indices, xyz, spectral);
+    body["direct_normal"] =
+        component_json(horizontal.direct_normal, model, m.indices, xyz, spectral);
+    body["direct"] = component_json(on_plane.direct, model, m.indices, xyz, spectral);
   }
   if (all || component == "diffuse")
-    body["diffuse"] = component_json(diffuse, model, m.indices, xyz, spectral);
+    body["diffuse"] = component_json(on_plane.sky_diffuse, model, m.indices, xyz, spectral);
+  if (want_ground)
+    body["ground_diffuse"] =
+        component_json(on_plane.ground_diffuse, model, m.indices, xyz, spectral);
   if (all || component == "global")
-    body["global"] = component_json(direct + diffuse, model, m.indices, xyz, spectral);
+    body["global"] = component_json(on_plane.global, model, m.indices, xyz, spectral);
   ApiResponse response = json_response(body);
   response.model_id = d.id;
   return response;
