@@ -649,7 +649,8 @@ Json operations() {
     // parameters, then its own.
     Json& series = ops["getIrradianceSeries"];
     Json parameters = Json::array();
-    for (const auto& [key, parameter] : sky_parameter_components().items()) {
+    const Json components = sky_parameter_components();
+    for (const auto& [key, parameter] : components.items()) {
       if (key != "time" && key != "sun_zenith" && key != "sun_azimuth")
         parameters.push_back(ref("parameters", key));
     }
