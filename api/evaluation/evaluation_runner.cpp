@@ -55,6 +55,17 @@ nlohmann::json parameters_for_model(const ModelDescriptor& descriptor,
   return out;
 }
 
+QualityLevel quality_of(const nlohmann::json& parameters) {
+  if (!parameters.is_object() || !parameters.contains(kQualityParameter))
+    return QualityLevel::standard;
+  const nlohmann::json& value = parameters[kQualityParameter];
+  const auto level =
+      value.is_string() ? parse_quality_level(value.get<std::string>()) : std::nullopt;
+  if (!level)
+    throw InvalidInput(kQualityParameter, "must be \"draft\", \"standard\" or \"reference\"");
+  return *level;
+}
+
 ModelConfig config_for_model(const ModelDescriptor& descriptor, const nlohmann::json& parameters) {
   ModelConfig config;
   const nlohmann::json applied = parameters_for_model(descriptor, parameters);
@@ -73,6 +84,9 @@ ModelConfig config_for_model(const ModelDescriptor& descriptor, const nlohmann::
       throw std::logic_error("descriptor of " + descriptor.id +
                              " lists unknown atmosphere parameter " + name);
   }
+  // The quality level's options, where the parameters do not give them.
+  apply_quality_level(descriptor, quality_setting(descriptor.id, quality_of(parameters)),
+                      config.options);
   return config;
 }
 
@@ -136,6 +150,8 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
     nlohmann::json applied = parameters_for_model(*factory.descriptor, request.parameters);
     if (request.parameters.is_object() && request.parameters.contains(kOutOfDomainParameter))
       applied[kOutOfDomainParameter] = request.parameters[kOutOfDomainParameter];
+    if (request.parameters.is_object() && request.parameters.contains(kQualityParameter))
+      applied[kQualityParameter] = request.parameters[kQualityParameter];
     run.parameters = applied.dump();
     run.out_of_domain = std::string(to_string(options.out_of_domain));
     run.configuration = config.canonical_string();

@@ -23,6 +23,7 @@
 
 #include "models/core/sky_model.h"
 #include "models/evaluation/evaluate_model.h"
+#include "models/quality/quality_levels.h"
 #include "storage/repositories/compared_samples.h"
 #include "storage/repositories/sample_errors_blob.h"
 #include "storage/sqlite/database.h"
@@ -71,6 +72,13 @@ inline constexpr const char* kOutOfDomainParameter = "out_of_domain";
 // The handling the parameters choose (exclude when not given); throws std::invalid_argument
 // naming out_of_domain for a value that is not "exclude" or "clamp".
 OutOfDomain out_of_domain_of(const nlohmann::json& parameters);
+
+// The name of the evaluation parameter that chooses each model's quality level (draft, standard,
+// reference; docs/quality-levels.md): it applies to every model, whose explicit options win.
+inline constexpr const char* kQualityParameter = "quality";
+// The level the parameters choose (standard when not given); throws std::invalid_argument naming
+// quality for another value.
+QualityLevel quality_of(const nlohmann::json& parameters);
 
 // The parameters among `parameters` that the model's descriptor lists (the others dropped).
 nlohmann::json parameters_for_model(const ModelDescriptor& descriptor,

@@ -70,12 +70,20 @@ nlohmann::json parse_evaluation_parameters(const nlohmann::json& parameters,
       }
       continue;
     }
+    if (name == kQualityParameter) {
+      try {
+        quality_of(parameters);
+      } catch (const std::invalid_argument& e) {
+        throw from_invalid_argument(e);
+      }
+      continue;
+    }
     const bool grass = name == "albedo" && value.is_string() && value.get<std::string>() == "grass";
     if (!grass && !value.is_number()) throw invalid_parameter(name, "must be a number");
   }
   if (models.empty()) return parameters;
   for (const auto& [name, value] : parameters.items()) {
-    if (name == kOutOfDomainParameter) continue;
+    if (name == kOutOfDomainParameter || name == kQualityParameter) continue;
     std::vector<const ModelFactory*> takers;
     for (const ModelFactory* model : models)
       if (model->descriptor->find_parameter(name) != nullptr) takers.push_back(model);

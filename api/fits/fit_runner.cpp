@@ -86,6 +86,8 @@ CheckedFit check_fit_request(const FitRequest& request) {
   out.settings.evaluation.out_of_domain = out_of_domain_of(parameters);
   if (parameters.contains(kOutOfDomainParameter))
     out.fixed_parameters[kOutOfDomainParameter] = parameters[kOutOfDomainParameter];
+  if (parameters.contains(kQualityParameter))
+    out.fixed_parameters[kQualityParameter] = parameters[kQualityParameter];
   out.settings.evaluation.capture_threads = request.capture_threads;
   // A table option fixed in parameters is the standard setting; the search keeps the cheap one.
   out.settings.search_options = request.search_options

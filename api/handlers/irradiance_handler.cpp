@@ -47,6 +47,7 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
   const SunSpec sun = parse_sun(p);
   const Viewpoint viewpoint = parse_viewpoint(p);
   ModelConfig config = parse_config(p, d);
+  const RequestQuality quality = parse_quality(p, d, config, context.default_quality);
   const double tilt_deg = p.number_or("tilt", 0.0, 0.0, 180.0);
   const double surface_azimuth_deg = p.number_or("surface_azimuth", 180.0, -360.0, 360.0);
   const std::string component =
@@ -70,7 +71,7 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
     throw cannot_answer("component", d.id, "it does not compute the sky irradiance");
   }
   const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config),
-                                             std::nullopt, request.requester());
+                                             std::nullopt, request.requester(), &quality);
   const SkyModel& model = *m.model;
   const auto state = prepare_sun(context.models, m.model, sun);
   const PlaneOrientation plane{degrees_to_radians(tilt_deg),
@@ -106,8 +107,10 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
         component_json(on_plane.ground_diffuse, model, m.indices, xyz, spectral);
   if (all || component == "global")
     body["global"] = component_json(on_plane.global, model, m.indices, xyz, spectral);
+  add_quality_members(body, quality, m.served_quality);
   ApiResponse response = json_response(body);
   response.model_id = d.id;
+  add_quality_headers(response.headers, quality, m.served_quality);
   return response;
 }
 

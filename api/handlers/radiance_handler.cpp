@@ -26,6 +26,8 @@ ApiResponse radiance(const ApiContext& context, const ApiRequest& request) {
   const SunSpec sun = parse_sun(p);
   const Viewpoint viewpoint = parse_viewpoint(p);
   ModelConfig config = parse_config(p, *factory.descriptor);
+  const RequestQuality quality =
+      parse_quality(p, *factory.descriptor, config, context.default_quality);
   const auto wavelengths = parse_wavelengths(p, context.limits);
   const std::string format = p.choice("format", {"json", "csv"}, "json");
   const ViewList views =
@@ -35,11 +37,12 @@ ApiResponse radiance(const ApiContext& context, const ApiRequest& request) {
   p.reject_unused();
 
   const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config),
-                                             wavelengths, request.requester());
+                                             wavelengths, request.requester(), &quality);
   const SpectralBatch batch = checked_sky_radiance(context.models, m.model, sun, viewpoint, views);
 
   ApiResponse response;
   response.model_id = factory.descriptor->id;
+  add_quality_headers(response.headers, quality, m.served_quality);
   if (format == "csv") {
     std::string body = "view_zenith_deg,view_azimuth_deg,wavelength_nm,radiance_w_m2_sr_nm\n";
     for (std::size_t v = 0; v < batch.size(); ++v) {
@@ -72,6 +75,7 @@ ApiResponse radiance(const ApiContext& context, const ApiRequest& request) {
                          {"wavelengths_nm", m.wavelengths_nm},
                          {"samples", std::move(samples)}};
   if (grid.kind() == WavelengthGrid::Kind::bins) body["bin_width_nm"] = grid.bin_width_nm();
+  add_quality_members(body, quality, m.served_quality);
   response.body = body.dump();
   return response;
 }

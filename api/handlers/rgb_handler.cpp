@@ -33,6 +33,8 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
   const SunSpec sun = parse_sun(p);
   const Viewpoint viewpoint = parse_viewpoint(p);
   ModelConfig config = parse_config(p, *factory.descriptor);
+  const RequestQuality quality =
+      parse_quality(p, *factory.descriptor, config, context.default_quality);
   const std::string method = p.choice("method", {"spectral", "three"}, "spectral");
   const ViewList views =
       request.method == "POST"
@@ -47,7 +49,7 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
     config.wavelengths = three.grid();
   }
   const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config),
-                                             wavelengths, request.requester());
+                                             wavelengths, request.requester(), &quality);
   const SpectralBatch batch = checked_sky_radiance(context.models, m.model, sun, viewpoint, views);
 
   nlohmann::json samples = nlohmann::json::array();
@@ -104,8 +106,10 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
                         "] nm (missing light counts as zero)";
     }
   }
+  add_quality_members(body, quality, m.served_quality);
   ApiResponse response = json_response(body);
   response.model_id = factory.descriptor->id;
+  add_quality_headers(response.headers, quality, m.served_quality);
   return response;
 }
 

@@ -88,6 +88,7 @@ ApiResponse skypatches(const ApiContext& context, const ApiRequest& request) {
   const SunSpec sun = parse_sun(p);
   const Viewpoint viewpoint = parse_viewpoint(p);
   ModelConfig config = parse_config(p, d);
+  const RequestQuality quality = parse_quality(p, d, config, context.default_quality);
   if (d.find_parameter(kClampNegativeFitOption) &&
       !config.options.contains(kClampNegativeFitOption))
     config.options[kClampNegativeFitOption] = 1.0;
@@ -115,7 +116,7 @@ ApiResponse skypatches(const ApiContext& context, const ApiRequest& request) {
   }
 
   const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config),
-                                             wavelengths, request.requester());
+                                             wavelengths, request.requester(), &quality);
   const SkyModel& model = *m.model;
   const auto state = prepare_sun(context.models, m.model, sun);
   const PatchQuadratureOrder order = default_patch_quadrature_order(scheme);
@@ -163,6 +164,7 @@ ApiResponse skypatches(const ApiContext& context, const ApiRequest& request) {
     response.body = std::move(body);
     response.content_type = "text/csv";
     response.model_id = d.id;
+    add_quality_headers(response.headers, quality, m.served_quality);
     return response;
   }
 
@@ -217,8 +219,10 @@ ApiResponse skypatches(const ApiContext& context, const ApiRequest& request) {
     body["gamut_clipped_values"] = encode.clipped;
     body["gamut_mapping"] = "negative components clipped to 0";
   }
+  add_quality_members(body, quality, m.served_quality);
   response = json_response(body);
   response.model_id = d.id;
+  add_quality_headers(response.headers, quality, m.served_quality);
   return response;
 }
 

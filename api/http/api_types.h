@@ -110,6 +110,9 @@ struct ApiContext {
   // Bytes of answer buffers in flight, every worker together (a streamed skydome's band); null:
   // unbounded. Thread-safe.
   AnswerMemoryBudget* answer_memory = nullptr;
+  // The quality level of a sky request that does not give `quality` (serve --quality;
+  // docs/quality-levels.md).
+  QualityLevel default_quality = QualityLevel::standard;
 };
 
 // The request's parameters: the query for GET; for POST, the JSON body's scalar members (the

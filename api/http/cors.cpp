@@ -23,7 +23,8 @@ void CorsPolicy::add_headers(std::optional<std::string_view> origin, ApiResponse
   response.headers.emplace_back("Access-Control-Allow-Origin", any_ ? "*" : std::string(*origin));
   response.headers.emplace_back(
       "Access-Control-Expose-Headers",
-      "ETag, Location, Retry-After, WWW-Authenticate, Allow, Content-Disposition");
+      "ETag, Location, Retry-After, WWW-Authenticate, Allow, Content-Disposition, "
+      "Clearsky-Quality, Clearsky-Served-Quality, Clearsky-Quality-Detail");
 }
 
 ApiResponse CorsPolicy::options(const ApiRequest& request, const std::string& allow) const {

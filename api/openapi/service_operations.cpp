@@ -22,13 +22,25 @@ Area service_area() {
     },
     "ModelReadiness": {
       "type": "object",
-      "description": "Each served model's default tables, by model id.",
+      "description": "Each served model's default tables, by model id, and the tables of each quality level (docs/quality-levels.md).",
       "additionalProperties": {
         "type": "object",
-        "required": ["status", "progress"],
+        "required": ["status", "progress", "levels"],
         "properties": {
           "status": {"$ref": "#/components/schemas/TableStatus"},
-          "progress": {"type": "number", "minimum": 0, "maximum": 1}
+          "progress": {"type": "number", "minimum": 0, "maximum": 1},
+          "levels": {
+            "type": "object",
+            "description": "draft, standard and reference: the state of the level's tables (on the default atmosphere and grid); not_built when neither built at start nor asked for.",
+            "additionalProperties": {
+              "type": "object",
+              "required": ["status", "progress"],
+              "properties": {
+                "status": {"type": "string", "enum": ["queued", "precomputing", "ready", "failed", "not_built"]},
+                "progress": {"type": "number", "minimum": 0, "maximum": 1}
+              }
+            }
+          }
         }
       }
     },
@@ -165,7 +177,7 @@ Area service_area() {
     "operationId": "readyz",
     "tags": ["operations"],
     "summary": "Readiness",
-    "description": "200 when the default tables of every served model are ready; 503 while some are built (Bruneton's take minutes on a first start), with each model's state, and 503 (code draining) once the server drains before it stops (SIGTERM; docs/deploy.md).",
+    "description": "200 when the tables built at start are ready (each served model's draft, then its standard, or serve --prebuild's list: docs/quality-levels.md); 503 while some are built (Bruneton's take minutes on a first start), with each model's state, and 503 (code draining) once the server drains before it stops (SIGTERM; docs/deploy.md).",
     "responses": {
       "200": {
         "description": "Every model is ready.",

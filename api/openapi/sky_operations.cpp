@@ -29,6 +29,17 @@ Json schemas() {
       "delta_t_source": {"type": "string", "enum": ["espenak_meeus", "given"]}
     }
   },
+  "QualityError": {
+    "type": "object",
+    "description": "The relative error of the served level's setting against the model's reference level, over the sample of docs/quality-levels.md (suns at zenith 20 to 85 degrees, views every 5 x 15 degrees, 440, 550 and 680 nm); null members where not measured.",
+    "required": ["against", "p95_relative", "max_relative"],
+    "additionalProperties": false,
+    "properties": {
+      "against": {"type": "string", "enum": ["reference"]},
+      "p95_relative": {"type": "number", "minimum": 0, "nullable": true, "description": "95th percentile of |L - L_ref| / L_ref."},
+      "max_relative": {"type": "number", "minimum": 0, "nullable": true, "description": "Its maximum."}
+    }
+  },
   "SunUsed": {
     "type": "object",
     "description": "The sun the model was asked for: given, or computed by SPA from lat, lon and time.",
@@ -74,11 +85,16 @@ Json schemas() {
   },
   "Radiance": {
     "type": "object",
-    "required": ["model", "model_version", "sun", "altitude_m", "unit", "grid", "wavelengths_nm", "samples"],
+    "required": ["model", "model_version", "quality", "served_quality", "quality_setting", "quality_error", "sun", "altitude_m", "unit", "grid", "wavelengths_nm", "samples"],
     "additionalProperties": false,
     "properties": {
       "model": {"type": "string"},
       "model_version": {"type": "string"},
+      "quality": {"type": "string", "enum": ["draft", "standard", "reference"], "description": "The quality level asked (quality=, else the server's --quality; docs/quality-levels.md)."},
+      "served_quality": {"type": "string", "enum": ["draft", "standard", "reference"], "description": "The level whose tables answered: quality, or draft while the standard tables are being built (then Cache-Control: no-store)."},
+      "quality_setting": {"type": "object", "additionalProperties": {"type": "number"}, "description": "Every option of the served level, with the value used (a request's explicit option included)."},
+      "quality_error": {"allOf": [{"$ref": "#/components/schemas/QualityError"}], "nullable": true, "description": "The served level's measured error against the reference level; null when the request overrode one of the level's options."},
+      "quality_overridden": {"type": "array", "items": {"type": "string"}, "description": "The level's options the request gave itself (present only then)."},
       "sun": {"$ref": "#/components/schemas/SunUsed"},
       "altitude_m": {"type": "number"},
       "unit": {"type": "string", "enum": ["W/(m2.sr.nm)"]},
@@ -110,11 +126,16 @@ Json schemas() {
   },
   "Rgb": {
     "type": "object",
-    "required": ["model", "model_version", "method", "sun", "altitude_m", "colour_space", "gamut_mapping", "gamut_clipped_samples", "samples"],
+    "required": ["model", "model_version", "quality", "served_quality", "quality_setting", "quality_error", "method", "sun", "altitude_m", "colour_space", "gamut_mapping", "gamut_clipped_samples", "samples"],
     "additionalProperties": false,
     "properties": {
       "model": {"type": "string"},
       "model_version": {"type": "string"},
+      "quality": {"type": "string", "enum": ["draft", "standard", "reference"], "description": "The quality level asked (quality=, else the server's --quality; docs/quality-levels.md)."},
+      "served_quality": {"type": "string", "enum": ["draft", "standard", "reference"], "description": "The level whose tables answered: quality, or draft while the standard tables are being built (then Cache-Control: no-store)."},
+      "quality_setting": {"type": "object", "additionalProperties": {"type": "number"}, "description": "Every option of the served level, with the value used (a request's explicit option included)."},
+      "quality_error": {"allOf": [{"$ref": "#/components/schemas/QualityError"}], "nullable": true, "description": "The served level's measured error against the reference level; null when the request overrode one of the level's options."},
+      "quality_overridden": {"type": "array", "items": {"type": "string"}, "description": "The level's options the request gave itself (present only then)."},
       "method": {"type": "string", "enum": ["spectral", "three"]},
       "sun": {"$ref": "#/components/schemas/SunUsed"},
       "altitude_m": {"type": "number"},
@@ -139,11 +160,16 @@ Json schemas() {
   "Irradiance": {
     "type": "object",
     "description": "direct = direct normal x max(0, cos incidence), 0 with the sun below the horizon; diffuse = the model's sky irradiance on the plane; ground_diffuse = albedo x global horizontal x (1 - cos tilt) / 2 (an isotropic Lambertian ground; the albedo is ground_albedo, otherwise the model's ground albedo spectrum); global = direct + diffuse + ground_diffuse. The components present follow component= and ground_reflection=.",
-    "required": ["model", "model_version", "sun", "altitude_m", "plane", "integrated_range_nm", "ground_reflection"],
+    "required": ["model", "model_version", "quality", "served_quality", "quality_setting", "quality_error", "sun", "altitude_m", "plane", "integrated_range_nm", "ground_reflection"],
     "additionalProperties": false,
     "properties": {
       "model": {"type": "string"},
       "model_version": {"type": "string"},
+      "quality": {"type": "string", "enum": ["draft", "standard", "reference"], "description": "The quality level asked (quality=, else the server's --quality; docs/quality-levels.md)."},
+      "served_quality": {"type": "string", "enum": ["draft", "standard", "reference"], "description": "The level whose tables answered: quality, or draft while the standard tables are being built (then Cache-Control: no-store)."},
+      "quality_setting": {"type": "object", "additionalProperties": {"type": "number"}, "description": "Every option of the served level, with the value used (a request's explicit option included)."},
+      "quality_error": {"allOf": [{"$ref": "#/components/schemas/QualityError"}], "nullable": true, "description": "The served level's measured error against the reference level; null when the request overrode one of the level's options."},
+      "quality_overridden": {"type": "array", "items": {"type": "string"}, "description": "The level's options the request gave itself (present only then)."},
       "sun": {"$ref": "#/components/schemas/SunUsed"},
       "altitude_m": {"type": "number"},
       "plane": {
@@ -176,11 +202,16 @@ Json schemas() {
   "IrradianceSeries": {
     "type": "object",
     "description": "One row per step from start to end (both included), the values in the order of columns: time_utc, time_local (with tz), night, solar_zenith and solar_azimuth (apparent, degrees), ghi, dni, dhi (W/m2 over integrated_range_nm), illuminance (global horizontal, lx), then per plane poa_global, poa_direct, poa_diffuse (sky + ground, as pvlib), poa_sky_diffuse, poa_ground_diffuse (W/m2) and poa_illuminance (lx), each suffixed _<tilt>_<azimuth> as the plane was written. Night rows (sun zenith >= 90 degrees) hold zeros; a step the model could not answer holds nulls and is counted in unanswered_steps.",
-    "required": ["model", "model_version", "lat", "lon", "altitude_m", "start", "step", "step_s", "steps", "tz", "planes", "integrated_range_nm", "ground_reflection", "sky_diffuse_on_planes", "columns", "rows", "unanswered_steps"],
+    "required": ["model", "model_version", "quality", "served_quality", "quality_setting", "quality_error", "lat", "lon", "altitude_m", "start", "step", "step_s", "steps", "tz", "planes", "integrated_range_nm", "ground_reflection", "sky_diffuse_on_planes", "columns", "rows", "unanswered_steps"],
     "additionalProperties": false,
     "properties": {
       "model": {"type": "string"},
       "model_version": {"type": "string"},
+      "quality": {"type": "string", "enum": ["draft", "standard", "reference"], "description": "As Irradiance."},
+      "served_quality": {"type": "string", "enum": ["draft", "standard", "reference"], "description": "As Irradiance."},
+      "quality_setting": {"type": "object", "additionalProperties": {"type": "number"}},
+      "quality_error": {"allOf": [{"$ref": "#/components/schemas/QualityError"}], "nullable": true},
+      "quality_overridden": {"type": "array", "items": {"type": "string"}},
       "lat": {"type": "number"},
       "lon": {"type": "number"},
       "altitude_m": {"type": "number"},
@@ -205,11 +236,16 @@ Json schemas() {
   "SkyPatches": {
     "type": "object",
     "description": "A sky vector in Radiance's patch order (docs/building-energy.md): patch 0 the ground (rho x global horizontal / pi), then the Tregenza or Reinhart patches from the horizon band up, each band from North (azimuth 0) clockwise, the zenith cap last. value: the radiance averaged over the patch's solid angle (a Gauss-Legendre quadrature over the patch): W/(m2.sr.nm) per wavelength (spectral), Radiance RGB in W/(m2.sr) (rgb), or cd/m2 (luminance).",
-    "required": ["model", "model_version", "sun", "altitude_m", "scheme", "mf", "patch_count", "sun_handling", "sun_patch", "output", "unit", "ground_reflectance", "integrated_range_nm", "diffuse_horizontal_w_m2", "quadrature", "patches", "sun_source"],
+    "required": ["model", "model_version", "quality", "served_quality", "quality_setting", "quality_error", "sun", "altitude_m", "scheme", "mf", "patch_count", "sun_handling", "sun_patch", "output", "unit", "ground_reflectance", "integrated_range_nm", "diffuse_horizontal_w_m2", "quadrature", "patches", "sun_source"],
     "additionalProperties": false,
     "properties": {
       "model": {"type": "string"},
       "model_version": {"type": "string"},
+      "quality": {"type": "string", "enum": ["draft", "standard", "reference"], "description": "The quality level asked (quality=, else the server's --quality; docs/quality-levels.md)."},
+      "served_quality": {"type": "string", "enum": ["draft", "standard", "reference"], "description": "The level whose tables answered: quality, or draft while the standard tables are being built (then Cache-Control: no-store)."},
+      "quality_setting": {"type": "object", "additionalProperties": {"type": "number"}, "description": "Every option of the served level, with the value used (a request's explicit option included)."},
+      "quality_error": {"allOf": [{"$ref": "#/components/schemas/QualityError"}], "nullable": true, "description": "The served level's measured error against the reference level; null when the request overrode one of the level's options."},
+      "quality_overridden": {"type": "array", "items": {"type": "string"}, "description": "The level's options the request gave itself (present only then)."},
       "sun": {"$ref": "#/components/schemas/SunUsed"},
       "altitude_m": {"type": "number"},
       "scheme": {"type": "string", "enum": ["tregenza", "reinhart"]},
@@ -440,7 +476,7 @@ Json operations() {
         "content": {
           "application/json": {
             "schema": {"$ref": "#/components/schemas/Radiance"},
-            "example": {"altitude_m": 0.0, "grid": "points", "model": "preetham", "model_version": "1", "samples": [{"radiance": [0.16657478187859964, 0.07732172727214032, 0.03455196147970835], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}], "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}, "unit": "W/(m2.sr.nm)", "wavelengths_nm": [450.0, 550.0, 650.0]}
+            "example": {"altitude_m": 0.0, "grid": "points", "model": "preetham", "model_version": "1", "quality": "standard", "quality_error": {"against": "reference", "max_relative": 0.0, "p95_relative": 0.0}, "quality_setting": {}, "served_quality": "standard", "samples": [{"radiance": [0.16657478187859964, 0.07732172727214032, 0.03455196147970835], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}], "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}, "unit": "W/(m2.sr.nm)", "wavelengths_nm": [450.0, 550.0, 650.0]}
           },
           "text/csv": {
             "schema": {"$ref": "#/components/schemas/RadianceCsv"},
@@ -468,7 +504,7 @@ Json operations() {
         "content": {
           "application/json": {
             "schema": {"$ref": "#/components/schemas/Radiance"},
-            "example": {"altitude_m": 0.0, "grid": "points", "model": "preetham", "model_version": "1", "samples": [{"radiance": [0.16657478187859964, 0.07732172727214032, 0.03455196147970835], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}, {"radiance": [0.27521367017693504, 0.14807347448705338, 0.08606376978831415], "view_azimuth_deg": 90.0, "view_zenith_deg": 60.0}], "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}, "unit": "W/(m2.sr.nm)", "wavelengths_nm": [450.0, 550.0, 650.0]}
+            "example": {"altitude_m": 0.0, "grid": "points", "model": "preetham", "model_version": "1", "quality": "standard", "quality_error": {"against": "reference", "max_relative": 0.0, "p95_relative": 0.0}, "quality_setting": {}, "served_quality": "standard", "samples": [{"radiance": [0.16657478187859964, 0.07732172727214032, 0.03455196147970835], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}, {"radiance": [0.27521367017693504, 0.14807347448705338, 0.08606376978831415], "view_azimuth_deg": 90.0, "view_zenith_deg": 60.0}], "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}, "unit": "W/(m2.sr.nm)", "wavelengths_nm": [450.0, 550.0, 650.0]}
           },
           "text/csv": {"schema": {"$ref": "#/components/schemas/RadianceCsv"}}
         }
@@ -493,7 +529,7 @@ Json operations() {
         "description": "Irradiance.",
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/Irradiance"},
-          "example": {"altitude_m": 0.0, "diffuse": {"illuminance_lx": 28493.223923522513, "irradiance_w_m2": 180.52086377322016}, "direct": {"illuminance_lx": 88658.85993633908, "irradiance_w_m2": 479.46653007527397}, "direct_normal": {"illuminance_lx": 95663.66999330047, "irradiance_w_m2": 517.348496685935}, "global": {"illuminance_lx": 117152.08385986158, "irradiance_w_m2": 659.987393848494}, "ground_diffuse": {"illuminance_lx": 0.0, "irradiance_w_m2": 0.0}, "ground_reflection": {"albedo_source": "model", "model": "isotropic"}, "integrated_range_nm": [360.0, 830.0], "model": "preetham", "model_version": "1", "plane": {"surface_azimuth_deg": 180.0, "tilt_deg": 30.0}, "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}}
+          "example": {"altitude_m": 0.0, "diffuse": {"illuminance_lx": 28493.223923522513, "irradiance_w_m2": 180.52086377322016}, "direct": {"illuminance_lx": 88658.85993633908, "irradiance_w_m2": 479.46653007527397}, "direct_normal": {"illuminance_lx": 95663.66999330047, "irradiance_w_m2": 517.348496685935}, "global": {"illuminance_lx": 117152.08385986158, "irradiance_w_m2": 659.987393848494}, "ground_diffuse": {"illuminance_lx": 0.0, "irradiance_w_m2": 0.0}, "ground_reflection": {"albedo_source": "model", "model": "isotropic"}, "integrated_range_nm": [360.0, 830.0], "model": "preetham", "model_version": "1", "quality": "standard", "quality_error": {"against": "reference", "max_relative": 0.0, "p95_relative": 0.0}, "quality_setting": {}, "served_quality": "standard", "plane": {"surface_azimuth_deg": 180.0, "tilt_deg": 30.0}, "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}}
         }}
       }
     }
@@ -536,7 +572,7 @@ Json operations() {
         "description": "Colour.",
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/Rgb"},
-          "example": {"altitude_m": 0.0, "colour_space": "linear sRGB (D65), radiometric: Y in W/(m2.sr)", "gamut_clipped_samples": 0, "gamut_mapping": "negative components clipped to 0", "integrated_range_nm": [360.0, 830.0], "method": "spectral", "model": "preetham", "model_version": "1", "samples": [{"gamut_clipped": false, "luminance_cd_m2": 5404.272403652347, "rgb": [4.374940149346866, 8.14954111417067, 15.988335948967407], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}], "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}}
+          "example": {"altitude_m": 0.0, "colour_space": "linear sRGB (D65), radiometric: Y in W/(m2.sr)", "gamut_clipped_samples": 0, "gamut_mapping": "negative components clipped to 0", "integrated_range_nm": [360.0, 830.0], "method": "spectral", "model": "preetham", "model_version": "1", "quality": "standard", "quality_error": {"against": "reference", "max_relative": 0.0, "p95_relative": 0.0}, "quality_setting": {}, "served_quality": "standard", "samples": [{"gamut_clipped": false, "luminance_cd_m2": 5404.272403652347, "rgb": [4.374940149346866, 8.14954111417067, 15.988335948967407], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}], "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}}
         }}
       }
     }
@@ -558,7 +594,7 @@ Json operations() {
         "description": "Colour, one sample per view, in the order given.",
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/Rgb"},
-          "example": {"altitude_m": 0.0, "colour_space": "linear sRGB (D65), radiometric: Y in W/(m2.sr)", "gamut_clipped_samples": 0, "gamut_mapping": "negative components clipped to 0", "integrated_range_nm": [360.0, 724.25], "method": "spectral", "model": "hosek", "model_version": "1", "samples": [{"gamut_clipped": false, "luminance_cd_m2": 3125.214328653716, "rgb": [2.618930817129737, 4.657793717117717, 9.528364421411645], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}, {"gamut_clipped": false, "luminance_cd_m2": 5483.929524803734, "rgb": [5.293662459038357, 8.191446310734195, 14.481891990482866], "view_azimuth_deg": 90.0, "view_zenith_deg": 60.0}], "sun": {"azimuth_deg": 136.0464246389158, "source": "spa", "zenith_deg": 26.652540765126872}, "warning": "the model answers only part of the grid; the CIE integral covers [360.000000, 724.250000] nm (missing light counts as zero)"}
+          "example": {"altitude_m": 0.0, "colour_space": "linear sRGB (D65), radiometric: Y in W/(m2.sr)", "gamut_clipped_samples": 0, "gamut_mapping": "negative components clipped to 0", "integrated_range_nm": [360.0, 724.25], "method": "spectral", "model": "hosek", "model_version": "1", "quality": "standard", "quality_error": {"against": "reference", "max_relative": 0.0, "p95_relative": 0.0}, "quality_setting": {}, "served_quality": "standard", "samples": [{"gamut_clipped": false, "luminance_cd_m2": 3125.214328653716, "rgb": [2.618930817129737, 4.657793717117717, 9.528364421411645], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}, {"gamut_clipped": false, "luminance_cd_m2": 5483.929524803734, "rgb": [5.293662459038357, 8.191446310734195, 14.481891990482866], "view_azimuth_deg": 90.0, "view_zenith_deg": 60.0}], "sun": {"azimuth_deg": 136.0464246389158, "source": "spa", "zenith_deg": 26.652540765126872}, "warning": "the model answers only part of the grid; the CIE integral covers [360.000000, 724.250000] nm (missing light counts as zero)"}
         }}
       }
     }

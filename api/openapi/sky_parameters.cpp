@@ -169,6 +169,19 @@ Json sky_parameter_components() {
        "any other id is a 404 unknown_model."},
       {"schema", {{"type", "string"}, {"enum", model_ids}}},
       {"example", "preetham"}};
+  components["quality"] = {
+      {"name", "quality"},
+      {"in", "query"},
+      {"required", false},
+      {"description",
+       "The model's cost options: draft (cheaper), standard (the model's defaults, the 2016 "
+       "study's setting) or reference (finer); absent: the server's --quality (standard by "
+       "default). An option given explicitly wins over the level's. The answer states the "
+       "level asked and served, the setting and its measured error (JSON members, the "
+       "Clearsky-Quality, Clearsky-Served-Quality and Clearsky-Quality-Detail headers, the "
+       "skydome's clearskyQuality attributes); another value: 400 naming quality "
+       "(docs/quality-levels.md)."},
+      {"schema", {{"type", "string"}, {"enum", {"draft", "standard", "reference"}}}}};
   const Json place = place_parameters();
   for (const auto& [name, parameter] : place.items()) components[name] = parameter;
   for (const ListedParameter& p : listed_parameters()) {

@@ -147,8 +147,9 @@ std::optional<std::vector<double>> parse_wavelengths(Parameters& p, const Limits
 ModelOnGrid model_on_wavelengths(const ModelProvider& provider, const ModelFactory& factory,
                                  ModelConfig config,
                                  const std::optional<std::vector<double>>& wavelengths,
-                                 const ModelRequester& requester) {
+                                 const ModelRequester& requester, const RequestQuality* quality) {
   ModelOnGrid out;
+  if (quality != nullptr) out.served_quality = quality->level;
   const ModelDescriptor& d = *factory.descriptor;
   if (wavelengths) {
     for (double w : *wavelengths) {
@@ -164,7 +165,30 @@ ModelOnGrid model_on_wavelengths(const ModelProvider& provider, const ModelFacto
       on_grid = on_grid && config.wavelengths.index_of(w) < config.wavelengths.size();
     if (!on_grid) config.wavelengths = WavelengthGrid::points(*wavelengths);
   }
-  out.model = provider.model(factory, config, requester);
+  // A standard request of its level's own setting may be answered from the draft tables while
+  // the standard ones are being built (docs/quality-levels.md "Serving at once"); reference
+  // waits like any build.
+  std::optional<ModelConfig> draft;
+  if (quality != nullptr && quality->level == QualityLevel::standard &&
+      quality->overridden.empty()) {
+    draft = config;
+    for (const auto& [name, value] : quality->table_row->options) draft->options.erase(name);
+    apply_quality_level(d, quality_setting(d.id, QualityLevel::draft), draft->options);
+    if (draft->canonical_string() == config.canonical_string()) draft.reset();
+  }
+  ModelProvider::ServedModel served;
+  try {
+    served = provider.model_or_fallback(factory, config, draft ? &*draft : nullptr, requester);
+  } catch (const ApiError& e) {
+    // A build still under way: say which level it is (docs/quality-levels.md).
+    if (e.status() != 503 || e.code() != "model_not_ready" || quality == nullptr) throw;
+    throw ApiError(
+        503, e.code(), e.parameter(),
+        std::string(e.what()) + " (quality " + std::string(to_string(quality->level)) + ")",
+        e.retry_after_s());
+  }
+  out.model = served.model;
+  if (served.fallback) out.served_quality = QualityLevel::draft;
   const WavelengthGrid& grid = out.model->wavelengths();
   if (wavelengths) {
     for (double w : *wavelengths) out.indices.push_back(grid.index_of(w));

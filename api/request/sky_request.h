@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "api/request/parameters.h"
+#include "api/request/quality.h"
 #include "api/service/model_provider.h"
 #include "models/core/sky_model.h"
 
@@ -60,16 +61,21 @@ struct ModelOnGrid {
   std::shared_ptr<const SkyModel> model;
   std::vector<std::size_t> indices;  // into model->wavelengths()
   std::vector<double> wavelengths_nm;
+  // The quality whose tables answered (the request's, or draft while standard builds:
+  // docs/quality-levels.md "Serving at once").
+  QualityLevel served_quality = QualityLevel::standard;
 };
 
 // Wavelengths all on the configured grid are read from its tables; any other list selects a
 // model built on exactly those wavelengths (a point grid), through the provider. Throws 422
 // for a wavelength outside the model's spectral range. requester: who asks (the server limits
-// the builds a client triggers).
+// the builds a client triggers). quality: the request's level (config has it applied); null for
+// the server's own work, answered at config as it is.
 ModelOnGrid model_on_wavelengths(const ModelProvider& provider, const ModelFactory& factory,
                                  ModelConfig config,
                                  const std::optional<std::vector<double>>& wavelengths,
-                                 const ModelRequester& requester);
+                                 const ModelRequester& requester,
+                                 const RequestQuality* quality = nullptr);
 
 // 422 (or 500 for numerical_failure) naming parameter, when status is not ok.
 void require_answer(SampleStatus status, const std::string& parameter, const std::string& model_id);

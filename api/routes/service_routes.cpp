@@ -20,8 +20,9 @@ ApiResponse healthz(const ApiContext&, const ApiRequest& request) {
   return response;
 }
 
-// 200 when the default tables of every model are ready, else 503 with Retry-After; both with
-// each model's state. A draining server (SIGTERM, docs/deploy.md "Graceful drain") is not
+// 200 when the tables built at start are ready (each model's draft and standard, or serve
+// --prebuild's list; docs/quality-levels.md), else 503 with Retry-After; both with each model's
+// state (its default tables) and the state of each quality level built or asked for. A draining server (SIGTERM, docs/deploy.md "Graceful drain") is not
 // ready whatever its tables: load balancers stop sending it requests.
 ApiResponse readyz(const ApiContext& context, const ApiRequest& request) {
   no_parameters(request);
@@ -30,17 +31,26 @@ ApiResponse readyz(const ApiContext& context, const ApiRequest& request) {
                                    "the server is stopping: it finishes the requests in flight and "
                                    "takes no new ones"));
   nlohmann::json models = nlohmann::json::object();
-  bool ready = true;
+  const bool ready = context.models.start_builds_ready();
   for (const ModelFactory& f : context.models.factories()) {
     const ModelState state = context.models.default_state(f);
-    ready = ready && state.status == ModelState::Status::ready;
+    nlohmann::json levels = nlohmann::json::object();
+    for (QualityLevel level : kQualityLevels) {
+      ModelConfig config;
+      apply_quality_level(*f.descriptor, quality_setting(f.descriptor->id, level), config.options);
+      const auto level_state = context.models.config_state(f, config);
+      levels[std::string(to_string(level))] =
+          level_state ? nlohmann::json{{"status", to_string(level_state->status)},
+                                       {"progress", finite(level_state->progress)}}
+                      : nlohmann::json{{"status", "not_built"}, {"progress", 0.0}};
+    }
     models[f.descriptor->id] = {{"status", to_string(state.status)},
-                                {"progress", finite(state.progress)}};
+                                {"progress", finite(state.progress)},
+                                {"levels", std::move(levels)}};
   }
   if (ready) return json_response(nlohmann::json{{"status", "ready"}, {"models", models}});
-  ApiResponse response = error_response(
-      ApiError(503, "not_ready", "", "the default tables of some models are being built",
-               context.retry_after_s));
+  ApiResponse response = error_response(ApiError(
+      503, "not_ready", "", "the tables of some models are being built", context.retry_after_s));
   nlohmann::json body = nlohmann::json::parse(response.body);
   body["models"] = models;
   response.body = body.dump();

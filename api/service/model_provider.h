@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -50,7 +51,37 @@ class ModelProvider {
                                         const ModelConfig& config) const {
     return model(factory, config, ModelRequester{});
   }
+  // A model and whether it is the fallback's.
+  struct ServedModel {
+    std::shared_ptr<const SkyModel> model;
+    bool fallback = false;
+  };
+  // The model built with config or, while config's tables are still being built and the
+  // fallback's (a cheaper quality level of the same request: docs/quality-levels.md "Serving at
+  // once") are ready, the fallback's model. Without a fallback, or when neither is ready, as
+  // model(). This default implementation never falls back.
+  virtual ServedModel model_or_fallback(const ModelFactory& factory, const ModelConfig& config,
+                                        const ModelConfig* fallback,
+                                        const ModelRequester& requester) const {
+    (void)fallback;
+    return {model(factory, config, requester), false};
+  }
   virtual ModelState default_state(const ModelFactory& factory) const = 0;
+  // The state of config's tables (a quality level's, for /readyz); nullopt when they were
+  // neither built nor asked for. This default implementation knows only the defaults.
+  virtual std::optional<ModelState> config_state(const ModelFactory& factory,
+                                                 const ModelConfig& config) const {
+    if (config.canonical_string() != ModelConfig{}.canonical_string()) return std::nullopt;
+    return default_state(factory);
+  }
+  // Whether the tables the server builds at start are ready (/readyz answers 200). This default
+  // implementation: every model's default tables.
+  virtual bool start_builds_ready() const {
+    for (const ModelFactory& f : factories()) {
+      if (default_state(f).status != ModelState::Status::ready) return false;
+    }
+    return true;
+  }
   // The model's per-sun state (SkyModel::prepare_sun; sun already checked). Providers may
   // share it between requests for the same model and sun: it is immutable.
   virtual std::shared_ptr<const SunState> sun_state(const std::shared_ptr<const SkyModel>& model,

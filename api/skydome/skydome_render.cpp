@@ -31,6 +31,7 @@ namespace clearsky::api {
 
 struct SkydomeRender::Settings {
   std::string model_id;
+  RequestQuality quality;
   ModelOnGrid m;
   std::shared_ptr<const SunState> sun_state;
   SunSpec sun;
@@ -276,7 +277,10 @@ bool write_png(const SkydomeRender::Settings& s, const SkydomeRender::Sink& sink
       {"sunAzimuthDeg", std::to_string(s.sun.azimuth_deg)},
       {"clearskyExposureEV100", exposure},
       {"clearskyToneMap", s.tone_curve == ToneCurve::aces ? "aces" : "reinhard"},
-      {"clearskyAlpha", "255 where the model answered, 0 where it did not"}};
+      {"clearskyAlpha", "255 where the model answered, 0 where it did not"},
+      {"clearskyQuality", std::string(to_string(s.quality.level))},
+      {"clearskyServedQuality", std::string(to_string(s.m.served_quality))},
+      {"clearskyQualityDetail", quality_summary(s.quality, s.m.served_quality)}};
   PngStream png(sink, width, height, text);
   if (png.aborted()) return false;
   const std::size_t n_channels = channel_count(s);
@@ -329,6 +333,7 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
   s->sun = parse_sun(p);
   s->viewpoint = parse_viewpoint(p);
   ModelConfig config = parse_config(p, *factory.descriptor);
+  s->quality = parse_quality(p, *factory.descriptor, config, context.default_quality);
   s->png = p.choice("format", {"exr", "png"}, "exr") == "png";
   s->projection_name = p.choice("projection", {"fisheye", "latlong", "cubemap"}, "fisheye");
   const auto size_text = p.text("size");
@@ -395,7 +400,7 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
                                                                   : Projection::cubemap;
   s->projection = SkydomeProjection(projection, static_cast<int>(size));
   s->m = model_on_wavelengths(context.models, factory, std::move(config), wavelengths,
-                              request.requester());
+                              request.requester(), &s->quality);
   // The sun and the viewpoint are checked now, so that a sky the model cannot answer is an
   // error rather than a black image: one view at the zenith goes through the checked path.
   ViewList zenith;
@@ -429,6 +434,10 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
 }
 
 const std::string& SkydomeRender::model_id() const { return settings_->model_id; }
+void SkydomeRender::add_quality_headers(
+    std::vector<std::pair<std::string, std::string>>& headers) const {
+  api::add_quality_headers(headers, settings_->quality, settings_->m.served_quality);
+}
 int SkydomeRender::width() const { return settings_->projection.width(); }
 int SkydomeRender::height() const { return settings_->projection.height(); }
 const char* SkydomeRender::content_type() const {
@@ -493,6 +502,13 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
   for (const auto& name : names) header.channels().insert(name, Imf::Channel(type));
   header.insert("clearskyModel", Imf::StringAttribute(s.model_id));
   header.insert("clearskyProjection", Imf::StringAttribute(s.projection_name));
+  // The quality asked, the one whose tables answered, and the setting with its error figures
+  // (docs/quality-levels.md).
+  header.insert("clearskyQuality", Imf::StringAttribute(std::string(to_string(s.quality.level))));
+  header.insert("clearskyServedQuality",
+                Imf::StringAttribute(std::string(to_string(s.m.served_quality))));
+  header.insert("clearskyQualityDetail",
+                Imf::StringAttribute(quality_summary(s.quality, s.m.served_quality)));
   header.insert("sunZenithDeg", Imf::FloatAttribute(static_cast<float>(s.sun.zenith_deg)));
   header.insert("sunAzimuthDeg", Imf::FloatAttribute(static_cast<float>(s.sun.azimuth_deg)));
   header.insert("clearskyAlpha", Imf::StringAttribute(alpha_rule(s.options.ground)));

@@ -50,6 +50,8 @@ class SkydomeRender {
   bool write(const Sink& sink, unsigned threads = 0,
              std::size_t* unanswered_pixels = nullptr) const;
   const std::string& model_id() const;
+  // Clearsky-Quality, Clearsky-Served-Quality, Clearsky-Quality-Detail (api/request/quality.h).
+  void add_quality_headers(std::vector<std::pair<std::string, std::string>>& headers) const;
   int width() const;
   int height() const;
   // "image/x-exr" and "sky.exr", or "image/png" and "sky.png" (format=png).

@@ -1,6 +1,7 @@
 // `clearsky fit --dataset NAME --model ID [--free a,b] [--bounds JSON] [--grid N,..]
 // [--captures LABEL,..] [--parameters JSON] [--search-options JSON] [--per-capture]
-// [--cross-validate] [--max-evaluations N] [--fold-evaluations N] [--history] [--json]
+// [--cross-validate] [--max-evaluations N] [--fold-evaluations N] [--quality LEVEL] [--history]
+// [--json]
 // [--db PATH]`: fits the model's atmosphere to a stored dataset (docs/fits.md); the fit is
 // stored (the fits table) and printed as GET /v1/fits/{id} answers it (api/encode/fit_json.h).
 #include <iomanip>
@@ -81,6 +82,7 @@ void add_fit_command(CLI::App& app, const std::string& software_version) {
     std::string bounds;
     std::string parameters;
     std::string search_options;
+    std::string quality;
     bool history = false;
     bool json = false;
   };
@@ -118,6 +120,11 @@ void add_fit_command(CLI::App& app, const std::string& software_version) {
       ->add_option("--fold-evaluations", r.max_fold_refine_evaluations,
                    "Refinement budget per capture and per fold")
       ->capture_default_str();
+  command
+      ->add_option("--quality", options->quality,
+                   "Quality level of the model's options (draft, standard, reference; "
+                   "docs/quality-levels.md); the \"quality\" of --parameters")
+      ->check(CLI::IsMember({"draft", "standard", "reference"}));
   command->add_flag("--history", options->history, "With --json: every point evaluated");
   command->add_flag("--json", options->json, "Print the fit as one JSON object");
   command->callback([options, software_version] {
@@ -127,6 +134,12 @@ void add_fit_command(CLI::App& app, const std::string& software_version) {
       request.bounds = json_option(options->bounds, "--bounds", "bounds");
     if (!options->parameters.empty())
       request.parameters = json_option(options->parameters, "--parameters", "parameters");
+    if (!options->quality.empty()) {
+      if (request.parameters.is_object() && request.parameters.contains("quality"))
+        throw CLI::ValidationError("--quality", "also given in --parameters");
+      if (!request.parameters.is_object()) request.parameters = nlohmann::json::object();
+      request.parameters["quality"] = options->quality;
+    }
     if (!options->search_options.empty())
       request.search_options =
           json_option(options->search_options, "--search-options", "search_options");

@@ -28,6 +28,7 @@
 #include "server/http/http_server.h"
 #include "server/memory/heap_bounds.h"
 #include "server/scheduler/scheduler.h"
+#include "server/tables/start_builds.h"
 #include "storage/repositories/evaluation_run_repository.h"
 
 namespace clearsky::cli {
@@ -190,7 +191,12 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   tables.set_build_observer([&metrics](const std::string& id, double seconds, bool from_cache) {
     metrics.observe_build(id, seconds, from_cache);
   });
-  tables.start_default_builds();
+  // Drafts first, then the defaults, or exactly --prebuild (docs/quality-levels.md).
+  try {
+    tables.start_builds(server::start_builds(tables.factories(), config.prebuild));
+  } catch (const std::invalid_argument& e) {
+    throw CLI::ValidationError("--prebuild", e.what());
+  }
   if (config.prebuild_three) {
     // The paper's 3-wavelength colour method needs each model on its 3-point grid.
     const ThreeWavelengthRgb three;
@@ -389,6 +395,16 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
       ->capture_default_str();
   command->add_option("--builder-threads", config->builder_threads, "Concurrent table builds")
       ->capture_default_str();
+  command
+      ->add_option("--quality", config->quality,
+                   "Quality level of sky requests without quality= (docs/quality-levels.md)")
+      ->check(CLI::IsMember({"draft", "standard", "reference"}))
+      ->capture_default_str();
+  command
+      ->add_option("--prebuild", config->prebuild,
+                   "model:level pairs built at start, e.g. bruneton:standard,haber:draft "
+                   "(default: every model's draft, then its standard; docs/quality-levels.md)")
+      ->delimiter(',');
   command
       ->add_option("--prebuild-three", config->prebuild_three,
                    "Also build the 3-wavelength tables of rgb method=three at start")

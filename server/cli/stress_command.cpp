@@ -1,10 +1,11 @@
 // `clearsky stress [--models all|ID,...] [--samples N] [--parameter-values N] [--options JSON]
-// [--threads N] [--json]`: the
+// [--quality LEVEL] [--threads N] [--json]`: the
 // numerical stress run of docs/stability.md, dense sweeps over each model's declared domain
 // (models/stress/model_stress.h). --samples N thins every sweep to at most N points and sweeps
 // each parameter through min(N, 7) values (at least 2; --parameter-values sets it); without it
 // every step is computed (minutes per model: a benchmark). --options gives option values of the base configuration
-// (e.g. smaller tables), applied to the models that list them. Exit status 1 when a model
+// (e.g. smaller tables), applied to the models that list them; --quality builds each model at
+// that level's options (docs/quality-levels.md), which --options override. Exit status 1 when a model
 // delivered a non-finite or negative value, refused an input its descriptor declares it
 // answers, or failed a symmetry, energy or trend check.
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <stdexcept>
 
 #include "api/encode/stress_json.h"
+#include "models/quality/quality_levels.h"
 #include "models/registry.h"
 #include "models/stress/documented_limits.h"
 #include "models/stress/model_stress.h"
@@ -76,6 +78,7 @@ void add_stress_command(CLI::App& app) {
     std::size_t samples = 0;
     std::size_t parameter_values = 0;
     std::string options;
+    std::string quality = "standard";
     unsigned threads = 0;
     bool json = false;
   };
@@ -96,6 +99,12 @@ void add_stress_command(CLI::App& app) {
   command->add_option("--options", options->options,
                       "JSON object of option values for the base configuration, applied to "
                       "the models that list them, e.g. '{\"table_mu_size\": 32}'");
+  command
+      ->add_option("--quality", options->quality,
+                   "Quality level of the base configuration (docs/quality-levels.md); --options "
+                   "override its values")
+      ->check(CLI::IsMember({"draft", "standard", "reference"}))
+      ->capture_default_str();
   command->add_option("--threads", options->threads,
                       "Threads of each precomputation (default 0: all cores)");
   command->add_flag("--json", options->json, "Print one JSON object: {\"models\": [...]}");
@@ -119,7 +128,12 @@ void add_stress_command(CLI::App& app) {
     nlohmann::json models = nlohmann::json::array();
     bool all_passed = true;
     for (const ModelFactory* factory : chosen_models(options->models)) {
-      const stress::ModelStressReport report = stress::stress_model(*factory, run);
+      stress::StressOptions model_run = run;
+      apply_quality_level(
+          *factory->descriptor,
+          quality_setting(factory->descriptor->id, *parse_quality_level(options->quality)),
+          model_run.options);
+      const stress::ModelStressReport report = stress::stress_model(*factory, model_run);
       all_passed = all_passed && stress::stress_passed(report);
       if (options->json) {
         models.push_back(api::stress_report_to_json(report));

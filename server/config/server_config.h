@@ -48,6 +48,8 @@
 // | cors_origins         |       | (none)          | origins browsers may call the API from ("*": any; docs/http-api.md)                   |
 // | viewer_dir           | path  | viewer/ by the executable | the browser viewer served at / (docs/viewer.md); empty or no index.html: none |
 // | prebuild_three       |       | true            | also build each model on the 3-wavelength grid of rgb method=three                    |
+// | quality              |       | standard        | the quality level of sky requests without quality= (draft, standard, reference)       |
+// | prebuild             |       | (defaults)      | model:level pairs built at start (docs/quality-levels.md); empty: each default + drafts |
 // threads + max_queued is at most 896: cpp-httplib 0.11.4 as Debian builds it uses select(2)
 // and answers 500 on a connection whose descriptor is 1024 or more (docs/deployment.md).
 // clang-format on
@@ -96,6 +98,8 @@ struct ServerConfig {
   int retry_after_s = 5;
   unsigned builder_threads = 1;
   bool prebuild_three = true;
+  std::string quality = "standard";
+  std::vector<std::string> prebuild;  // "model:level"; empty: docs/quality-levels.md
   std::string token;
   std::string token_file;  // empty: none
   int drain_delay_s = 0;

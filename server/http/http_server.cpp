@@ -229,7 +229,8 @@ HttpServer::HttpServer(const ServerConfig& config, TableStore& tables, Metrics& 
                config.retry_after_s,
                [](const std::string& message) { spdlog::warn("{}", message); },
                [this] { return http_->draining(); },
-               &answer_memory_},
+               &answer_memory_,
+               parse_quality_level(config.quality).value_or(QualityLevel::standard)},
       http_(std::make_unique<ConnectionServer>(connection_limits(config), worker_pool(config))) {
   // The library's one limit is the largest body any route takes (an upload); the other routes
   // apply payload_max_bytes themselves (request_body.h and the pre-routing handler).

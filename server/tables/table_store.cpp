@@ -296,10 +296,15 @@ std::shared_ptr<const SunState> TableStore::sun_state(const std::shared_ptr<cons
 }
 
 api::ModelState TableStore::default_state(const ModelFactory& factory) const {
+  return config_state(factory, ModelConfig{}).value_or(api::ModelState{});
+}
+
+std::optional<api::ModelState> TableStore::config_state(const ModelFactory& factory,
+                                                        const ModelConfig& config) const {
   std::lock_guard lock(mutex_);
   api::ModelState state;
-  const auto it = entries_.find(entry_key(factory, default_canonical_string()));
-  if (it == entries_.end()) return state;
+  const auto it = entries_.find(entry_key(factory, config));
+  if (it == entries_.end()) return std::nullopt;
   const Entry& e = *it->second;
   state.status = e.status;
   state.progress =
@@ -318,6 +323,39 @@ void TableStore::start_default_builds() {
     find_or_queue(f, ModelConfig{}, entry_key(f, default_canonical_string()), true);
 }
 
+void TableStore::start_builds(
+    const std::vector<std::pair<const ModelFactory*, ModelConfig>>& builds) {
+  for (const auto& [factory, config] : builds) validate_config(*factory->descriptor, config);
+  std::lock_guard lock(mutex_);
+  for (const auto& [factory, config] : builds) {
+    const std::string key = entry_key(*factory, config);
+    find_or_queue(*factory, config, key, true);
+    if (std::find(start_keys_.begin(), start_keys_.end(), key) == start_keys_.end())
+      start_keys_.push_back(key);
+  }
+}
+
+TableStore::ServedModel TableStore::model_or_fallback(const ModelFactory& factory,
+                                                      const ModelConfig& config,
+                                                      const ModelConfig* fallback,
+                                                      const api::ModelRequester& requester) const {
+  if (fallback != nullptr) {
+    std::lock_guard lock(mutex_);
+    const auto wanted = entries_.find(entry_key(factory, config));
+    // Only while config's own build is under way (queued at start or started by a request):
+    // an unknown configuration is asked for as usual, so that its build starts.
+    if (wanted != entries_.end() && wanted->second->status != api::ModelState::Status::ready &&
+        wanted->second->status != api::ModelState::Status::failed) {
+      const auto draft = entries_.find(entry_key(factory, *fallback));
+      if (draft != entries_.end() && draft->second->status == api::ModelState::Status::ready) {
+        draft->second->last_used = ++clock_;
+        return {draft->second->model, true};
+      }
+    }
+  }
+  return {model(factory, config, requester), false};
+}
+
 void TableStore::prebuild(const ModelFactory& factory, const ModelConfig& config) {
   validate_config(*factory.descriptor, config);
   std::lock_guard lock(mutex_);
@@ -326,6 +364,14 @@ void TableStore::prebuild(const ModelFactory& factory, const ModelConfig& config
 
 bool TableStore::ready() const {
   std::lock_guard lock(mutex_);
+  if (!start_keys_.empty()) {
+    for (const std::string& key : start_keys_) {
+      const auto it = entries_.find(key);
+      if (it == entries_.end() || it->second->status != api::ModelState::Status::ready)
+        return false;
+    }
+    return true;
+  }
   for (const ModelFactory& f : factories_) {
     const auto it = entries_.find(entry_key(f, default_canonical_string()));
     if (it == entries_.end() || it->second->status != api::ModelState::Status::ready) return false;

@@ -72,17 +72,30 @@ class TableStore final : public api::ModelProvider {
   using api::ModelProvider::model;
   std::shared_ptr<const SkyModel> model(const ModelFactory& factory, const ModelConfig& config,
                                         const api::ModelRequester& requester) const override;
+  // config's model when ready; else, while config is being built (not started by this call),
+  // the fallback's when ready; else model(config).
+  ServedModel model_or_fallback(const ModelFactory& factory, const ModelConfig& config,
+                                const ModelConfig* fallback,
+                                const api::ModelRequester& requester) const override;
   api::ModelState default_state(const ModelFactory& factory) const override;
+  std::optional<api::ModelState> config_state(const ModelFactory& factory,
+                                              const ModelConfig& config) const override;
+  bool start_builds_ready() const override { return ready(); }
   // The model's per-sun state; per-sun models share and bound them in their own cache.
   std::shared_ptr<const SunState> sun_state(const std::shared_ptr<const SkyModel>& model,
                                             const SunPosition& sun) const override;
 
   // Queues the default configuration of every model (the server does this at start).
   void start_default_builds();
+  // Queues these configurations, pinned, in this order (serve --prebuild and the quality levels'
+  // start: docs/quality-levels.md); readiness then waits for them instead of the defaults.
+  // std::invalid_argument for an invalid configuration.
+  void start_builds(const std::vector<std::pair<const ModelFactory*, ModelConfig>>& builds);
   // Queues another configuration to build in the background and keep (after the defaults;
   // readiness does not wait for it). std::invalid_argument for an invalid configuration.
   void prebuild(const ModelFactory& factory, const ModelConfig& config);
-  // Whether the default tables of every model are ready.
+  // Whether the tables queued at start are ready: those of start_builds, else every model's
+  // default.
   bool ready() const;
   // Bytes held by the tables of the ready entries, per model id.
   std::map<std::string, std::size_t> table_bytes() const;
@@ -125,6 +138,8 @@ class TableStore final : public api::ModelProvider {
   };
   mutable std::vector<OnDemandBuild> on_demand_;
   mutable std::map<std::string, std::shared_ptr<SunPreparation>> sun_preparations_;
+  // The entries readiness waits for (start_builds); empty: every model's default.
+  std::vector<std::string> start_keys_;
 };
 
 }  // namespace clearsky::server

@@ -22,7 +22,7 @@ function busy(delta) {
 // An API error body {"error": {"code", "message", "parameter"}} as a sentence.
 class ApiFailure extends Error {}
 
-async function api(path, { blob = false } = {}) {
+async function api(path, { blob = false, onHeaders = null } = {}) {
   busy(+1);
   try {
     let response;
@@ -42,6 +42,7 @@ async function api(path, { blob = false } = {}) {
       } catch { /* not JSON: the status line says it */ }
       throw new ApiFailure(`${path.split('?')[0]} answered ${detail}`);
     }
+    if (onHeaders) onHeaders(response.headers);
     return blob ? await response.blob() : await response.json();
   } finally {
     busy(-1);
@@ -62,8 +63,15 @@ function timeText() {
   return `${$('date').value}T${hh}:${mm}:00Z`;
 }
 
+// Every sky request carries the chosen quality level (docs/quality-levels.md).
 function place() {
-  return new URLSearchParams({ lat: $('lat').value, lon: $('lon').value, time: timeText() });
+  return new URLSearchParams({ lat: $('lat').value, lon: $('lon').value, time: timeText(), quality: $('quality').value });
+}
+
+// "quality standard" or, when cheaper tables answered, "quality standard (served draft)".
+function qualityText(asked, served) {
+  if (!asked) return '';
+  return served && served !== asked ? `quality ${asked} (served ${served})` : `quality ${asked}`;
 }
 
 const skies = {
@@ -90,7 +98,13 @@ async function loadSky(key, model, projection, sun) {
   query.set('size', String(SKY_PX));
   query.set('projection', projection);
   query.set('exposure', $('exposure').value);
-  const blob = await api(`/v1/skydome?${query}`, { blob: true });
+  let quality = '';
+  const blob = await api(`/v1/skydome?${query}`, {
+    blob: true,
+    onHeaders: (headers) => {
+      quality = qualityText(headers.get('Clearsky-Quality'), headers.get('Clearsky-Served-Quality'));
+    },
+  });
   const url = URL.createObjectURL(blob);
   await new Promise((resolve, reject) => {
     sky.img.onload = resolve;
@@ -101,7 +115,9 @@ async function loadSky(key, model, projection, sun) {
   sky.url = url;
   sky.sun = sun;
   sky.img.dataset.query = query.toString();
-  sky.caption.textContent = `${model}, ${timeText()}, sun zenith ${sun.zenith.toFixed(2)}°, azimuth ${sun.azimuth.toFixed(2)}°`;
+  sky.caption.textContent = `${model}, ${timeText()}, sun zenith ${sun.zenith.toFixed(2)}°, azimuth ${sun.azimuth.toFixed(2)}°` +
+    (quality ? `, ${quality}` : '');
+  sky.caption.dataset.servedQuality = quality;
   markSun(sky, projection);
 }
 
@@ -125,7 +141,7 @@ let spectrumPlot = null;
 function drawSpectrum(answer, where) {
   const x = answer.wavelengths_nm;
   const y = answer.samples[0].radiance;
-  $('spectrum-where').textContent = `${answer.model}: view zenith ${where.zenith.toFixed(1)}°, azimuth ${where.azimuth.toFixed(1)}° (W/(m²·sr·nm))`;
+  $('spectrum-where').textContent = `${answer.model}: view zenith ${where.zenith.toFixed(1)}°, azimuth ${where.azimuth.toFixed(1)}° (W/(m²·sr·nm)), ${qualityText(answer.quality, answer.served_quality)}`;
   if (spectrumPlot) { spectrumPlot.setData([x, y]); return; }
   spectrumPlot = new uPlot({
     width: 420, height: 220,
@@ -318,7 +334,7 @@ async function start() {
     const options = models.map((m) => `<option value="${m.id}">${m.name}</option>`).join('');
     $('model').innerHTML = options;
     $('model-b').innerHTML = '<option value="">(none)</option>' + options;
-    for (const id of ['model', 'model-b', 'lat', 'lon', 'date', 'projection', 'exposure']) $(id).addEventListener('change', update);
+    for (const id of ['model', 'model-b', 'lat', 'lon', 'date', 'projection', 'exposure', 'quality']) $(id).addEventListener('change', update);
     $('time').addEventListener('input', () => { $('time-text').textContent = timeText().slice(11, 16); });
     $('time').addEventListener('change', update);
     $('run').addEventListener('change', loadRun);

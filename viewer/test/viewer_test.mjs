@@ -276,6 +276,17 @@ try {
   const shown = await page.evaluate(() => document.querySelector('#irradiance tr[data-model="hosek"][data-component="global"] td.w')?.textContent);
   check(shown === answer.global.irradiance_w_m2.toFixed(1), `global irradiance shown ${shown} W/m2 = API ${answer.global.irradiance_w_m2.toFixed(1)}`);
 
+  // The quality selector: sent with the sky requests, the served quality shown.
+  check((await page.evaluate(() => document.getElementById('caption-a').textContent)).includes('quality standard'), 'the caption shows the served quality');
+  await setValue('quality', 'draft');
+  await page.waitForFunction(() => document.getElementById('sky-img-a').dataset.query.includes('quality=draft'), { timeout: 60000 });
+  await idle('quality change');
+  const draftCaption = await page.evaluate(() => document.getElementById('caption-a').textContent);
+  check(draftCaption.includes('quality draft'), `the draft sky says so: ${draftCaption}`);
+  await setValue('quality', 'standard');
+  await page.waitForFunction(() => document.getElementById('sky-img-a').dataset.query.includes('quality=standard'), { timeout: 60000 });
+  await idle('back to standard');
+
 
   // Side by side.
   await setValue('model-b', 'preetham');

@@ -77,6 +77,7 @@ void add_sky_query(QueryText& query, const SkyQuery& sky) {
     query.add("refraction", place.refraction);
   }
   query.add("altitude", sky.altitude_m);
+  query.add("quality", sky.quality);
   for (const auto& [name, value] : sky.parameters) query.add(name, parameter_text(value));
 }
 

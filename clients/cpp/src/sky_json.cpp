@@ -28,6 +28,7 @@ nlohmann::json sky_query_json(const SkyQuery& sky) {
     if (place.refraction) body["refraction"] = *place.refraction;
   }
   if (sky.altitude_m) body["altitude"] = *sky.altitude_m;
+  if (sky.quality) body["quality"] = *sky.quality;
   return body;
 }
 
@@ -157,6 +158,8 @@ RadianceResult radiance_of(const nlohmann::json& json) {
   RadianceResult result;
   result.model = member<std::string>(json, "model");
   result.model_version = member<std::string>(json, "model_version");
+  result.quality = optional_member<std::string>(json, "quality").value_or("");
+  result.served_quality = optional_member<std::string>(json, "served_quality").value_or("");
   result.sun = sun_used_of(json);
   result.altitude_m = member<double>(json, "altitude_m");
   result.unit = member<std::string>(json, "unit");
@@ -178,6 +181,8 @@ IrradianceResult irradiance_of(const nlohmann::json& json) {
   IrradianceResult result;
   result.model = member<std::string>(json, "model");
   result.model_version = member<std::string>(json, "model_version");
+  result.quality = optional_member<std::string>(json, "quality").value_or("");
+  result.served_quality = optional_member<std::string>(json, "served_quality").value_or("");
   result.sun = sun_used_of(json);
   result.altitude_m = member<double>(json, "altitude_m");
   const nlohmann::json plane = member<nlohmann::json>(json, "plane");
@@ -228,6 +233,8 @@ RgbResult rgb_of(const nlohmann::json& json) {
   RgbResult result;
   result.model = member<std::string>(json, "model");
   result.model_version = member<std::string>(json, "model_version");
+  result.quality = optional_member<std::string>(json, "quality").value_or("");
+  result.served_quality = optional_member<std::string>(json, "served_quality").value_or("");
   result.method = member<std::string>(json, "method");
   result.sun = sun_used_of(json);
   result.altitude_m = member<double>(json, "altitude_m");

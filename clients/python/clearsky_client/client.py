@@ -98,6 +98,7 @@ class Client:
                  lat: Optional[Union[Number, str]] = None,
                  lon: Optional[Union[Number, str]] = None, time: Optional[Time] = None,
                  wavelengths: Optional[Wavelengths] = None,
+                 quality: Optional[str] = None,
                  **parameters: ParameterValue) -> Radiance:
         """GET /v1/radiance: the spectral radiance of one view, W/(m2.sr.nm).
 
@@ -112,7 +113,7 @@ class Client:
             (1, 40)
         """
         query = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time, wavelengths,
-                               parameters)
+                               parameters, quality)
         query.update(view_zenith=view_zenith, view_azimuth=view_azimuth)
         return Radiance.from_json(self._get("/v1/radiance", query).json())
 
@@ -121,6 +122,7 @@ class Client:
                        lat: Optional[Union[Number, str]] = None,
                        lon: Optional[Union[Number, str]] = None, time: Optional[Time] = None,
                        wavelengths: Optional[Wavelengths] = None,
+                       quality: Optional[str] = None,
                        **parameters: ParameterValue) -> Radiance:
         """POST /v1/radiance: many views at once, (zenith, azimuth) in degrees; one row of the
         answer per view, in the order given. Otherwise as ``radiance``.
@@ -132,7 +134,7 @@ class Client:
             (2, 3)
         """
         body: Dict[str, Any] = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time,
-                                              wavelengths, parameters)
+                                              wavelengths, parameters, quality)
         body["views"] = views_body(views)
         return Radiance.from_json(self._transport.request("POST", "/v1/radiance",
                                                           json_body=body).json())
@@ -145,6 +147,7 @@ class Client:
                    lon: Optional[Union[Number, str]] = None, time: Optional[Time] = None,
                    ground_reflection: Optional[str] = None,
                    ground_albedo: Optional[Number] = None,
+                   quality: Optional[str] = None,
                    **parameters: ParameterValue) -> Irradiance:
         """GET /v1/irradiance: direct, diffuse (sky), ground-reflected and global irradiance
         (W/m2) and illuminance (lx) on a plane (tilt from horizontal and the azimuth of its
@@ -158,7 +161,8 @@ class Client:
             ...                   tilt=30, surface_azimuth=180).global_.irradiance_w_m2
             659.987393848494
         """
-        query = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time, None, parameters)
+        query = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time, None, parameters,
+                               quality)
         for name, value in (("tilt", tilt), ("surface_azimuth", surface_azimuth),
                             ("component", component), ("ground_reflection", ground_reflection),
                             ("ground_albedo", ground_albedo)):
@@ -204,6 +208,7 @@ class Client:
             method: Optional[str] = None, sun_zenith: Optional[Number] = None,
             sun_azimuth: Optional[Number] = None, lat: Optional[Union[Number, str]] = None,
             lon: Optional[Union[Number, str]] = None, time: Optional[Time] = None,
+            quality: Optional[str] = None,
             **parameters: ParameterValue) -> Rgb:
         """GET /v1/rgb: linear sRGB (D65, radiometric) and luminance of one view; method
         ``spectral`` (default, CIE 1931 over the 40 bins) or ``three`` (the paper's
@@ -213,7 +218,8 @@ class Client:
             >>> client.rgb("preetham", 45, 0, sun_zenith=30, sun_azimuth=135).luminance_cd_m2
             array([5404.27240365])
         """
-        query = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time, None, parameters)
+        query = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time, None, parameters,
+                               quality)
         query.update(view_zenith=view_zenith, view_azimuth=view_azimuth)
         if method is not None:
             query["method"] = method
@@ -223,10 +229,11 @@ class Client:
                   sun_zenith: Optional[Number] = None, sun_azimuth: Optional[Number] = None,
                   lat: Optional[Union[Number, str]] = None,
                   lon: Optional[Union[Number, str]] = None, time: Optional[Time] = None,
+                  quality: Optional[str] = None,
                   **parameters: ParameterValue) -> Rgb:
         """POST /v1/rgb: ``rgb`` for many views, one row per view in the order given."""
         body: Dict[str, Any] = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time,
-                                              None, parameters)
+                                              None, parameters, quality)
         if method is not None:
             body["method"] = method
         body["views"] = views_body(views)
@@ -239,6 +246,7 @@ class Client:
                 sun_azimuth: Optional[Number] = None, lat: Optional[Union[Number, str]] = None,
                 lon: Optional[Union[Number, str]] = None, time: Optional[Time] = None,
                 chunk_bytes: int = 1 << 20, progress: Optional[Progress] = None,
+                quality: Optional[str] = None,
                 **parameters: ParameterValue) -> SkydomeFile:
         """GET /v1/skydome streamed into the file ``path`` (an OpenEXR image) chunk by chunk,
         never whole in memory. progress(bytes_received, 0) after each chunk (the length of a
@@ -252,7 +260,7 @@ class Client:
             SkydomeFile(path='sky.exr', bytes_written=...)
         """
         query = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time, wavelengths,
-                               parameters)
+                               parameters, quality)
         for name, value in (("projection", projection), ("size", size),
                             ("channels", channels), ("pixel_type", pixel_type),
                             ("method", method)):
@@ -291,6 +299,7 @@ class Client:
                     sun_zenith: Optional[Number] = None, sun_azimuth: Optional[Number] = None,
                     lat: Optional[Union[Number, str]] = None,
                     lon: Optional[Union[Number, str]] = None, time: Optional[Time] = None,
+                    quality: Optional[str] = None,
                     **parameters: ParameterValue) -> Dict[str, Any]:
         """GET /v1/skypatches: the sky vector of Radiance's daylight-coefficient tools
         (docs/building-energy.md), the JSON answer as a dict: ``patches`` in Radiance's order
@@ -304,7 +313,7 @@ class Client:
             146
         """
         query = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time, wavelengths,
-                               parameters)
+                               parameters, quality)
         for name, value in (("scheme", scheme), ("mf", mf), ("sun", sun), ("output", output),
                             ("ground_reflectance", ground_reflectance)):
             if value is not None:

@@ -47,9 +47,13 @@ def format_time(time: Time) -> str:
 def sky_parameters(model: str, sun_zenith: Optional[Number], sun_azimuth: Optional[Number],
                    lat: Optional[Union[Number, str]], lon: Optional[Union[Number, str]],
                    time: Optional[Time], wavelengths: Optional[Wavelengths],
-                   parameters: Mapping[str, ParameterValue]) -> Dict[str, ParameterValue]:
-    """The parameters of a sky request as a dict, only those given."""
+                   parameters: Mapping[str, ParameterValue],
+                   quality: Optional[str] = None) -> Dict[str, ParameterValue]:
+    """The parameters of a sky request as a dict, only those given. quality: draft, standard or
+    reference (docs/quality-levels.md); absent, the server's level."""
     out: Dict[str, ParameterValue] = {"model": model}
+    if quality is not None:
+        out["quality"] = quality
     for name, value in (("sun_zenith", sun_zenith), ("sun_azimuth", sun_azimuth),
                         ("lat", lat), ("lon", lon)):
         if value is not None:

@@ -101,6 +101,16 @@ class Radiance:
     radiance: np.ndarray
     raw: Dict[str, Any] = field(repr=False)
 
+    @property
+    def quality(self) -> str:
+        """The quality level asked (docs/quality-levels.md)."""
+        return self.raw["quality"]
+
+    @property
+    def served_quality(self) -> str:
+        """The level whose tables answered: quality, or draft while standard is being built."""
+        return self.raw["served_quality"]
+
     @classmethod
     def from_json(cls, j: Dict[str, Any]) -> "Radiance":
         samples = j["samples"]
@@ -132,6 +142,16 @@ class Rgb:
     gamut_clipped: np.ndarray
     warning: Optional[str]
     raw: Dict[str, Any] = field(repr=False)
+
+    @property
+    def quality(self) -> str:
+        """The quality level asked (docs/quality-levels.md)."""
+        return self.raw["quality"]
+
+    @property
+    def served_quality(self) -> str:
+        """The level whose tables answered: quality, or draft while standard is being built."""
+        return self.raw["served_quality"]
 
     @classmethod
     def from_json(cls, j: Dict[str, Any]) -> "Rgb":
@@ -179,6 +199,16 @@ class Irradiance:
     raw: Dict[str, Any] = field(repr=False)
     # The isotropic ground's reflection on the plane (None with ground_reflection="exclude").
     ground_diffuse: Optional[IrradianceComponent] = None
+
+    @property
+    def quality(self) -> str:
+        """The quality level asked (docs/quality-levels.md)."""
+        return self.raw["quality"]
+
+    @property
+    def served_quality(self) -> str:
+        """The level whose tables answered: quality, or draft while standard is being built."""
+        return self.raw["served_quality"]
 
     @classmethod
     def from_json(cls, j: Dict[str, Any]) -> "Irradiance":

@@ -165,6 +165,26 @@ class ClientAgainstWriter(unittest.TestCase):
         self.assertEqual(full.radiance.shape[1], full.wavelengths_nm.shape[0])
         self.assertGreater(full.wavelengths_nm.shape[0], 20)
 
+    def test_quality(self) -> None:
+        # docs/quality-levels.md: Preetham has no cost option, so its three levels are one
+        # setting; each answer states the level asked and served.
+        draft = self.client.radiance("preetham", 45, 0, wavelengths=[450, 550, 650],
+                                     quality="draft", **SUN)
+        self.assertEqual((draft.quality, draft.served_quality), ("draft", "draft"))
+        self.assertEqual(draft.raw["quality_setting"], {})
+        self.assertEqual(draft.raw["quality_error"]["max_relative"], 0.0)
+        plain = self.client.radiance("preetham", 45, 0, wavelengths=[450, 550, 650], **SUN)
+        self.assertEqual(plain.quality, "standard")
+        np.testing.assert_array_equal(draft.radiance, plain.radiance)
+        batch = self.client.rgb_batch("hosek", [(45, 0)], quality="reference", **SUN)
+        self.assertEqual(batch.quality, "reference")
+        self.assertEqual(self.client.irradiance("preetham", quality="draft", **SUN).quality,
+                         "draft")
+        self.assertEqual(self.client.sky_patches("preetham", output="luminance",
+                                                 quality="draft", **SUN)["quality"], "draft")
+        self.assertRefused(lambda: self.client.radiance("preetham", 45, 0, quality="best", **SUN),
+                           400, "invalid_parameter", "quality")
+
     def test_irradiance(self) -> None:
         plane = self.client.irradiance("preetham", tilt=30, surface_azimuth=180, spectral=True,
                                        **SUN)

@@ -224,6 +224,35 @@ TEST_F(SkyClient, ARefusedSkydomeLeavesNoFile) {
   EXPECT_FALSE(std::filesystem::exists(server_->directory() / "refused.exr.part"));
 }
 
+// docs/quality-levels.md: the optional quality of a request is sent and the answer's stated
+// level read back; Preetham has no cost option, so its levels are one setting.
+TEST_F(SkyClient, QualityIsSentAndStated) {
+  RadianceRequest one = sky(RadianceRequest{});
+  one.view = {60, 10};
+  const RadianceResult plain = client().radiance(one);
+  EXPECT_EQ(plain.quality, "standard");
+  one.quality = "draft";
+  const RadianceResult draft = client().radiance(one);
+  EXPECT_EQ(draft.quality, "draft");
+  EXPECT_EQ(draft.served_quality, "draft");
+  EXPECT_EQ(draft.samples[0].radiance_w_m2_sr_nm, plain.samples[0].radiance_w_m2_sr_nm);
+  RgbBatchRequest batch = sky(RgbBatchRequest{});
+  batch.views = {{30, 200}};
+  batch.quality = "reference";
+  EXPECT_EQ(client().rgb(batch).quality, "reference");
+  IrradianceRequest plane = sky(IrradianceRequest{});
+  plane.quality = "draft";
+  EXPECT_EQ(client().irradiance(plane).served_quality, "draft");
+  one.quality = "best";
+  try {
+    client().radiance(one);
+    ADD_FAILURE() << "quality=best was answered";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), 400);
+    EXPECT_EQ(e.parameter(), "quality");
+  }
+}
+
 TEST_F(SkyClient, RefusalsAreErrorsNamingTheParameter) {
   RadianceRequest request = sky(RadianceRequest{});
   request.view = {60, 10};

@@ -48,6 +48,8 @@ struct SkyQuery {
   std::optional<PlaceTime> place_time;
   std::optional<double> altitude_m;
   Parameters parameters;
+  // "draft", "standard" or "reference" (docs/quality-levels.md); absent: the server's level.
+  std::optional<std::string> quality;
 };
 
 // A viewing direction.
@@ -129,6 +131,9 @@ struct RadianceSample {
 struct RadianceResult {
   std::string model;
   std::string model_version;
+  // The quality level asked and the one whose tables answered (draft while standard builds);
+  // empty from a server without quality levels.
+  std::string quality, served_quality;
   SunUsed sun;
   double altitude_m = 0;
   std::string unit;  // "W/(m2.sr.nm)"
@@ -158,6 +163,7 @@ struct IrradianceComponent {
 struct IrradianceResult {
   std::string model;
   std::string model_version;
+  std::string quality, served_quality;  // as RadianceResult's
   SunUsed sun;
   double altitude_m = 0;
   double tilt_deg = 0;
@@ -221,6 +227,7 @@ struct RgbSample {
 struct RgbResult {
   std::string model;
   std::string model_version;
+  std::string quality, served_quality;  // as RadianceResult's
   std::string method;
   SunUsed sun;
   double altitude_m = 0;
