@@ -178,6 +178,7 @@ IrradianceSeriesRequest parse_irradiance_series(const ApiContext& context,
   s.delta_t_from_time = place.delta_t_from_time;
   s.viewpoint = Viewpoint{s.position.elevation_m};
   ModelConfig config = parse_config(p, d);
+  s.quality = parse_quality(p, d, config, context.default_quality);
   if (auto planes = p.text("planes")) s.planes = parse_planes(*planes);
   s.ground = parse_ground_reflection(p);
   s.csv = p.choice("format", {"json", "csv"}, "json") == "csv";
@@ -207,7 +208,7 @@ IrradianceSeriesRequest parse_irradiance_series(const ApiContext& context,
                                "(bruneton, elek, hosek, preetham)");
   }
   s.grid = model_on_wavelengths(context.models, factory, std::move(config), std::nullopt,
-                                request.requester());
+                                request.requester(), &s.quality);
   for (std::size_t i = 0; i < s.steps; ++i) {
     if (is_night(s.zenith_deg[i])) continue;
     const SunPosition sun{degrees_to_radians(s.zenith_deg[i]),
@@ -262,6 +263,7 @@ bool write_irradiance_series(const IrradianceSeriesRequest& s, const ByteSink& s
         {"ground_reflection", ground_reflection_json(s.ground)},
         {"sky_diffuse_on_planes", s.tabulated_sky ? "table" : "per_step"},
         {"columns", columns}};
+    add_quality_members(head, s.quality, s.grid.served_quality);
     out = head.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     out.pop_back();  // the closing brace: the rows follow
     out += ",\"rows\":[";

@@ -6,7 +6,7 @@
 // clang-format off
 // | parameter                         | unit     | default  | range                   | meaning                                              |
 // |-----------------------------------|----------|----------|-------------------------|------------------------------------------------------|
-// | model and its parameters          |          |          | as GET /v1/irradiance   | the sky model                                        |
+// | model and its parameters, quality |          |          | as GET /v1/irradiance   | the sky model and its table quality                  |
 // | lat, lon, altitude, pressure, ... |          |          | api/request/place_time.h | the place (time is refused: start, end, step)       |
 // | start, end                        | ISO 8601 | required | end >= start            | first and last instant (inclusive); an offset or Z, or local in tz |
 // | tz                                | IANA     | none     | a zone name             | local times of start/end and the time_local column   |
@@ -32,6 +32,7 @@
 #include "api/irradiance/plane_irradiance.h"
 #include "api/irradiance/plane_list.h"
 #include "api/request/place_time.h"
+#include "api/request/quality.h"
 
 namespace clearsky::api {
 
@@ -41,6 +42,7 @@ inline constexpr std::size_t kMaxPerSunDaySteps = 96;
 
 struct IrradianceSeriesRequest {
   ModelOnGrid grid;
+  RequestQuality quality;
   Viewpoint viewpoint;
   SolarPositionInput position;  // the place; unix_time_utc_s set per step
   bool delta_t_from_time = false;
