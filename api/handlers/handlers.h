@@ -12,6 +12,9 @@ ApiResponse get_sun(const ApiContext& context, const ApiRequest& request);
 // GET (one view) and POST (a batch in the body).
 ApiResponse radiance(const ApiContext& context, const ApiRequest& request);
 ApiResponse irradiance(const ApiContext& context, const ApiRequest& request);
+// GET: irradiance from start to end every step on several planes, streamed
+// (irradiance_series_handler.cpp).
+ApiResponse irradiance_series(const ApiContext& context, const ApiRequest& request);
 // GET (one view) and POST (a batch in the body).
 ApiResponse rgb(const ApiContext& context, const ApiRequest& request);
 // GET: a sky vector over Tregenza or Reinhart patches (skypatches_handler.cpp).

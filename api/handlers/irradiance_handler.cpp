@@ -1,24 +1,29 @@
-// GET /v1/irradiance: direct sun, diffuse sky and global irradiance on a horizontal or tilted
-// plane (tilt from horizontal, surface_azimuth of the plane's normal clockwise from North,
-// degrees), integrated (W/m2 over the model's answered grid) with illuminance (lx), and
-// spectral (W/(m2.nm)) when spectral=true. component=all|direct|diffuse|global.
-//  - direct = E_normal(lambda) max(0, cos(incidence)), zero when the sun is below the horizon
-//    (the ground hides it);
+// GET /v1/irradiance: direct sun, diffuse sky, ground-reflected and global irradiance on a
+// horizontal or tilted plane (tilt from horizontal, surface_azimuth of the plane's normal
+// clockwise from North, degrees), integrated (W/m2 over the model's answered grid) with
+// illuminance (lx), and spectral (W/(m2.nm)) when spectral=true.
+// component=all|direct|diffuse|ground_diffuse|global; the computation is
+// api/irradiance/plane_irradiance.h (shared with GET /v1/irradiance/series):
+//  - direct = E_normal(lambda) max(0, cos(incidence)), zero when the sun is below the horizon;
 //  - diffuse = the model's sky irradiance on the plane (sky radiance over the plane's
-//    hemisphere; ground-reflected light excluded);
-//  - global = direct + diffuse.
+//    hemisphere);
+//  - ground_diffuse = albedo x global horizontal x (1 - cos tilt) / 2, the isotropic ground
+//    (ground_albedo, or the model's ground albedo); ground_reflection=exclude leaves it out;
+//  - global = direct + diffuse + ground_diffuse.
 // Each component carries model_range_irradiance_w_m2 (over integrated_range_nm; its old name
 // irradiance_w_m2 stays as a deprecated alias) and broadband_irradiance_w_m2 (300..4000 nm,
 // with the molecular absorbers precipitable_water_cm and ozone_atm_cm:
 // api/irradiance/broadband_irradiance.h), null for a model that cannot go broadband, whose
-// answer names why (broadband_unavailable).
+// answer names why (broadband_unavailable). The broadband ground term is the ground's
+// model-range share of the global horizontal applied to the broadband global horizontal.
 #include <cmath>
 #include <optional>
 
-#include "api/colour/xyz_weights.h"
 #include "api/handlers/handlers.h"
 #include "api/handlers/sky_radiance_query.h"
 #include "api/irradiance/broadband_irradiance.h"
+#include "api/irradiance/ground_reflection_request.h"
+#include "api/irradiance/plane_irradiance.h"
 #include "models/atmosphere/atmosphere_parameter_table.h"
 #include "models/atmosphere/spctral2.h"
 #include "models/core/numeric.h"
@@ -30,15 +35,13 @@ namespace {
 nlohmann::json component_json(const Spectrum& e, const SkyModel& model,
                               const std::vector<std::size_t>& indices, const XyzWeights& xyz,
                               bool spectral, std::optional<double> broadband_w_m2) {
-  const WavelengthGrid& grid = model.wavelengths();
-  double integrated = 0.0;
-  for (std::size_t i : indices) integrated += grid.integration_weight_nm(i) * e[i];
+  const IntegratedIrradiance sum = integrated(e, model, indices, xyz);
   nlohmann::json out = {
-      {"model_range_irradiance_w_m2", finite(integrated)},
-      {"irradiance_w_m2", finite(integrated)},  // deprecated alias (docs/http-api.md)
+      {"model_range_irradiance_w_m2", finite(sum.irradiance_w_m2)},
+      {"irradiance_w_m2", finite(sum.irradiance_w_m2)},  // deprecated alias (docs/http-api.md)
       {"broadband_irradiance_w_m2",
        broadband_w_m2 ? nlohmann::json(finite(*broadband_w_m2)) : nlohmann::json(nullptr)},
-      {"illuminance_lx", finite(xyz.luminance({e.data(), e.size()}))}};
+      {"illuminance_lx", finite(sum.illuminance_lx)}};
   if (spectral) {
     nlohmann::json values = nlohmann::json::array();
     for (std::size_t i : indices) values.push_back(finite(e[i]));
@@ -62,7 +65,7 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
   const double tilt_deg = p.number_or("tilt", 0.0, 0.0, 180.0);
   const double surface_azimuth_deg = p.number_or("surface_azimuth", 180.0, -360.0, 360.0);
   const std::string component =
-      p.choice("component", {"all", "direct", "diffuse", "global"}, "all");
+      p.choice("component", {"all", "direct", "diffuse", "ground_diffuse", "global"}, "all");
   const bool spectral = p.boolean_or("spectral", false);
   AtmosphereParameters absorbers_atmosphere = config.atmosphere;
   for (const char* name : {"precipitable_water_cm", "ozone_atm_cm"}) {
@@ -70,10 +73,17 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
     info.set(absorbers_atmosphere,
              p.number_or(name, info.default_value, info.min_value, info.max_value));
   }
+  const GroundReflection ground = parse_ground_reflection(p);
   p.reject_unused();
+  if (component == "ground_diffuse" && !ground.included)
+    throw conflicting_parameters("component", "ground_reflection=exclude");
 
-  const bool want_direct = component != "diffuse";
-  const bool want_diffuse = component != "direct";
+  const bool all = component == "all";
+  const bool want_ground =
+      ground.included && (all || component == "global" || component == "ground_diffuse");
+  // The ground is lit by the global horizontal irradiance: it needs both of the model's parts.
+  const bool want_direct = component != "diffuse" || want_ground;
+  const bool want_diffuse = component != "direct" || want_ground;
   if (want_direct && !d.capabilities.sun_irradiance) {
     throw cannot_answer("component", d.id, "it does not compute the direct sun irradiance");
   }
@@ -86,29 +96,12 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
   const auto state = prepare_sun(context.models, m.model, sun);
   const PlaneOrientation plane{degrees_to_radians(tilt_deg),
                                degrees_to_radians(surface_azimuth_deg)};
-  const std::size_t n = model.wavelengths().size();
-
-  Spectrum direct_normal(n, 0.0), direct(n, 0.0), diffuse(n, 0.0);
-  double direct_on_plane = 0.0;  // direct / direct normal
-  if (want_direct) {
-    const SpectralSample s = model.sun_irradiance(*state, viewpoint);
-    require_answer(s.status,
-                   s.status == SampleStatus::viewpoint_unsupported ? "altitude" : sun.parameter,
-                   d.id);
-    direct_normal = s.value;
-    const double cos_incidence = dot(SkyDirection{plane.tilt_rad, plane.azimuth_rad}.unit_vector(),
-                                     SkyDirection{sun.sun}.unit_vector());
-    const double above_horizon = sun.sun.zenith_rad <= 0.5 * kPi ? 1.0 : 0.0;
-    direct_on_plane = std::max(0.0, cos_incidence) * above_horizon;
-    direct = direct_normal * direct_on_plane;
-  }
-  if (want_diffuse) {
-    const SpectralSample s = model.sky_irradiance(*state, viewpoint, plane);
-    require_answer(s.status,
-                   s.status == SampleStatus::viewpoint_unsupported ? "altitude" : sun.parameter,
-                   d.id);
-    diffuse = s.value;
-  }
+  const HorizontalIrradiance horizontal =
+      horizontal_irradiance(model, *state, viewpoint, want_direct, want_diffuse, sun.parameter);
+  const GroundReflection used{want_ground, ground.albedo};
+  const PlaneIrradiance on_plane =
+      plane_irradiance(model, *state, viewpoint, plane, horizontal,
+                       ground_albedo_spectrum(model, ground), used, want_diffuse, sun.parameter);
 
   // The broadband figures (api/irradiance/broadband_irradiance.h).
   const std::optional<std::string> broadband_unavailable = broadband_unavailable_reason(d);
@@ -119,20 +112,38 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
       .earth_sun_distance_factor = sun.unix_time_utc_s ? spctral2::earth_sun_distance_factor(
                                                              day_of_year_utc(*sun.unix_time_utc_s))
                                                        : 1.0};
-  std::optional<double> bb_direct_normal, bb_direct, bb_diffuse;
+  const XyzWeights xyz(model.wavelengths());
+  std::optional<double> bb_direct_normal, bb_direct, bb_diffuse, bb_ground, bb_global;
   if (!broadband_unavailable) {
+    const auto over_model_range = [&](const Spectrum& e) {
+      return ModelSpectrum{model.wavelengths(), m.indices, e};
+    };
+    const double above_horizon = sun.sun.zenith_rad <= 0.5 * kPi ? 1.0 : 0.0;
     if (want_direct) {
       bb_direct_normal =
-          broadband_direct_normal_w_m2({model.wavelengths(), m.indices, direct_normal}, conditions);
-      bb_direct = *bb_direct_normal * direct_on_plane;
+          broadband_direct_normal_w_m2(over_model_range(horizontal.direct_normal), conditions);
+      const double cos_incidence =
+          dot(SkyDirection{plane.tilt_rad, plane.azimuth_rad}.unit_vector(),
+              SkyDirection{sun.sun}.unit_vector());
+      bb_direct = *bb_direct_normal * std::max(0.0, cos_incidence) * above_horizon;
     }
     if (want_diffuse)
-      bb_diffuse = broadband_diffuse_w_m2({model.wavelengths(), m.indices, diffuse}, conditions);
+      bb_diffuse = broadband_diffuse_w_m2(over_model_range(on_plane.sky_diffuse), conditions);
+    if (want_ground) {
+      // The ground reflects the global horizontal: its model-range share of it (the albedo
+      // and view factor of plane_irradiance.h) applied to the broadband global horizontal.
+      const double global_horizontal_bb =
+          *bb_direct_normal * std::cos(sun.sun.zenith_rad) * above_horizon +
+          broadband_diffuse_w_m2(over_model_range(horizontal.diffuse), conditions);
+      const double global_horizontal =
+          integrated(horizontal.global, model, m.indices, xyz).irradiance_w_m2;
+      const double ground =
+          integrated(on_plane.ground_diffuse, model, m.indices, xyz).irradiance_w_m2;
+      bb_ground = global_horizontal > 0.0 ? ground / global_horizontal * global_horizontal_bb : 0.0;
+    }
   }
-  std::optional<double> bb_global;
-  if (bb_direct && bb_diffuse) bb_global = *bb_direct + *bb_diffuse;
+  if (bb_direct && bb_diffuse) bb_global = *bb_direct + *bb_diffuse + bb_ground.value_or(0.0);
 
-  const XyzWeights xyz(model.wavelengths());
   nlohmann::json body = {
       {"model", d.id},
       {"model_version", d.version},
@@ -142,7 +153,7 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
       {"integrated_range_nm",
        {model.wavelengths().lower_edge_nm(m.indices.front()),
         model.wavelengths().upper_edge_nm(m.indices.back())}},
-      {"ground_reflection", "excluded"}};
+      {"ground_reflection", ground_reflection_json(ground)}};
   if (broadband_unavailable) {
     body["broadband"] = nullptr;
     body["broadband_unavailable"] = *broadband_unavailable;
@@ -158,16 +169,19 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
          "extinction and SPCTRAL2's diffuse scaled to the model at the range ends"}};
   }
   if (spectral) body["wavelengths_nm"] = m.wavelengths_nm;
-  const bool all = component == "all";
   if (all || component == "direct") {
     body["direct_normal"] =
-        component_json(direct_normal, model, m.indices, xyz, spectral, bb_direct_normal);
-    body["direct"] = component_json(direct, model, m.indices, xyz, spectral, bb_direct);
+        component_json(horizontal.direct_normal, model, m.indices, xyz, spectral, bb_direct_normal);
+    body["direct"] = component_json(on_plane.direct, model, m.indices, xyz, spectral, bb_direct);
   }
   if (all || component == "diffuse")
-    body["diffuse"] = component_json(diffuse, model, m.indices, xyz, spectral, bb_diffuse);
+    body["diffuse"] =
+        component_json(on_plane.sky_diffuse, model, m.indices, xyz, spectral, bb_diffuse);
+  if (want_ground)
+    body["ground_diffuse"] =
+        component_json(on_plane.ground_diffuse, model, m.indices, xyz, spectral, bb_ground);
   if (all || component == "global")
-    body["global"] = component_json(direct + diffuse, model, m.indices, xyz, spectral, bb_global);
+    body["global"] = component_json(on_plane.global, model, m.indices, xyz, spectral, bb_global);
   add_quality_members(body, quality, m.served_quality);
   ApiResponse response = json_response(body);
   response.model_id = d.id;

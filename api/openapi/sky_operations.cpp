@@ -161,7 +161,7 @@ Json schemas() {
   },
   "Irradiance": {
     "type": "object",
-    "description": "direct = direct normal x max(0, cos incidence), 0 with the sun below the horizon; diffuse = the model's sky irradiance on the plane (ground reflection excluded); global = both. The components present follow component=.",
+    "description": "direct = direct normal x max(0, cos incidence), 0 with the sun below the horizon; diffuse = the model's sky irradiance on the plane; ground_diffuse = albedo x global horizontal x (1 - cos tilt) / 2 (an isotropic Lambertian ground; the albedo is ground_albedo, otherwise the model's ground albedo spectrum); global = direct + diffuse + ground_diffuse. The components present follow component= and ground_reflection=.",
     "required": ["model", "model_version", "quality", "served_quality", "quality_setting", "quality_error", "sun", "altitude_m", "plane", "integrated_range_nm", "ground_reflection"],
     "additionalProperties": false,
     "properties": {
@@ -181,7 +181,7 @@ Json schemas() {
         "properties": {"tilt_deg": {"type": "number"}, "surface_azimuth_deg": {"type": "number"}}
       },
       "integrated_range_nm": {"type": "array", "minItems": 2, "maxItems": 2, "items": {"type": "number"}},
-      "ground_reflection": {"type": "string", "enum": ["excluded"]},
+      "ground_reflection": {"$ref": "#/components/schemas/GroundReflection"},
       "broadband": {
         "type": ["object", "null"],
         "description": "How the broadband figures were computed; null when the model cannot go broadband.",
@@ -200,8 +200,54 @@ Json schemas() {
       "direct_normal": {"$ref": "#/components/schemas/IrradianceComponent"},
       "direct": {"$ref": "#/components/schemas/IrradianceComponent"},
       "diffuse": {"$ref": "#/components/schemas/IrradianceComponent"},
+      "ground_diffuse": {"$ref": "#/components/schemas/IrradianceComponent"},
       "global": {"$ref": "#/components/schemas/IrradianceComponent"}
     }
+  },
+  "GroundReflection": {
+    "type": "object",
+    "description": "How the ground's reflection enters tilted planes: model isotropic (albedo x global horizontal x (1 - cos tilt) / 2) with the albedo of ground_albedo (albedo_source ground_albedo) or the model's own ground albedo spectrum, the one its lit ground uses (albedo_source model: the atmosphere parameter albedo, grass by default); or excluded (ground_reflection=exclude).",
+    "required": ["model"],
+    "additionalProperties": false,
+    "properties": {
+      "model": {"type": "string", "enum": ["isotropic", "excluded"]},
+      "albedo": {"type": "number", "minimum": 0, "maximum": 1},
+      "albedo_source": {"type": "string", "enum": ["ground_albedo", "model"]}
+    }
+  },
+  "IrradianceSeries": {
+    "type": "object",
+    "description": "One row per step from start to end (both included), the values in the order of columns: time_utc, time_local (with tz), night, solar_zenith and solar_azimuth (apparent, degrees), ghi, dni, dhi (W/m2 over integrated_range_nm), illuminance (global horizontal, lx), then per plane poa_global, poa_direct, poa_diffuse (sky + ground, as pvlib), poa_sky_diffuse, poa_ground_diffuse (W/m2) and poa_illuminance (lx), each suffixed _<tilt>_<azimuth> as the plane was written. Night rows (sun zenith >= 90 degrees) hold zeros; a step the model could not answer holds nulls and is counted in unanswered_steps.",
+    "required": ["model", "model_version", "quality", "served_quality", "quality_setting", "quality_error", "lat", "lon", "altitude_m", "start", "step", "step_s", "steps", "tz", "planes", "integrated_range_nm", "ground_reflection", "sky_diffuse_on_planes", "columns", "rows", "unanswered_steps"],
+    "additionalProperties": false,
+    "properties": {
+      "model": {"type": "string"},
+      "model_version": {"type": "string"},
+      "quality": {"type": "string", "enum": ["draft", "standard", "reference"], "description": "As Irradiance."},
+      "served_quality": {"type": "string", "enum": ["draft", "standard", "reference"], "description": "As Irradiance."},
+      "quality_setting": {"type": "object", "additionalProperties": {"type": "number"}},
+      "quality_error": {"allOf": [{"$ref": "#/components/schemas/QualityError"}], "nullable": true},
+      "quality_overridden": {"type": "array", "items": {"type": "string"}},
+      "lat": {"type": "number"},
+      "lon": {"type": "number"},
+      "altitude_m": {"type": "number"},
+      "start": {"type": "string", "description": "The first step, UTC."},
+      "step": {"type": "string"},
+      "step_s": {"type": "integer"},
+      "steps": {"type": "integer"},
+      "tz": {"type": ["string", "null"]},
+      "planes": {"type": "array", "items": {"type": "object", "required": ["tilt_deg", "surface_azimuth_deg", "suffix"], "additionalProperties": false, "properties": {"tilt_deg": {"type": "number"}, "surface_azimuth_deg": {"type": "number"}, "suffix": {"type": "string"}}}},
+      "integrated_range_nm": {"type": "array", "minItems": 2, "maxItems": 2, "items": {"type": "number"}},
+      "ground_reflection": {"$ref": "#/components/schemas/GroundReflection"},
+      "sky_diffuse_on_planes": {"type": "string", "enum": ["per_step", "table"], "description": "per_step: the model's sky irradiance on each tilted plane at each step; table: interpolated (bilinear) in a table of the model's own values over the sun zenith (every 2 degrees) and its azimuth relative to the plane (every 10 degrees), built for the request when it has more daytime steps than the table has nodes (874)."},
+      "columns": {"type": "array", "items": {"type": "string"}},
+      "rows": {"type": "array", "items": {"type": "array", "items": {"type": ["string", "boolean", "number", "null"]}}},
+      "unanswered_steps": {"type": "integer", "minimum": 0}
+    }
+  },
+  "IrradianceSeriesCsv": {
+    "type": "string",
+    "description": "A header line with the columns of IrradianceSeries, then one line per step; null values are empty."
   },
   "SkyPatches": {
     "type": "object",
@@ -328,14 +374,17 @@ Json endpoint_parameters() {
     "example": "450,550,650"
   }
 })json");
-  p["wavelengths"]["description"] =
+  // Appended piece by piece: GCC 12 reports a false -Warray-bounds on the one-expression
+  // concatenation once this function is inlined.
+  std::string description =
       "Wavelengths, nm, each in (0, 100000] and increasing: a list (450,550,650) or "
       "start:stop:step (stop included). Absent: the model's default grid (the paper's 40 bins "
       "of 11.75 nm from 360 nm, those in the model's range). Values all on that grid are read "
       "from its tables; any other list builds tables on exactly those points (503 while they "
-      "are built). At most " +
-      std::to_string(limits.max_wavelengths) +
-      " (--max-wavelengths; above: 413); outside the model's spectral range: 422.";
+      "are built). At most ";
+  description += std::to_string(limits.max_wavelengths);
+  description += " (--max-wavelengths; above: 413); outside the model's spectral range: 422.";
+  p["wavelengths"]["description"] = std::move(description);
   return p;
 }
 
@@ -496,11 +545,13 @@ Json operations() {
     "operationId": "getIrradiance",
     "tags": ["sky"],
     "summary": "Irradiance on a plane",
-    "description": "Direct sun, diffuse sky (ground reflection excluded) and global irradiance on a horizontal or tilted plane: W/m2 over the model's answered grid, illuminance in lx, and spectra in W/(m2.nm) with spectral=true.",
+    "description": "Direct sun, diffuse sky, ground-reflected (isotropic ground) and global irradiance on a horizontal or tilted plane: W/m2 over the model's answered grid, illuminance in lx, and spectra in W/(m2.nm) with spectral=true.",
     "parameters": [
       {"name": "tilt", "in": "query", "required": false, "description": "Plane tilt from horizontal, degrees.", "schema": {"type": "number", "minimum": 0, "maximum": 180, "default": 0}},
       {"name": "surface_azimuth", "in": "query", "required": false, "description": "Azimuth of the plane's normal, degrees clockwise from North.", "schema": {"type": "number", "minimum": -360, "maximum": 360, "default": 180}},
-      {"name": "component", "in": "query", "required": false, "description": "Which components to answer (a model without sun or sky irradiance answers 422 for the components it lacks).", "schema": {"type": "string", "enum": ["all", "direct", "diffuse", "global"], "default": "all"}},
+      {"name": "component", "in": "query", "required": false, "description": "Which components to answer (a model without sun or sky irradiance answers 422 for the components it lacks; ground_diffuse needs both, the ground being lit by the global horizontal).", "schema": {"type": "string", "enum": ["all", "direct", "diffuse", "ground_diffuse", "global"], "default": "all"}},
+      {"name": "ground_reflection", "in": "query", "required": false, "description": "include: add the isotropic ground's reflection (ground_diffuse) to global; exclude: leave it out.", "schema": {"type": "string", "enum": ["include", "exclude"], "default": "include"}},
+      {"name": "ground_albedo", "in": "query", "required": false, "description": "The ground's albedo for ground_diffuse; absent: the model's ground albedo spectrum (the atmosphere parameter albedo, grass by default). Not with ground_reflection=exclude.", "schema": {"type": "number", "minimum": 0, "maximum": 1}},
       {"name": "spectral", "in": "query", "required": false, "description": "Add each component's spectrum and the wavelengths.", "schema": {"type": "boolean", "default": false}},
       {"name": "precipitable_water_cm", "in": "query", "required": false, "description": "Precipitable water of the vertical column, cm: the water vapour absorption of the broadband figures (default: ASTM G-173's reference atmosphere).", "schema": {"type": "number", "minimum": 0, "maximum": 10, "default": 1.42}},
       {"name": "ozone_atm_cm", "in": "query", "required": false, "description": "Ozone column, atm-cm (1 atm-cm = 1000 DU): the ozone absorption of the broadband figures (default: ASTM G-173's reference atmosphere).", "schema": {"type": "number", "minimum": 0, "maximum": 1, "default": 0.34}}
@@ -510,8 +561,33 @@ Json operations() {
         "description": "Irradiance.",
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/Irradiance"},
-          "example": {"altitude_m": 0.0, "diffuse": {"model_range_irradiance_w_m2": 180.52086377322016, "irradiance_w_m2": 180.52086377322016, "broadband_irradiance_w_m2": null, "illuminance_lx": 28493.223923522513}, "direct": {"model_range_irradiance_w_m2": 479.46653007527397, "irradiance_w_m2": 479.46653007527397, "broadband_irradiance_w_m2": null, "illuminance_lx": 88658.85993633908}, "direct_normal": {"model_range_irradiance_w_m2": 517.348496685935, "irradiance_w_m2": 517.348496685935, "broadband_irradiance_w_m2": null, "illuminance_lx": 95663.66999330047}, "global": {"model_range_irradiance_w_m2": 659.987393848494, "irradiance_w_m2": 659.987393848494, "broadband_irradiance_w_m2": null, "illuminance_lx": 117152.08385986158}, "ground_reflection": "excluded", "integrated_range_nm": [360.0, 830.0], "model": "preetham", "model_version": "1", "quality": "standard", "quality_error": {"against": "reference", "max_relative": 0.0, "p95_relative": 0.0}, "quality_setting": {}, "served_quality": "standard", "plane": {"surface_azimuth_deg": 180.0, "tilt_deg": 30.0}, "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}, "broadband": null, "broadband_unavailable": "preetham is a fit over the visible range whose atmosphere is a turbidity, not an extinction the 300..4000 nm extension can continue (docs/http-api.md \"Broadband irradiance\")"}
+          "example": {"altitude_m": 0.0, "diffuse": {"model_range_irradiance_w_m2": 180.52086377322016, "irradiance_w_m2": 180.52086377322016, "broadband_irradiance_w_m2": null, "illuminance_lx": 28493.223923522513}, "direct": {"model_range_irradiance_w_m2": 479.46653007527397, "irradiance_w_m2": 479.46653007527397, "broadband_irradiance_w_m2": null, "illuminance_lx": 88658.85993633908}, "direct_normal": {"model_range_irradiance_w_m2": 517.348496685935, "irradiance_w_m2": 517.348496685935, "broadband_irradiance_w_m2": null, "illuminance_lx": 95663.66999330047}, "global": {"model_range_irradiance_w_m2": 659.987393848494, "irradiance_w_m2": 659.987393848494, "broadband_irradiance_w_m2": null, "illuminance_lx": 117152.08385986158}, "ground_diffuse": {"model_range_irradiance_w_m2": 0.0, "irradiance_w_m2": 0.0, "broadband_irradiance_w_m2": null, "illuminance_lx": 0.0}, "ground_reflection": {"albedo_source": "model", "model": "isotropic"}, "integrated_range_nm": [360.0, 830.0], "model": "preetham", "model_version": "1", "quality": "standard", "quality_error": {"against": "reference", "max_relative": 0.0, "p95_relative": 0.0}, "quality_setting": {}, "served_quality": "standard", "plane": {"surface_azimuth_deg": 180.0, "tilt_deg": 30.0}, "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}, "broadband": null, "broadband_unavailable": "preetham is a fit over the visible range whose atmosphere is a turbidity, not an extinction the 300..4000 nm extension can continue (docs/http-api.md \"Broadband irradiance\")"}
         }}
+      }
+    }
+  },
+  "getIrradianceSeries": {
+    "operationId": "getIrradianceSeries",
+    "tags": ["sky"],
+    "summary": "Irradiance time series on several planes",
+    "description": "The irradiance of one place from start to end every step (docs/building-energy.md): the sun of each step by NREL SPA, the horizontal ghi, dni, dhi and illuminance and, per plane, pvlib's poa_global, poa_direct, poa_diffuse (sky + ground), poa_sky_diffuse (the model's own anisotropic sky), poa_ground_diffuse (isotropic ground) and poa_illuminance. Night steps are rows of zeros with night true. Checked completely before the first byte, then streamed (chunked) as computed. At most 52704 steps (a leap year every 10 minutes; above: 413 naming step); models that prepare each sun (Haber, Nishita96) at most 96 daytime steps (413 naming end).",
+    "parameters": [
+      {"name": "start", "in": "query", "required": true, "description": "First instant, ISO 8601 with an offset or Z, or a local time in tz.", "schema": {"type": "string"}, "example": "2024-01-01T00:00:00"},
+      {"name": "end", "in": "query", "required": true, "description": "Last instant (included when a whole number of steps from start), as start.", "schema": {"type": "string"}, "example": "2024-12-31T23:00:00"},
+      {"name": "tz", "in": "query", "required": false, "description": "IANA time zone of start and end without offset (daylight saving time included) and of the time_local column.", "schema": {"type": "string"}, "example": "Europe/Paris"},
+      {"name": "step", "in": "query", "required": false, "description": "ISO 8601 duration between steps: days, hours, minutes, seconds (PT10M, PT1H, P1D).", "schema": {"type": "string", "default": "PT1H"}},
+      {"name": "planes", "in": "query", "required": false, "description": "Planes besides the horizontal: tilt:azimuth pairs in degrees separated by commas (tilt in [0, 180] from horizontal, azimuth of the normal clockwise from North), at most 16.", "schema": {"type": "string"}, "example": "30:180,90:180,90:90"},
+      {"name": "ground_reflection", "in": "query", "required": false, "description": "include: the isotropic ground's reflection on the planes (poa_ground_diffuse); exclude: 0.", "schema": {"type": "string", "enum": ["include", "exclude"], "default": "include"}},
+      {"name": "ground_albedo", "in": "query", "required": false, "description": "The ground's albedo; absent: the model's ground albedo spectrum.", "schema": {"type": "number", "minimum": 0, "maximum": 1}},
+      {"name": "format", "in": "query", "required": false, "description": "json, or csv (a header line, then one line per step).", "schema": {"type": "string", "enum": ["json", "csv"], "default": "json"}}
+    ],
+    "responses": {
+      "200": {
+        "description": "The series.",
+        "content": {
+          "application/json": {"schema": {"$ref": "#/components/schemas/IrradianceSeries"}},
+          "text/csv": {"schema": {"$ref": "#/components/schemas/IrradianceSeriesCsv"}}
+        }
       }
     }
   },
@@ -636,6 +712,20 @@ Json operations() {
        {"schema", {{"type", "string"}, {"enum", {"json", "csv"}}, {"default", "json"}}}});
   with_sky(ops["postRadiance"], {}, false);
   with_sky(ops["getIrradiance"], {}, true);
+  {
+    // The series: the model, the place (time excluded: start, end, step) and the model's
+    // parameters, then its own.
+    Json& series = ops["getIrradianceSeries"];
+    Json parameters = Json::array();
+    const Json components = sky_parameter_components();
+    for (const auto& [key, parameter] : components.items()) {
+      if (key != "time" && key != "sun_zenith" && key != "sun_azimuth")
+        parameters.push_back(ref("parameters", key));
+    }
+    for (const auto& own : series["parameters"]) parameters.push_back(own);
+    series["parameters"] = std::move(parameters);
+    add_sky_errors(series, true);
+  }
   with_sky(ops["getRgb"], {"view_zenith", "view_azimuth"}, true);
   with_sky(ops["postRgb"], {}, false);
   with_sky(ops["getSkydome"], {}, true);

@@ -27,6 +27,7 @@ constexpr std::array kRoutes = {
   Route{"GET",    "/v1/radiance",                      "getRadiance",         radiance,             none,   kOpen,  deterministic},
   Route{"POST",   "/v1/radiance",                      "postRadiance",        radiance,             json,   kOpen,  no_store},
   Route{"GET",    "/v1/irradiance",                    "getIrradiance",       irradiance,           none,   kOpen,  deterministic},
+  Route{"GET",    "/v1/irradiance/series",             "getIrradianceSeries", irradiance_series,    none,   kOpen,  deterministic},
   Route{"GET",    "/v1/rgb",                           "getRgb",              rgb,                  none,   kOpen,  deterministic},
   Route{"POST",   "/v1/rgb",                           "postRgb",             rgb,                  json,   kOpen,  no_store},
   Route{"GET",    "/v1/skydome",                       "getSkydome",          get_skydome,          none,   kOpen,  deterministic},

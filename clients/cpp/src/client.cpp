@@ -120,7 +120,36 @@ IrradianceResult Client::irradiance(const IrradianceRequest& request) const {
   if (request.spectral) query.add("spectral", true);
   query.add("precipitable_water_cm", request.precipitable_water_cm);
   query.add("ozone_atm_cm", request.ozone_atm_cm);
+  query.add("ground_reflection", request.ground_reflection);
+  query.add("ground_albedo", request.ground_albedo);
   return detail::irradiance_of(json_of(transport_->get(query.target("/v1/irradiance"))));
+}
+
+IrradianceSeriesResult Client::irradiance_series(const IrradianceSeriesRequest& request) const {
+  QueryText query;
+  query.add("model", request.model);
+  query.add("lat", request.latitude);
+  query.add("lon", request.longitude);
+  query.add("start", request.start);
+  query.add("end", request.end);
+  query.add("tz", request.tz);
+  query.add("step", request.step);
+  if (!request.planes.empty()) {
+    std::string planes;
+    for (const auto& plane : request.planes) {
+      if (!planes.empty()) planes += ',';
+      planes += detail::number_list_text({plane.tilt_deg}) + ':' +
+                detail::number_list_text({plane.surface_azimuth_deg});
+    }
+    query.add("planes", planes);
+  }
+  query.add("altitude", request.altitude_m);
+  query.add("ground_reflection", request.ground_reflection);
+  query.add("ground_albedo", request.ground_albedo);
+  for (const auto& [name, value] : request.parameters)
+    query.add(name, detail::parameter_text(value));
+  return detail::irradiance_series_of(
+      json_of(transport_->get(query.target("/v1/irradiance/series"))));
 }
 
 RgbResult Client::rgb(const RgbRequest& request) const {

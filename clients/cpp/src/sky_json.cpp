@@ -1,6 +1,8 @@
 // The sky endpoints' JSON (sky_json.h).
 #include "sky_json.h"
 
+#include <cmath>
+
 #include "json_fields.h"
 #include "query_text.h"
 
@@ -196,8 +198,39 @@ IrradianceResult irradiance_of(const nlohmann::json& json) {
   result.direct_normal = component_of(json, "direct_normal");
   result.direct = component_of(json, "direct");
   result.diffuse = component_of(json, "diffuse");
+  result.ground_diffuse = component_of(json, "ground_diffuse");
   result.global = component_of(json, "global");
   result.broadband_unavailable = optional_member<std::string>(json, "broadband_unavailable");
+  return result;
+}
+
+IrradianceSeriesResult irradiance_series_of(const nlohmann::json& json) {
+  IrradianceSeriesResult result;
+  result.model = member<std::string>(json, "model");
+  result.columns = member<std::vector<std::string>>(json, "columns");
+  result.unanswered_steps = member<std::int64_t>(json, "unanswered_steps");
+  const nlohmann::json rows = member<nlohmann::json>(json, "rows");
+  for (const nlohmann::json& row : rows) {
+    if (!row.is_array() || row.size() != result.columns.size())
+      throw Error(0, "invalid_answer", "a row of the series does not match its columns");
+    for (std::size_t k = 0; k < result.columns.size(); ++k) {
+      const std::string& name = result.columns[k];
+      const nlohmann::json& cell = row[k];
+      try {
+        if (name == "time_utc") {
+          result.time_utc.push_back(cell.get<std::string>());
+        } else if (name == "time_local") {
+          result.time_local.push_back(cell.get<std::string>());
+        } else if (name == "night") {
+          result.night.push_back(cell.get<bool>());
+        } else {
+          result.values[name].push_back(cell.is_null() ? std::nan("") : cell.get<double>());
+        }
+      } catch (const nlohmann::json::exception& e) {
+        throw Error(0, "invalid_answer", "column " + name + ": " + e.what());
+      }
+    }
+  }
   return result;
 }
 

@@ -13,14 +13,15 @@ from .data_results import (Dataset, DatasetSummary, Evaluation, EvaluationSummar
 from .errors import ClearskyError
 from .exr_image import SkydomeImage, read_skydome
 from .retry import RetryNotice, RetryPolicy
-from .sky_results import (Irradiance, IrradianceComponent, ModelInfo, ModelParameter, Radiance,
-                          Rgb, SkydomeFile, Sun, SunUsed)
+from .sky_results import (Irradiance, IrradianceComponent, IrradianceSeries, ModelInfo,
+                          ModelParameter, Radiance, Rgb, SkydomeFile, Sun, SunUsed)
 
 __version__ = "0.1.0"
 
 __all__ = [
     "Client", "ClearskyError", "RetryPolicy", "RetryNotice", "Page", "Sun", "SunUsed",
     "ModelInfo", "ModelParameter", "Radiance", "Rgb", "Irradiance", "IrradianceComponent",
+    "IrradianceSeries",
     "SkydomeFile", "SkydomeImage", "read_skydome", "DatasetSummary", "Dataset", "Import",
     "EvaluationTicket", "EvaluationSummary", "Evaluation", "Fit", "Job",
 ]

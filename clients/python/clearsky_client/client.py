@@ -15,8 +15,9 @@ from .errors import ClearskyError
 from .exr_image import SkydomeImage, read_skydome
 from .retry import RetryPolicy
 from .sky_query import (Number, ParameterValue, Time, View, Wavelengths, as_query,
-                        format_time, sky_parameters, views_body)
-from .sky_results import Irradiance, ModelInfo, Radiance, Rgb, SkydomeFile, Sun
+                        format_time, format_value, sky_parameters, views_body)
+from .sky_results import (Irradiance, IrradianceSeries, ModelInfo, Radiance, Rgb, SkydomeFile,
+                          Sun)
 from .transport import Answer, Transport
 from .upload_progress import Progress, ProgressFile
 
@@ -144,13 +145,18 @@ class Client:
                    sun_azimuth: Optional[Number] = None,
                    lat: Optional[Union[Number, str]] = None,
                    lon: Optional[Union[Number, str]] = None, time: Optional[Time] = None,
+                   ground_reflection: Optional[str] = None,
+                   ground_albedo: Optional[Number] = None,
                    quality: Optional[str] = None,
                    precipitable_water_cm: Optional[Number] = None,
                    ozone_atm_cm: Optional[Number] = None,
                    **parameters: ParameterValue) -> Irradiance:
-        """GET /v1/irradiance: direct, diffuse and global irradiance (W/m2) and illuminance (lx)
-        on a plane (tilt from horizontal and the azimuth of its normal, degrees; horizontal by
-        default). component: all, direct, diffuse or global; spectral=True adds the spectra.
+        """GET /v1/irradiance: direct, diffuse (sky), ground-reflected and global irradiance
+        (W/m2) and illuminance (lx) on a plane (tilt from horizontal and the azimuth of its
+        normal, degrees; horizontal by default). component: all, direct, diffuse,
+        ground_diffuse or global; spectral=True adds the spectra. ground_reflection: include
+        (default) or exclude; ground_albedo: the isotropic ground's albedo (default: the
+        model's ground albedo spectrum).
         Each component's broadband_irradiance_w_m2 (300..4000 nm) uses the absorbers
         precipitable_water_cm and ozone_atm_cm (defaults 1.42 cm and 0.34 atm-cm).
 
@@ -162,7 +168,8 @@ class Client:
         query = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time, None, parameters,
                                quality)
         for name, value in (("tilt", tilt), ("surface_azimuth", surface_azimuth),
-                            ("component", component),
+                            ("component", component), ("ground_reflection", ground_reflection),
+                            ("ground_albedo", ground_albedo),
                             ("precipitable_water_cm", precipitable_water_cm),
                             ("ozone_atm_cm", ozone_atm_cm)):
             if value is not None:
@@ -170,6 +177,38 @@ class Client:
         if spectral:
             query["spectral"] = True
         return Irradiance.from_json(self._get("/v1/irradiance", query).json())
+
+    def irradiance_series(self, model: str, lat: Union[Number, str], lon: Union[Number, str],
+                          start: Time, end: Time, *, step: Optional[str] = None,
+                          tz: Optional[str] = None,
+                          planes: Optional[Sequence[Sequence[Number]]] = None,
+                          ground_reflection: Optional[str] = None,
+                          ground_albedo: Optional[Number] = None,
+                          **parameters: ParameterValue) -> IrradianceSeries:
+        """GET /v1/irradiance/series: the irradiance of a place from start to end (both ISO
+        8601 with an offset, aware datetimes, or local times in ``tz``, an IANA zone) every
+        ``step`` (ISO 8601: "PT1H", "PT10M"), on the horizontal and on ``planes`` ((tilt,
+        azimuth) pairs, degrees), one numpy array per pvlib column (docs/building-energy.md
+        "Irradiance time series"): ``ghi``, ``dni``, ``dhi``, ``poa_global_30_180``, ...
+
+        Example:
+            >>> year = client.irradiance_series("preetham", 48.85, 2.35, "2024-01-01T00:00:00",
+            ...                                 "2024-12-31T23:00:00", tz="Europe/Paris",
+            ...                                 planes=[(30, 180)])
+            >>> year["poa_global_30_180"].shape
+            (8784,)
+        """
+        query: Dict[str, ParameterValue] = {"model": model, "lat": lat, "lon": lon,
+                                            "start": format_time(start), "end": format_time(end)}
+        if planes is not None:
+            query["planes"] = ",".join(f"{format_value(tilt)}:{format_value(azimuth)}"
+                                       for tilt, azimuth in planes)
+        for name, value in (("step", step), ("tz", tz), ("ground_reflection", ground_reflection),
+                            ("ground_albedo", ground_albedo)):
+            if value is not None:
+                query[name] = value
+        query.update(parameters)
+        return IrradianceSeries.from_json(self._get("/v1/irradiance/series", query).json())
 
     def rgb(self, model: str, view_zenith: Number, view_azimuth: Number, *,
             method: Optional[str] = None, sun_zenith: Optional[Number] = None,

@@ -204,6 +204,8 @@ class Irradiance:
     diffuse: Optional[IrradianceComponent]
     global_: Optional[IrradianceComponent]
     raw: Dict[str, Any] = field(repr=False)
+    # The isotropic ground's reflection on the plane (None with ground_reflection="exclude").
+    ground_diffuse: Optional[IrradianceComponent] = None
 
     @property
     def quality(self) -> str:
@@ -231,7 +233,43 @@ class Irradiance:
                    j["plane"]["tilt_deg"], j["plane"]["surface_azimuth_deg"], (low, high),
                    None if wavelengths is None else np.asarray(wavelengths, dtype=np.float64),
                    component("direct_normal"), component("direct"), component("diffuse"),
-                   component("global"), j)
+                   component("global"), j, component("ground_diffuse"))
+
+
+@dataclass(frozen=True)
+class IrradianceSeries:
+    """GET /v1/irradiance/series: one numpy array per column (``columns``, pvlib's names:
+    ``ghi``, ``dni``, ``dhi``, ``poa_global_30_180``, ...; times as ISO 8601 strings, ``night``
+    as booleans, a value the model could not answer as NaN), and the answer's other members
+    in ``raw`` (without its rows)."""
+
+    columns: Dict[str, np.ndarray]
+    planes: List[Dict[str, Any]]
+    unanswered_steps: int
+    raw: Dict[str, Any] = field(repr=False)
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        return self.columns[name]
+
+    def __len__(self) -> int:
+        return int(self.raw["steps"])
+
+    @classmethod
+    def from_json(cls, j: Dict[str, Any]) -> "IrradianceSeries":
+        names = j["columns"]
+        rows = j["rows"]
+        columns: Dict[str, np.ndarray] = {}
+        for k, name in enumerate(names):
+            values = [row[k] for row in rows]
+            if name.startswith("time_"):
+                columns[name] = np.asarray(values, dtype=object)
+            elif name == "night":
+                columns[name] = np.asarray(values, dtype=bool)
+            else:
+                columns[name] = np.asarray([np.nan if v is None else v for v in values],
+                                           dtype=np.float64)
+        raw = {key: value for key, value in j.items() if key != "rows"}
+        return cls(columns, j["planes"], j["unanswered_steps"], raw)
 
 
 @dataclass(frozen=True)

@@ -43,7 +43,8 @@ READMES = [os.path.join(REPOSITORY, "clients", "python", "README.md"),
 CLIENT_METHODS = {
     "healthz": "health", "readyz": "readiness", "metrics": "metrics", "openapi": "openapi",
     "listModels": "models", "getSun": "sun", "getRadiance": "radiance",
-    "postRadiance": "radiance_batch", "getIrradiance": "irradiance", "getRgb": "rgb",
+    "postRadiance": "radiance_batch", "getIrradiance": "irradiance",
+    "getIrradianceSeries": "irradiance_series", "getRgb": "rgb",
     "postRgb": "rgb_batch", "getSkydome": "skydome", "getSkyPatches": "sky_patches", "listDatasets": "list_datasets",
     "importDataset": "upload_dataset", "getDataset": "get_dataset",
     "deleteDataset": "delete_dataset", "listImports": "list_imports", "getImport": "get_import",
@@ -188,10 +189,19 @@ class ClientAgainstWriter(unittest.TestCase):
         plane = self.client.irradiance("preetham", tilt=30, surface_azimuth=180, spectral=True,
                                        **SUN)
         self.assertEqual((plane.tilt_deg, plane.surface_azimuth_deg), (30.0, 180.0))
-        # Global = direct + diffuse (ground reflection excluded: docs/http-api.md).
+        # Global = direct + sky diffuse + ground diffuse (docs/building-energy.md).
         self.assertAlmostEqual(plane.global_.irradiance_w_m2,
-                               plane.direct.irradiance_w_m2 + plane.diffuse.irradiance_w_m2,
+                               plane.direct.irradiance_w_m2 + plane.diffuse.irradiance_w_m2
+                               + plane.ground_diffuse.irradiance_w_m2,
                                delta=1e-9 * plane.global_.irradiance_w_m2)
+        self.assertGreater(plane.ground_diffuse.irradiance_w_m2, 0)
+        wall = self.client.irradiance("preetham", tilt=90, ground_albedo=0.25, **SUN)
+        flat = self.client.irradiance("preetham", **SUN)
+        self.assertAlmostEqual(wall.ground_diffuse.irradiance_w_m2,
+                               0.25 * flat.global_.irradiance_w_m2 / 2,
+                               delta=1e-9 * flat.global_.irradiance_w_m2)
+        without = self.client.irradiance("preetham", tilt=90, ground_reflection="exclude", **SUN)
+        self.assertIsNone(without.ground_diffuse)
         self.assertEqual(plane.global_.spectral_w_m2_nm.shape, plane.wavelengths_nm.shape)
         diffuse = self.client.irradiance("preetham", component="diffuse", **SUN)
         self.assertIsNone(diffuse.direct)
@@ -203,6 +213,30 @@ class ClientAgainstWriter(unittest.TestCase):
         self.assertIsNone(dry.global_.broadband_irradiance_w_m2)
         self.assertIn("turbidity", dry.broadband_unavailable)
         self.assertEqual(dry.global_.model_range_irradiance_w_m2, dry.global_.irradiance_w_m2)
+
+    def test_irradiance_series(self) -> None:
+        # Paris on the day clocks go forward: local midnight to 06:00 is five hours.
+        day = self.client.irradiance_series("preetham", 48.85, 2.35, "2024-03-31T00:00:00",
+                                            "2024-03-31T23:00:00", tz="Europe/Paris",
+                                            planes=[(30, 180), (90, 90)], ground_albedo=0.2)
+        self.assertEqual(len(day), 23)
+        self.assertEqual(day["time_local"][3], "2024-03-31T04:00:00+02:00")
+        self.assertTrue(day["night"][0])
+        self.assertEqual(day["ghi"][0], 0.0)
+        up = ~day["night"]
+        self.assertGreater(day["ghi"][up].min(), 0.0)
+        np.testing.assert_allclose(day["poa_ground_diffuse_90_90"][up], 0.2 * day["ghi"][up] / 2,
+                                   rtol=1e-12)
+        np.testing.assert_allclose(day["poa_global_30_180"],
+                                   day["poa_direct_30_180"] + day["poa_diffuse_30_180"],
+                                   rtol=1e-12, atol=1e-9)
+        self.assertEqual(day.unanswered_steps, 0)
+        self.assertRefused(lambda: self.client.irradiance_series(
+            "preetham", 48.85, 2.35, "2024-01-01T00:00:00Z", "2025-12-31T00:00:00Z",
+            step="PT10M"), 413, "too_large", "step")
+        self.assertRefused(lambda: self.client.irradiance_series(
+            "preetham", 48.85, 2.35, "2024-01-01T00:00:00Z", "2024-01-02T00:00:00Z",
+            planes=[(200, 180)]), 400, "invalid_parameter", "planes")
 
     def test_sky_patches(self) -> None:
         vector = self.client.sky_patches("preetham", output="luminance", **SUN)

@@ -32,7 +32,7 @@ TEST(RouteTable, OneRowPerRouteAndOperation) {
     const RouteMatch match = match_route(route.method, path);
     EXPECT_EQ(match.route, &route) << path;
   }
-  EXPECT_EQ(routes().size(), 32u);
+  EXPECT_EQ(routes().size(), 33u);
 }
 
 TEST(RouteTable, WritesNeedTheTokenAndAreNeverStored) {

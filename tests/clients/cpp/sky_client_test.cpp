@@ -123,6 +123,63 @@ TEST_F(SkyClient, IrradianceOnATiltedPlane) {
   EXPECT_FALSE(absorbed.broadband_unavailable->empty());
 }
 
+TEST_F(SkyClient, IrradianceWithTheGroundsReflection) {
+  IrradianceRequest wall = sky(IrradianceRequest{});
+  wall.tilt_deg = 90;
+  wall.ground_albedo = 0.3;
+  const IrradianceResult with_ground = client().irradiance(wall);
+  const IrradianceResult flat = client().irradiance(sky(IrradianceRequest{}));
+  ASSERT_TRUE(with_ground.ground_diffuse.has_value());
+  ASSERT_TRUE(flat.global.has_value());
+  // An isotropic ground on a vertical plane: albedo x global horizontal / 2.
+  EXPECT_NEAR(with_ground.ground_diffuse->irradiance_w_m2, 0.3 * flat.global->irradiance_w_m2 / 2,
+              1e-9 * flat.global->irradiance_w_m2);
+  wall.ground_albedo.reset();
+  wall.ground_reflection = "exclude";
+  EXPECT_FALSE(client().irradiance(wall).ground_diffuse.has_value());
+}
+
+TEST_F(SkyClient, IrradianceSeriesOfADayOnTwoPlanes) {
+  IrradianceSeriesRequest request;
+  request.model = "preetham";
+  request.latitude = "48.85";
+  request.longitude = "2.35";
+  request.start = "2024-10-27T00:00:00";
+  request.end = "2024-10-27T23:00:00";
+  request.tz = "Europe/Paris";
+  request.planes = {{30, 180}, {90, 90}};
+  request.ground_albedo = 0.2;
+  const IrradianceSeriesResult series = client().irradiance_series(request);
+  // The day clocks go back in Paris has 25 local hours: 00:00 to 23:00 is 24 hours, 25 rows.
+  ASSERT_EQ(series.time_utc.size(), 25u);
+  ASSERT_EQ(series.time_local.size(), 25u);
+  EXPECT_EQ(series.time_local[2], "2024-10-27T02:00:00+02:00");
+  EXPECT_EQ(series.time_local[3], "2024-10-27T02:00:00+01:00");
+  EXPECT_EQ(series.unanswered_steps, 0);
+  const auto& ghi = series.values.at("ghi");
+  const auto& ground = series.values.at("poa_ground_diffuse_90_90");
+  std::size_t days = 0;
+  for (std::size_t i = 0; i < ghi.size(); ++i) {
+    if (series.night[i]) {
+      EXPECT_EQ(ghi[i], 0.0);
+      continue;
+    }
+    ++days;
+    EXPECT_NEAR(ground[i], 0.2 * ghi[i] / 2, 1e-9 * ghi[i]);
+  }
+  EXPECT_GT(days, 6u);
+  EXPECT_TRUE(series.values.count("poa_global_30_180"));
+
+  request.step = "PT1S";
+  try {
+    client().irradiance_series(request);
+    FAIL() << "a day every second was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), 413);
+    EXPECT_EQ(e.parameter(), "step");
+  }
+}
+
 TEST_F(SkyClient, RgbOfOneViewAndOfABatchAgree) {
   RgbRequest one = sky(RgbRequest{});
   one.view = {45, 90};

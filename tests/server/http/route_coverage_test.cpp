@@ -25,6 +25,8 @@ const std::map<std::string_view, std::pair<std::string, std::string>> kExamples 
     {"postRgb", {"", R"({"model":"testsky","sun_zenith":40,"sun_azimuth":100,"views":[[60,10]]})"}},
     {"getSkydome", {"?model=testsky&sun_zenith=40&sun_azimuth=100&size=16", ""}},
     {"getSkyPatches", {"?model=testsky&sun_zenith=40&sun_azimuth=100", ""}},
+    {"getIrradianceSeries",
+     {"?model=testsky&lat=45&lon=5&start=2024-06-21T10:00:00Z&end=2024-06-21T12:00:00Z", ""}},
     {"importDataset", {"?name=d", "not an archive"}},
     {"createEvaluation", {"", R"({"models": ["preetham"], "dataset": "d"})"}},
     {"createFit", {"", R"({"dataset": "d", "model": "preetham"})"}},

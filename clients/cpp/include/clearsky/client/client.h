@@ -68,6 +68,7 @@ class Client {
   RadianceResult radiance(const RadianceRequest& request) const;
   RadianceResult radiance(const RadianceBatchRequest& request) const;
   IrradianceResult irradiance(const IrradianceRequest& request) const;
+  IrradianceSeriesResult irradiance_series(const IrradianceSeriesRequest& request) const;
   RgbResult rgb(const RgbRequest& request) const;
   RgbResult rgb(const RgbBatchRequest& request) const;
   // The image is written to `out` chunk by chunk as it arrives, never held whole. A refusal

@@ -147,8 +147,13 @@ struct RadianceResult {
 struct IrradianceRequest : SkyQuery {
   std::optional<double> tilt_deg;
   std::optional<double> surface_azimuth_deg;
-  std::optional<std::string> component;  // "all" (default), "direct", "diffuse", "global"
-  bool spectral = false;                 // add each component's spectrum
+  // "all" (default), "direct", "diffuse", "ground_diffuse", "global"
+  std::optional<std::string> component;
+  bool spectral = false;  // add each component's spectrum
+  // "include" (default) or "exclude": the isotropic ground's reflection on the plane.
+  std::optional<std::string> ground_reflection;
+  // The ground's albedo in [0, 1]; absent: the model's ground albedo spectrum.
+  std::optional<double> ground_albedo;
   // The absorbers of the broadband figures (server defaults: 1.42 cm, 0.34 atm-cm).
   std::optional<double> precipitable_water_cm;
   std::optional<double> ozone_atm_cm;
@@ -173,9 +178,43 @@ struct IrradianceResult {
   std::array<double, 2> integrated_range_nm{};
   std::vector<double> wavelengths_nm;  // with spectral=true
   // The components present follow IrradianceRequest::component.
-  std::optional<IrradianceComponent> direct_normal, direct, diffuse, global;
+  // ground_diffuse: albedo x global horizontal x (1 - cos tilt) / 2; global includes it.
+  std::optional<IrradianceComponent> direct_normal, direct, diffuse, ground_diffuse, global;
   // Why there are no broadband figures (empty when there are).
   std::optional<std::string> broadband_unavailable;
+};
+
+// GET /v1/irradiance/series: a place from start to end every step, on the horizontal and on
+// planes (docs/building-energy.md "Irradiance time series").
+struct IrradianceSeriesRequest {
+  std::string model;
+  std::string latitude;   // degrees North, decimal or DMS
+  std::string longitude;  // degrees East, decimal or DMS
+  std::string start;      // ISO 8601 with an offset or Z, or a local time in tz
+  std::string end;
+  std::optional<std::string> tz;    // IANA zone ("Europe/Paris")
+  std::optional<std::string> step;  // ISO 8601 duration, "PT1H" (default), "PT10M"
+  struct Plane {
+    double tilt_deg = 0;
+    double surface_azimuth_deg = 180;
+  };
+  std::vector<Plane> planes;
+  std::optional<double> altitude_m;
+  std::optional<std::string> ground_reflection;  // "include" (default) or "exclude"
+  std::optional<double> ground_albedo;
+  Parameters parameters;  // the model's
+};
+// One column per name of `columns` (pvlib's: ghi, dni, dhi, poa_global_30_180, ...): the
+// times as text, night as 0/1 in `values`, a value the model could not answer as NaN.
+struct IrradianceSeriesResult {
+  std::string model;
+  std::vector<std::string> columns;
+  std::vector<std::string> time_utc;
+  std::vector<std::string> time_local;  // with tz
+  std::vector<bool> night;
+  // Every numeric column by name (solar_zenith, ghi, poa_global_30_180, ...).
+  std::map<std::string, std::vector<double>> values;
+  std::int64_t unanswered_steps = 0;
 };
 
 // GET /v1/rgb (one view) and POST /v1/rgb (a batch): linear sRGB, radiometric
