@@ -33,6 +33,24 @@ double half_chord(double r, double c) { return safe_sqrt((r - c) * (r + c)); }
 
 }  // namespace
 
+std::vector<double> Nishita93Tables::sphere_radii_m(const AtmosphereParameters& atmosphere,
+                                                    int spheres) {
+  if (spheres < 2) throw InvalidInput("spheres", "must be >= 2");
+  const double r_ground = atmosphere.earth_radius_m, r_top = atmosphere.top_radius_m;
+  const double h_r = atmosphere.rayleigh_scale_height_m;
+  const double density_step = std::exp(-(r_top - r_ground) / h_r) - 1.0;
+  const auto n_s = static_cast<std::size_t>(spheres);
+  std::vector<double> radii(n_s);
+  for (std::size_t i = 0; i < n_s; ++i) {
+    const double x = static_cast<double>(i) / static_cast<double>(n_s - 1);
+    // The end spheres exactly on the ground and the top, whatever the rounding of the log.
+    radii[i] = i == 0         ? r_ground
+               : i + 1 == n_s ? r_top
+                              : r_ground - h_r * std::log1p(density_step * x);
+  }
+  return radii;
+}
+
 Nishita93Tables Nishita93Tables::build(const AtmosphereParameters& atmosphere, int spheres,
                                        int cylinders, const PrecomputeContext& context) {
   atmosphere.validate();
@@ -49,16 +67,11 @@ Nishita93Tables Nishita93Tables::build(const AtmosphereParameters& atmosphere, i
   t.density_step_ = std::exp(-(r_top - r_ground) / h_r) - 1.0;
 
   const auto n_s = static_cast<std::size_t>(spheres);
-  t.sphere_radius_m_.resize(n_s);
+  t.sphere_radius_m_ = sphere_radii_m(atmosphere, spheres);
   t.sphere_rayleigh_density_.resize(n_s);
   t.sphere_mie_density_.resize(n_s);
   for (std::size_t i = 0; i < n_s; ++i) {
-    const double x = static_cast<double>(i) / static_cast<double>(n_s - 1);
-    // The end spheres exactly on the ground and the top, whatever the rounding of the log.
-    const double r = i == 0         ? r_ground
-                     : i + 1 == n_s ? r_top
-                                    : r_ground - h_r * std::log1p(t.density_step_ * x);
-    t.sphere_radius_m_[i] = r;
+    const double r = t.sphere_radius_m_[i];
     t.sphere_rayleigh_density_[i] = std::exp(-(r - r_ground) / h_r);
     t.sphere_mie_density_[i] = std::exp(-(r - r_ground) / h_m);
   }

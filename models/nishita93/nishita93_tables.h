@@ -37,6 +37,10 @@ class Nishita93Tables {
                                const PrecomputeContext& context = {});
   // memory_bytes() of the tables build() makes with these counts, without building them.
   static std::size_t memory_bytes_for(int spheres, int cylinders);
+  // The radii of the n_s spheres build() cuts the atmosphere with (equal steps of Rayleigh
+  // density, the first on the ground and the last at the top), without building the tables: the
+  // view-ray samples of Nishita93 and Nishita96 are their crossings.
+  static std::vector<double> sphere_radii_m(const AtmosphereParameters& atmosphere, int spheres);
 
   int sphere_count() const { return sphere_count_; }
   int cylinder_count() const { return cylinder_count_; }

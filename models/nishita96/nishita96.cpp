@@ -53,8 +53,10 @@ ModelDescriptor make_descriptor() {
                .max_value = 1024,
                .integer = true},
               {.name = "study_viewer_sample",
-               .description = "1: start each view ray's single-scattering trapezoid with 0 at "
-                              "the observer, as the study's code",
+               .description =
+                   "1: start each view ray's single-scattering trapezoid with 0 at "
+                   "the observer, as the study's code (the radiance then jumps where the observer "
+                   "crosses a sphere: documented jump study_viewer_sample_sphere)",
                .default_value = 1,
                .min_value = 0,
                .max_value = 1,

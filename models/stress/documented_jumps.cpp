@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "models/core/numeric.h"
+#include "models/nishita93/nishita93_tables.h"
 
 namespace clearsky::stress {
 
@@ -33,8 +34,17 @@ std::vector<DocumentedJump> documented_jumps(const SkyModel& model, std::string_
 std::vector<DocumentedJump> documented_altitude_jumps(const SkyModel& model, double view_zenith_deg,
                                                       const std::string& chain) {
   std::vector<DocumentedJump> out;
-  if (!(view_zenith_deg > 90.0) || !model.descriptor().capabilities.view_below_horizon) return out;
   const AtmosphereParameters& a = model.config().atmosphere;
+  const ModelDescriptor& d = model.descriptor();
+  if (view_zenith_deg <= 90.0 && d.find_parameter("study_viewer_sample") != nullptr &&
+      d.find_parameter("spheres") != nullptr &&
+      option_or_default(d, model.config(), "study_viewer_sample") != 0.0) {
+    const int spheres = static_cast<int>(option_or_default(d, model.config(), "spheres"));
+    const std::vector<double> radii_m = Nishita93Tables::sphere_radii_m(a, spheres);
+    for (std::size_t i = 1; i + 1 < radii_m.size(); ++i)
+      out.push_back({"study_viewer_sample_sphere", radii_m[i] - a.earth_radius_m, chain});
+  }
+  if (!(view_zenith_deg > 90.0) || !d.capabilities.view_below_horizon) return out;
   const double sine = std::sin(degrees_to_radians(view_zenith_deg));
   if (sine > 0.0) {
     out.push_back({"ground_horizon", a.earth_radius_m / sine - a.earth_radius_m, chain});

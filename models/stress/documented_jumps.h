@@ -14,6 +14,15 @@
 //  - ground_horizon and atmosphere_limb (altitude, per view below the horizon): the altitude at
 //    which the view grazes the ground, R / sin(zenith) - R, and the top of the atmosphere,
 //    R_top / sin(zenith) - R; above the second the view misses the atmosphere (radiance 0).
+//  - study_viewer_sample_sphere (altitude, per view above the horizon): for models with the
+//    option study_viewer_sample = 1 (Nishita93 on request, Nishita96 by default: the study's
+//    trapezoid that starts with 0 at the observer), the altitudes of the Nishita93 spheres
+//    (Nishita93Tables::sphere_radii_m). The view ray is sampled at its sphere crossings and the
+//    segment from the observer to the first crossing weighs only the far end's integrand; when
+//    the observer rises through a sphere that segment changes from nearly nothing to the whole
+//    way to the next sphere (hundreds of km for a near-horizontal view), so the radiance jumps
+//    there by construction (97% at view zenith 89.5, 32.8 to 32.9 km, for Nishita96).
+//    With study_viewer_sample = 0 the radiance is continuous.
 #pragma once
 
 #include <string>

@@ -5,9 +5,13 @@
 // beyond the observer and became a second sample carrying the true integrand.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "models/nishita93/nishita93.h"
+#include "models/nishita93/nishita93_tables.h"
+#include "models/stress/documented_jumps.h"
 #include "tests/models/support/sky_properties.h"
 
 namespace clearsky {
@@ -49,6 +53,50 @@ TEST(Nishita93StudyViewerSample, DarkensEveryView) {
     }
     EXPECT_EQ(ignored, 0) << "sun " << sun_zenith;
   }
+}
+
+// The option's trapezoid weighs the segment from the observer to the first sphere crossing with
+// the far end's integrand only. When the observer rises through a sphere, that segment grows
+// from nearly nothing to the whole way to the next sphere, which is hundreds of kilometres for
+// a near-horizontal view: the radiance jumps there by construction. The stress run names these
+// altitudes as the documented jump study_viewer_sample_sphere (models/stress/documented_jumps.h)
+// and only for models run with the option; without it the radiance is continuous.
+TEST(Nishita93StudyViewerSample, JumpsAtTheSpheresWhereTheStressRunDocumentsIt) {
+  const auto plain = model_at_440nm(false);
+  const auto study = model_at_440nm(true);
+  const AtmosphereParameters& atmosphere = study->config().atmosphere;
+  const std::vector<double> radii_m = Nishita93Tables::sphere_radii_m(atmosphere, 64);
+  // The first sphere above 30 km.
+  const auto above = std::find_if(radii_m.begin(), radii_m.end(),
+                                  [&](double r) { return r - atmosphere.earth_radius_m > 30e3; });
+  ASSERT_NE(above, radii_m.end());
+  const double sphere_altitude_m = *above - atmosphere.earth_radius_m;
+  const std::vector<ViewDirection> views = {view_at_degrees(89.5, 0.0)};
+  const auto radiance_at = [&](const Nishita93Model& m, double altitude_m) {
+    const SpectralBatch b = radiance_of(m, sun_at_degrees(30.0), altitude_m, views);
+    EXPECT_EQ(b.status[0], SampleStatus::ok);
+    return b.spectrum(0)[0];
+  };
+  const double below_m = sphere_altitude_m - 50.0, above_m = sphere_altitude_m + 50.0;
+  const double study_below = radiance_at(*study, below_m),
+               study_above = radiance_at(*study, above_m);
+  const double plain_below = radiance_at(*plain, below_m),
+               plain_above = radiance_at(*plain, above_m);
+  const auto relative_change = [](double a, double b) {
+    return std::abs(a - b) / std::max(std::abs(a), std::abs(b));
+  };
+  EXPECT_GT(relative_change(study_below, study_above), 0.5)
+      << study_below << " -> " << study_above << " at " << sphere_altitude_m << " m";
+  EXPECT_LT(relative_change(plain_below, plain_above), 0.05)
+      << plain_below << " -> " << plain_above << " at " << sphere_altitude_m << " m";
+
+  const auto documented = stress::documented_altitude_jumps(*study, 89.5, "view");
+  EXPECT_TRUE(std::any_of(documented.begin(), documented.end(), [&](const auto& j) {
+    return j.name == "study_viewer_sample_sphere" && j.coordinate > below_m &&
+           j.coordinate < above_m && j.chain == "view";
+  }));
+  for (const auto& j : stress::documented_altitude_jumps(*plain, 89.5, "view"))
+    EXPECT_NE(j.name, "study_viewer_sample_sphere");
 }
 
 }  // namespace
