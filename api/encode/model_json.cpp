@@ -42,6 +42,9 @@ nlohmann::json descriptor_to_json(const ModelDescriptor& d) {
             {"aerial_perspective", c.aerial_perspective},
             {"max_sun_zenith_deg", c.max_sun_zenith_deg},
             {"sun_below_horizon", c.max_sun_zenith_deg > 90.0},
+            {"dark_beyond_sun_zenith_deg", c.dark_beyond_sun_zenith_deg.has_value()
+                                               ? nlohmann::json(*c.dark_beyond_sun_zenith_deg)
+                                               : nlohmann::json(nullptr)},
             {"scattering_orders",
              c.scattering_orders < 0 ? nlohmann::json("all") : nlohmann::json(c.scattering_orders)},
             {"per_sun_precomputation", c.per_sun_precomputation},

@@ -83,6 +83,7 @@ std::int64_t EvaluationPool::submit(EvaluationRequest request, Finished on_finis
   task.run = [this, id, shared_request, finished](storage::Database& db) {
     // Each model's run is written to the ticket on the worker's connection as it changes.
     EvaluationRequest recorded = *shared_request;
+    if (recorded.provider == nullptr) recorded.provider = provider_.load();
     recorded.on_run_status = [&db, id](std::int64_t run_id, const std::string& model,
                                        const std::string& status) {
       storage::EvaluationTicketRepository(db).record_run(id, model, run_id, status);

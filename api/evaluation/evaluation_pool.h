@@ -10,6 +10,7 @@
 // Thread-safety: every member may be called from any thread.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -79,6 +80,9 @@ class EvaluationPool {
   // Blocks until nothing is queued or running.
   void wait_idle();
   std::span<const ModelFactory> models() const { return models_; }
+  // The provider every later run takes its models from (EvaluationRequest::provider): the
+  // server's TableStore, set once it exists. The caller keeps it alive until the pool is gone.
+  void set_provider(const ModelProvider* provider) { provider_ = provider; }
 
  private:
   // The ticket's final state, after recording how it ended on a connection of its own.
@@ -87,6 +91,7 @@ class EvaluationPool {
   OpenDatabase open_database_;
   std::span<const ModelFactory> models_;
   EvaluationPoolOptions options_;
+  std::atomic<const ModelProvider*> provider_{nullptr};
   WorkerPool workers_;  // last: stopped and joined before the rest goes
 };
 

@@ -1,10 +1,14 @@
 // Stored evaluation runs (evaluation_runner.h).
 #include "api/evaluation/evaluation_runner.h"
 
+#include <chrono>
 #include <stdexcept>
+#include <thread>
 
+#include "api/error/api_error.h"
 #include "api/evaluation/prepared_dataset.h"
 #include "api/request/sky_request.h"
+#include "models/core/fit_domain.h"
 #include "models/core/invalid_input.h"
 #include "models/registry.h"
 #include "storage/repositories/evaluation_run_repository.h"
@@ -119,6 +123,54 @@ std::vector<const ModelFactory*> resolve_models(const std::vector<std::string>& 
   return factories;
 }
 
+namespace {
+
+// The model of `config` from the provider, waiting while its tables are being built (503
+// model_not_ready); null when the provider refuses it for another reason (a configuration the
+// descriptor rejects, the table memory budget, a failed build).
+std::shared_ptr<const SkyModel> provided_model(const ModelProvider& provider,
+                                               const ModelFactory& factory,
+                                               const ModelConfig& config) {
+  for (;;) {
+    try {
+      return provider.model(factory, config);
+    } catch (const ApiError& e) {
+      if (e.code() != "model_not_ready") return nullptr;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+}
+
+// evaluate_model (models/evaluation/evaluate_model.h) on the provider's model when there is a
+// provider and it supplies the model: the tables and per-sun states (kept by the model itself)
+// are then those the sky endpoints use, built once for both. precompute_seconds: the time
+// spent obtaining the models (0 when they were ready).
+EvaluationResult evaluate_through(const ModelProvider* provider, const ModelFactory& factory,
+                                  const ModelConfig& config,
+                                  std::span<const MeasuredCapture> captures,
+                                  const EvaluationOptions& options) {
+  if (provider == nullptr) return evaluate_model(factory, config, captures, options);
+  const auto start = std::chrono::steady_clock::now();
+  const std::shared_ptr<const SkyModel> model = provided_model(*provider, factory, config);
+  if (!model) return evaluate_model(factory, config, captures, options);
+  std::shared_ptr<const SkyModel> fit_clamped;
+  if (options.out_of_domain == OutOfDomain::clamp &&
+      factory.descriptor->find_parameter(kClampNegativeFitOption) != nullptr &&
+      option_or_default(*factory.descriptor, config, kClampNegativeFitOption) == 0.0) {
+    ModelConfig clamped = config;
+    clamped.options[kClampNegativeFitOption] = 1.0;
+    fit_clamped = provided_model(*provider, factory, clamped);
+    if (!fit_clamped) fit_clamped = factory.create(clamped, options.context);
+  }
+  const double precompute_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EvaluationResult result = evaluate_sky_model(*model, captures, options, fit_clamped.get());
+  result.precompute_seconds = precompute_seconds;
+  return result;
+}
+
+}  // namespace
+
 EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& request) {
   return run_evaluation(db, request, registered_models());
 }
@@ -161,7 +213,8 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
     const std::int64_t run_id = runs.start(run);
     if (request.on_run_status) request.on_run_status(run_id, id, "running");
     try {
-      EvaluationResult result = evaluate_model(factory, config, captures, options);
+      EvaluationResult result =
+          evaluate_through(request.provider, factory, config, captures, options);
       std::vector<storage::RunCaptureResult> per_capture;
       for (std::size_t i = 0; i < result.captures.size(); ++i) {
         const CaptureEvaluation& c = result.captures[i];

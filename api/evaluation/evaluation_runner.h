@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "api/service/model_provider.h"
 #include "models/core/sky_model.h"
 #include "models/evaluation/evaluate_model.h"
 #include "models/quality/quality_levels.h"
@@ -39,6 +40,12 @@ struct EvaluationRequest {
   std::string software_version;
   std::optional<std::int64_t> job_id;
   EvaluationOptions options;
+  // Where the models come from: the server's provider (its TableStore), so that an evaluation
+  // or a job uses the tables and per-sun states the sky endpoints use and builds only what is
+  // not built yet (waiting while a build is under way); null (the CLI, tests): each run builds
+  // its model (ModelFactory::create). A configuration the provider refuses for another reason
+  // (its table memory budget) is built by the run itself, as without a provider.
+  const ModelProvider* provider = nullptr;
   // Told each model's run status as it changes: "running" when the run is recorded (before it
   // is computed), then "succeeded" or "failed".
   std::function<void(std::int64_t run_id, const std::string& model_id, const std::string& status)>

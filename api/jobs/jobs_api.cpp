@@ -72,6 +72,8 @@ nlohmann::ordered_json job_json(storage::Database& db, const storage::JobRecord&
           {"created", job.created_utc},
           {"last_run", optional_text(job.last_run_utc)},
           {"next_run", optional_text(job.next_run_utc)},
+          {"skipped_count", job.skipped_count},
+          {"last_skipped", optional_text(job.last_skipped_utc)},
           {"last_result", std::move(last_result)}};
 }
 

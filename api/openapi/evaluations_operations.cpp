@@ -208,7 +208,7 @@ Json schemas() {
   },
   "Job": {
     "type": "object",
-    "required": ["id", "name", "schedule", "dataset", "models", "parameters", "paused", "created", "last_run", "next_run", "last_result"],
+    "required": ["id", "name", "schedule", "dataset", "models", "parameters", "paused", "created", "last_run", "next_run", "skipped_count", "last_skipped", "last_result"],
     "additionalProperties": false,
     "properties": {
       "id": {"type": "integer", "minimum": 1},
@@ -221,6 +221,8 @@ Json schemas() {
       "created": {"type": "string", "format": "date-time"},
       "last_run": {"type": "string", "format": "date-time", "nullable": true},
       "next_run": {"type": "string", "format": "date-time", "nullable": true, "description": "Computed from now at creation and on resume (a paused job does not catch up)."},
+      "skipped_count": {"type": "integer", "minimum": 0, "description": "Due occurrences skipped because the job's previous run was still queued or running (one job never runs twice at once)."},
+      "last_skipped": {"type": "string", "format": "date-time", "nullable": true, "description": "When the last skipped occurrence was due to start (the scheduler's clock, UTC); null: none skipped."},
       "last_result": {"type": "array", "items": {"$ref": "#/components/schemas/JobResult"}, "description": "The newest run of each model the job evaluated."}
     }
   },
@@ -238,7 +240,7 @@ Json schemas() {
 }
 
 const char* kJobExample =
-    R"json({"id": 1, "name": "nightly", "schedule": "0 3 * * *", "dataset": "synthetic", "models": ["preetham", "hosek"], "parameters": {"turbidity": 3}, "paused": false, "created": "2026-11-23T19:42:24.655Z", "last_run": null, "next_run": "2026-11-24T03:00:00Z", "last_result": []})json";
+    R"json({"id": 1, "name": "nightly", "schedule": "0 3 * * *", "dataset": "synthetic", "models": ["preetham", "hosek"], "parameters": {"turbidity": 3}, "paused": false, "created": "2026-11-23T19:42:24.655Z", "last_run": null, "next_run": "2026-11-24T03:00:00Z", "skipped_count": 0, "last_skipped": null, "last_result": []})json";
 const char* kRunExample =
     R"json({"id": 1, "dataset": "synthetic", "model": "preetham", "model_version": "1", "parameters": {"turbidity": 3}, "software_version": "0.1.0", "wavelength_range_nm": [360.0, 720.0], "job": null, "status": "succeeded", "error": null, "started": "2026-11-23T19:42:21.655Z", "finished": "2026-11-23T19:42:21.656Z", "rmse": 123.0398240797635, "out_of_domain": "exclude", "samples_compared": 81, "samples_excluded": 0, "samples_clamped": 0, "captures_unanswered": 0, "timings": {"precompute_seconds": 3.9713e-05, "evaluate_seconds": 0.000182782}, "processing_steps": ["2013-05-27___11.45.00: sample 0 (zenith 77.8849 deg, azimuth 0.0000 deg) replaced by the mean of its ring neighbours 1 and 31", "2013-05-27___11.45.00: sun azimuth estimated from mirror symmetry: 116.077 deg (computed 136.077 deg, 201 candidates, +-20.0 deg in 0.20 deg steps)"], "captures": [{"label": "2013-05-27___11.45.00", "time": "2013-05-27T11:45:00-04:00", "sun_zenith": 26.651259213110777, "sun_azimuth": 116.07696990085265, "rmse": 123.0398240797635, "values_compared": 2511, "samples_compared": 81, "excluded": [], "clamped": []}], "history": {"previous_run": null, "previous_rmse": null, "rmse_changed": null}})json";
 

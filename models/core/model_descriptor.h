@@ -7,6 +7,7 @@
 #pragma once
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,7 +33,14 @@ struct ModelCapabilities {
   bool view_below_horizon = false;   // views with zenith > 90 degrees
   bool aerial_perspective = false;   // radiance/transmittance to a point at a distance
   double max_sun_zenith_deg = 90.0;  // > 90: the sun below the horizon is answered
-  int scattering_orders = 1;         // -1: all orders (e.g. fitted to a full solver)
+  // Beyond this sun zenith (degrees) the model's sky is dark: the sun is below the horizon of
+  // the top of the model's atmosphere at every point the model integrates over, for every
+  // altitude answered, so every radiance and irradiance the model computes is exactly zero.
+  // SkyModel::prepare_sun then returns a dark state at once (no per-sun precomputation) and the
+  // queries answer zeros without computing (docs/model-contract.md "Dark suns"). Unset: the
+  // model declares none (e.g. views from space see the day side whatever the sun).
+  std::optional<double> dark_beyond_sun_zenith_deg{};
+  int scattering_orders = 1;  // -1: all orders (e.g. fitted to a full solver)
   bool per_sun_precomputation = false;
   bool sun_irradiance = true;
   bool sky_irradiance = true;

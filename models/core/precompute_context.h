@@ -43,6 +43,10 @@ struct PrecomputeContext {
   // configuration: one copy in memory); false builds or loads them anew (benchmarks of the
   // precomputation and of the cache, tests of the cache).
   bool reuse_live_tables = true;
+  // A sun beyond the descriptor's dark_beyond_sun_zenith_deg gets a dark SunState at once
+  // (SkyModel::prepare_sun); false prepares its state in full, so that its queries run the
+  // whole computation (the contract test that checks the declared darkness against it).
+  bool dark_sun_at_once = true;
 
   void report(double fraction, std::string_view stage) const {
     if (progress) progress(fraction, stage);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -68,11 +69,20 @@ SampleStatus SkyModel::check_view(const ViewDirection& view) const {
   return SampleStatus::ok;
 }
 
+bool SkyModel::sun_is_dark(const SunPosition& sun) const {
+  const std::optional<double>& dark_beyond = descriptor().capabilities.dark_beyond_sun_zenith_deg;
+  return dark_beyond.has_value() && sun.zenith_rad > degrees_to_radians(*dark_beyond);
+}
+
 std::shared_ptr<const SunState> SkyModel::prepare_sun(const SunPosition& sun,
                                                       const PrecomputeContext& context) const {
   const SampleStatus status = check_sun(sun);
   if (status != SampleStatus::ok) {
     throw InvalidInput("sun_zenith", std::string(describe(status)));
+  }
+  // The sky is exactly dark (ModelCapabilities::dark_beyond_sun_zenith_deg): nothing to build.
+  if (context.dark_sun_at_once && sun_is_dark(sun)) {
+    return std::make_shared<const SunState>(sun, true);
   }
   return compute_sun_state(sun, context);
 }
@@ -134,7 +144,8 @@ void SkyModel::sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
     out.status[i] = s;
     if (s == SampleStatus::ok) ++answerable_count;
   }
-  if (answerable_count == 0) return;
+  // A dark sun: the answerable views keep their zeros, nothing is computed.
+  if (answerable_count == 0 || sun.dark()) return;
   if (answerable_count == views.size()) {
     compute_sky_radiance(sun, viewpoint, views, out);
   } else {
@@ -176,6 +187,7 @@ SpectralSample SkyModel::sun_irradiance(const SunState& sun, const Viewpoint& vi
     sample.status = SampleStatus::invalid_input;
     return sample;
   }
+  if (sun.dark()) return sample;
   sample.value = compute_sun_irradiance(sun, viewpoint);
   zero_out_of_range(*this, {sample.value.data(), sample.value.size()});
   sample.status = sanitize({sample.value.data(), sample.value.size()});
@@ -191,7 +203,7 @@ SpectralSample SkyModel::sky_irradiance(const SunState& sun, const Viewpoint& vi
       plane.tilt_rad < 0.0 || plane.tilt_rad > kPi) {
     sample.status = SampleStatus::invalid_input;
   }
-  if (sample.status != SampleStatus::ok) return sample;
+  if (sample.status != SampleStatus::ok || sun.dark()) return sample;
   sample.value = compute_sky_irradiance(sun, viewpoint, plane);
   zero_out_of_range(*this, {sample.value.data(), sample.value.size()});
   sample.status = sanitize({sample.value.data(), sample.value.size()});
@@ -213,6 +225,7 @@ AerialPerspectiveSample SkyModel::aerial_perspective(const SunState& sun,
   }
   if (sample.status != SampleStatus::ok) return sample;
   ScatteringAlongRay result = compute_aerial_perspective(sun, viewpoint, view, distance_m);
+  if (sun.dark()) std::fill(result.radiance.begin(), result.radiance.end(), 0.0);
   sample.radiance = std::move(result.radiance);
   sample.transmittance = std::move(result.transmittance);
   zero_out_of_range(*this, {sample.radiance.data(), n});

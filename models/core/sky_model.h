@@ -79,13 +79,17 @@ struct PlaneOrientation {
 
 class SunState {
  public:
-  explicit SunState(const SunPosition& sun) : sun_(sun) {}
+  // dark: the sun lies beyond the model's dark_beyond_sun_zenith_deg and the state was made
+  // without precomputation; the queries answer zeros for it without computing.
+  explicit SunState(const SunPosition& sun, bool dark = false) : sun_(sun), dark_(dark) {}
   virtual ~SunState() = default;
   const SunPosition& sun() const { return sun_; }
+  bool dark() const { return dark_; }
   virtual std::size_t memory_bytes() const { return sizeof(*this); }
 
  private:
   SunPosition sun_;
+  bool dark_;
 };
 
 class SkyModel {
@@ -106,10 +110,20 @@ class SkyModel {
 
   // Status of a sun position for this model (ok, sun_below_horizon_unsupported, invalid_input).
   SampleStatus check_sun(const SunPosition& sun) const;
-  // Per-sun preparation; throws std::invalid_argument when check_sun() is not ok.
+  // Whether the sun lies beyond descriptor().capabilities.dark_beyond_sun_zenith_deg (false
+  // when the model declares none).
+  bool sun_is_dark(const SunPosition& sun) const;
+  // Per-sun preparation; throws std::invalid_argument when check_sun() is not ok. A dark sun
+  // (sun_is_dark) gets a dark SunState at once, without precomputation, unless
+  // context.dark_sun_at_once is false.
   std::shared_ptr<const SunState> prepare_sun(const SunPosition& sun,
                                               const PrecomputeContext& context = {}) const;
+  // Per-sun states this model has built (its per-sun cache's builds); 0 for a model without
+  // per-sun precomputation.
+  virtual std::size_t sun_states_built() const { return 0; }
 
+  // The queries below answer zeros (status ok where the inputs are answered) for a dark
+  // SunState without calling the compute_* functions.
   // Spectral sky radiance, W/(m2.sr.nm), for each view, on wavelengths().
   void sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
                     std::span<const ViewDirection> views, SpectralBatch& out) const;
@@ -122,7 +136,10 @@ class SkyModel {
   // Radiance scattered towards the observer and transmittance between it and the point at
   // distance_m (m, >= 0; +infinity: the whole view) along the view; the segment stops earlier
   // at the ground or where the view leaves the atmosphere. invalid_input when the model does
-  // not declare capabilities.aerial_perspective or distance_m is NaN or negative.
+  // not declare capabilities.aerial_perspective or distance_m is NaN or negative. For a dark
+  // SunState the radiance is zero and the transmittance, which does not depend on the sun, is
+  // still computed: a model declaring both aerial_perspective and dark_beyond_sun_zenith_deg
+  // computes it from a plain SunState.
   AerialPerspectiveSample aerial_perspective(const SunState& sun, const Viewpoint& viewpoint,
                                              const ViewDirection& view, double distance_m) const;
 

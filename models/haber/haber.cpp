@@ -2,12 +2,15 @@
 #include "models/haber/haber.h"
 
 #include <cmath>
+#include <optional>
 #include <sstream>
+#include <string>
 
 #include "models/atmosphere/atmosphere_parameter_table.h"
 #include "models/atmosphere/solar_spectrum.h"
 #include "models/core/invalid_input.h"
 #include "models/core/numeric.h"
+#include "models/haber/haber_dome_blob.h"
 
 namespace clearsky::haber {
 
@@ -88,6 +91,9 @@ ModelDescriptor make_descriptor() {
               .view_below_horizon = false,
               .aerial_perspective = false,
               .max_sun_zenith_deg = 180.0,
+              // 90 + 2 acos(R / (R + 35 km)) = 101.99, plus half the widest
+              // sun_zenith_bucket_deg (README "Dark suns").
+              .dark_beyond_sun_zenith_deg = 104.5,
               .scattering_orders = 4,
               .per_sun_precomputation = true,
               .sun_irradiance = true,
@@ -164,8 +170,24 @@ std::shared_ptr<const SunState> HaberModel::compute_sun_state(
   std::ostringstream key;
   key.precision(17);
   key << cache_prefix_ << ";sun_zenith_rad=" << zenith;
-  auto dome = cache_->get_or_build(
-      key.str(), [&] { return build_dome(grid_, atmosphere(), zenith, context); });
+  // Single flight in memory; on a miss the disk table cache first (the key names the blob
+  // format, the model version, the configuration and the zenith), then the computation,
+  // stored for the next process (haber_dome_blob.h).
+  auto dome = cache_->get_or_build(key.str(), [&]() -> std::shared_ptr<const HaberDome> {
+    const std::string disk_key = "haber-dome/" + std::to_string(kDomeBlobVersion) + "/" + key.str();
+    const std::size_t wavelengths = atmosphere().grid.size();
+    if (context.cache != nullptr) {
+      if (const std::optional<std::string> bytes = context.cache->load(disk_key)) {
+        if (auto loaded = dome_from_bytes(*bytes, grid_.ring_count(), grid_.stored_sectors(),
+                                          wavelengths, grid_.angular_step_rad()))
+          return loaded;
+      }
+    }
+    auto built = build_dome(grid_, atmosphere(), zenith, context);
+    ++domes_computed_;
+    if (context.cache != nullptr) context.cache->store(disk_key, dome_to_bytes(*built));
+    return built;
+  });
   return std::make_shared<const HaberSunState>(sun, std::move(dome), zenith);
 }
 

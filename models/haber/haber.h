@@ -20,6 +20,7 @@
 // 0.9 they stay below it (0.70 and 0.66). A larger |g| is refused (InvalidInput naming g).
 #pragma once
 
+#include <atomic>
 #include <memory>
 
 #include "models/core/model_factory.h"
@@ -67,6 +68,8 @@ class HaberModel final : public SkyModel {
   std::size_t table_bytes() const override;
   const HaberGrid& grid() const { return grid_; }
   SunStateCacheStats cache_stats() const { return cache_->stats(); }
+  // Domes computed (not loaded from the disk table cache).
+  std::size_t sun_states_built() const override { return domes_computed_.load(); }
 
  protected:
   std::shared_ptr<const SunState> compute_sun_state(
@@ -86,6 +89,7 @@ class HaberModel final : public SkyModel {
   std::string cache_prefix_;
   // The one shared, internally synchronised piece of the model: per-sun domes by bucket.
   std::unique_ptr<SunStateCache<HaberDome>> cache_;
+  mutable std::atomic<std::size_t> domes_computed_{0};
 };
 
 }  // namespace clearsky::haber

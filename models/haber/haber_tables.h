@@ -109,6 +109,10 @@ class HaberDome {
   }
   int rings() const { return rings_; }
   int sectors() const { return sectors_; }
+  double angular_step_rad() const { return step_; }
+  std::size_t wavelengths() const { return wavelengths_; }
+  // Every node's spectrum, ring-major then sector (what node() reads).
+  std::span<const double> values() const { return radiance_; }
   std::size_t memory_bytes() const { return sizeof(*this) + radiance_.size() * sizeof(double); }
 
  private:

@@ -104,6 +104,9 @@ ModelDescriptor make_descriptor() {
               .view_below_horizon = false,
               .aerial_perspective = false,
               .max_sun_zenith_deg = 180.0,
+              // Geometry, table interpolation and the widest sun_zenith_bucket_deg (README
+              // "Dark suns").
+              .dark_beyond_sun_zenith_deg = 111.0,
               .scattering_orders = 2,
               .per_sun_precomputation = true,
               .sun_irradiance = true,

@@ -83,6 +83,7 @@ class Nishita96Model final : public SkyModel {
   std::size_t table_bytes() const override { return optical_lengths_.memory_bytes(); }
   const Nishita93Tables& optical_lengths() const { return optical_lengths_; }
   SunStateCacheStats cache_stats() const { return cache_->stats(); }
+  std::size_t sun_states_built() const override { return cache_->stats().builds; }
 
   // Radiance of the chosen orders for ground-or-above views inside the atmosphere (the
   // checked query sky_radiance() returns single_and_double).

@@ -84,6 +84,8 @@ class WriterServices {
   WriterServices& operator=(const WriterServices&) = delete;
 
   const api::DataServices& data() const { return data_; }
+  // Evaluations and jobs take their models from the server's tables (EvaluationRequest::provider).
+  void use_models_of(const api::ModelProvider& tables) { evaluations_.set_provider(&tables); }
 
  private:
   // Opens (creates, migrates) the database, then marks failed the runs and imports a crash
@@ -188,6 +190,12 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   std::optional<WriterServices> services;
   if (writer) services.emplace(config, import_roots, registered, software_version);
   server::TableStore tables(registered, options);
+  // The writer's workers use the tables: they stop (running evaluations end) before the tables go.
+  struct StopServicesFirst {
+    std::optional<WriterServices>& services;
+    ~StopServicesFirst() { services.reset(); }
+  } stop_services_first{services};
+  if (services) services->use_models_of(tables);
   tables.set_build_observer([&metrics](const std::string& id, double seconds, bool from_cache) {
     metrics.observe_build(id, seconds, from_cache);
   });

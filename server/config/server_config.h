@@ -43,7 +43,7 @@
 // | import_roots         | path  | (none)          | folders path= imports may read (repeatable --import-root); none: path imports refused |
 // | max_entry_bytes      | byte  | 16 MiB          | bytes read from one archive entry or folder file of an import (import fails, 413)     |
 // | max_import_bytes     | byte  | 256 MiB         | bytes read from all the entries of one import (import fails, 413)                     |
-// | evaluation_workers   |       | 1               | background evaluation threads (never HTTP workers)                                    |
+// | evaluation_workers   |       | min(2, cores)   | background evaluation threads (never HTTP workers)                                    |
 // | evaluation_queue     |       | 16              | evaluations waiting for a worker (503 beyond)                                         |
 // | cors_origins         |       | (none)          | origins browsers may call the API from ("*": any; docs/http-api.md)                   |
 // | viewer_dir           | path  | viewer/ by the executable | the browser viewer served at / (docs/viewer.md); empty or no index.html: none |
@@ -55,9 +55,11 @@
 // clang-format on
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace clearsky::server {
@@ -65,6 +67,12 @@ namespace clearsky::server {
 // What a server instance is for (docs/deploy.md "Roles"): one writer owns the SQLite database;
 // query replicas serve the sky endpoints from the shared table cache and have no database.
 enum class ServerRole { writer, query };
+
+// Two evaluation workers where the machine has two cores or more (a job and a user's
+// evaluation, or two models' runs, at once), one on a single core.
+inline unsigned default_evaluation_workers() {
+  return std::clamp(std::thread::hardware_concurrency(), 1u, 2u);
+}
 
 struct ServerConfig {
   std::string host = "127.0.0.1";
@@ -104,7 +112,7 @@ struct ServerConfig {
   std::string token_file;  // empty: none
   int drain_delay_s = 0;
   int drain_timeout_s = 30;
-  unsigned evaluation_workers = 1;
+  unsigned evaluation_workers = default_evaluation_workers();
   std::size_t evaluation_queue = 16;
   unsigned import_workers = 1;
   std::size_t import_queue = 8;

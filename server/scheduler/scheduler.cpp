@@ -61,8 +61,9 @@ TickReport Scheduler::tick(std::int64_t now_unix_s) {
     {
       std::lock_guard lock(in_flight_->mutex);
       if (in_flight_->jobs.count(job.id) > 0) {
-        // Still running from an earlier occurrence: this one is skipped, not queued behind it.
-        jobs.set_next_run(job.id, next_text);
+        // Still running from an earlier occurrence: this one is skipped, not queued behind it,
+        // and counted on the job (GET /v1/jobs/{id}: skipped_count, last_skipped).
+        jobs.record_skip(job.id, api::job_time_text(now_unix_s), next_text);
         spdlog::warn("job {} ({}): due at {} while its previous run is still going; skipped",
                      job.id, job.name, *job.next_run_utc);
         ++report.skipped_running;

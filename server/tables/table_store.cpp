@@ -11,6 +11,7 @@
 
 #include "api/error/api_error.h"
 #include "models/core/invalid_input.h"
+#include "models/core/numeric.h"
 
 namespace clearsky::server {
 
@@ -237,7 +238,10 @@ std::shared_ptr<const SunState> TableStore::sun_state(const std::shared_ptr<cons
   // The models whose per-sun preparation is costly (Haber, Nishita96) keep their own bounded,
   // single-flight cache of per-sun states (models/core/sun_state_cache.h); for the others a
   // SunState is just the sun. A second cache here would only defeat the models' memory bound.
-  if (!model->descriptor().capabilities.per_sun_precomputation) return model->prepare_sun(sun);
+  // A dark sun (ModelCapabilities::dark_beyond_sun_zenith_deg) builds nothing: its state is
+  // made at once.
+  if (!model->descriptor().capabilities.per_sun_precomputation || model->sun_is_dark(sun))
+    return model->prepare_sun(sun);
   // A costly preparation runs on its own thread so that the request waits at most build_wait,
   // like a table build; the thread keeps the model alive and fills the model's cache, where a
   // later request finds the state.
@@ -264,27 +268,38 @@ std::shared_ptr<const SunState> TableStore::sun_state(const std::shared_ptr<cons
       return true;
     });
     auto done = std::make_shared<std::atomic<bool>>(false);
-    on_demand_.push_back({std::thread([this, model, sun, key, preparation, done] {
-                            std::shared_ptr<const SunState> state;
-                            std::exception_ptr error;
-                            PrecomputeContext context;
-                            context.cancel = &stopping_;
-                            try {
-                              state = model->prepare_sun(sun, context);
-                            } catch (...) {
-                              error = std::current_exception();
-                            }
-                            {
-                              std::lock_guard done_lock(mutex_);
-                              preparation->state = std::move(state);
-                              preparation->error = error;
-                              preparation->done = true;
-                              sun_preparations_.erase(key);
-                            }
-                            changed_.notify_all();
-                            *done = true;
-                          }),
-                          done});
+    on_demand_.push_back(
+        {std::thread([this, model, sun, key, preparation, done] {
+           std::shared_ptr<const SunState> state;
+           std::exception_ptr error;
+           PrecomputeContext context;
+           context.cancel = &stopping_;
+           // Haber's domes persist in the disk table cache.
+           context.cache = options_.cache;
+           const std::size_t computed_before = model->sun_states_built();
+           const auto start = std::chrono::steady_clock::now();
+           try {
+             state = model->prepare_sun(sun, context);
+             spdlog::info(
+                 "sun state: {} sun zenith {:.4f} deg {} in {:.3f} s", model->descriptor().id,
+                 radians_to_degrees(sun.zenith_rad),
+                 model->sun_states_built() > computed_before ? "computed"
+                                                             : "ready (memory or disk cache)",
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+           } catch (...) {
+             error = std::current_exception();
+           }
+           {
+             std::lock_guard done_lock(mutex_);
+             preparation->state = std::move(state);
+             preparation->error = error;
+             preparation->done = true;
+             sun_preparations_.erase(key);
+           }
+           changed_.notify_all();
+           *done = true;
+         }),
+         done});
   }
   changed_.wait_for(lock, options_.build_wait, [&] { return preparation->done; });
   if (!preparation->done) {

@@ -8,7 +8,7 @@ namespace {
 
 constexpr const char* kJobSelect =
     "SELECT id, name, schedule, dataset_id, models, parameters, paused, created_utc, last_run_utc, "
-    "next_run_utc"
+    "next_run_utc, skipped_count, last_skipped_utc"
     " FROM jobs";
 
 JobRecord read_job(const Statement& row) {
@@ -23,6 +23,8 @@ JobRecord read_job(const Statement& row) {
   job.created_utc = row.column_text(7);
   if (!row.is_null(8)) job.last_run_utc = row.column_text(8);
   if (!row.is_null(9)) job.next_run_utc = row.column_text(9);
+  job.skipped_count = row.column_int64(10);
+  if (!row.is_null(11)) job.last_skipped_utc = row.column_text(11);
   return job;
 }
 
@@ -87,6 +89,21 @@ bool JobRepository::record_run(std::int64_t id, const std::string& last_run_utc,
                                const std::optional<std::string>& next_run_utc) {
   auto statement = db_.prepare("UPDATE jobs SET last_run_utc = ?, next_run_utc = ? WHERE id = ?");
   statement.bind(1, last_run_utc);
+  if (next_run_utc)
+    statement.bind(2, *next_run_utc);
+  else
+    statement.bind_null(2);
+  statement.bind(3, id);
+  statement.run();
+  return db_.changes() > 0;
+}
+
+bool JobRepository::record_skip(std::int64_t id, const std::string& skipped_utc,
+                                const std::optional<std::string>& next_run_utc) {
+  auto statement = db_.prepare(
+      "UPDATE jobs SET skipped_count = skipped_count + 1, last_skipped_utc = ?, "
+      "next_run_utc = ? WHERE id = ?");
+  statement.bind(1, skipped_utc);
   if (next_run_utc)
     statement.bind(2, *next_run_utc);
   else

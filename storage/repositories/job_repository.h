@@ -26,6 +26,9 @@ struct JobRecord {
   std::string created_utc;
   std::optional<std::string> last_run_utc;
   std::optional<std::string> next_run_utc;
+  // Due occurrences skipped because the previous run was still going (schema version 8).
+  std::int64_t skipped_count = 0;
+  std::optional<std::string> last_skipped_utc;
 };
 
 class JobRepository {
@@ -47,6 +50,10 @@ class JobRepository {
   // of two schedulers seeing the same due run, one claims it. False when not claimed.
   bool claim_run(std::int64_t id, const std::string& expected_next_run_utc,
                  const std::string& last_run_utc, const std::optional<std::string>& next_run_utc);
+  // A due occurrence skipped because the previous run is still going: counts it, keeps its
+  // time and sets the next run, in one statement. False when the job is gone.
+  bool record_skip(std::int64_t id, const std::string& skipped_utc,
+                   const std::optional<std::string>& next_run_utc);
   bool remove(std::int64_t id);
 
  private:

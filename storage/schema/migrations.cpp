@@ -371,6 +371,12 @@ CREATE TABLE fits (
 );
 CREATE INDEX fits_by_dataset ON fits(dataset_id);
 )sql",
+      // Version 8 (docs/data-api.md "Jobs"): how many due occurrences of a job were skipped
+      // because its previous run was still going, and the last time one was.
+      R"sql(
+ALTER TABLE jobs ADD COLUMN skipped_count INTEGER NOT NULL DEFAULT 0;
+ALTER TABLE jobs ADD COLUMN last_skipped_utc TEXT;
+)sql",
   };
   return migrations;
 }

@@ -85,6 +85,8 @@ ModelCapabilities capabilities_of(const nlohmann::json& json) {
   capabilities.aerial_perspective = member<bool>(json, "aerial_perspective");
   capabilities.max_sun_zenith_deg = member<double>(json, "max_sun_zenith_deg");
   capabilities.sun_below_horizon = member<bool>(json, "sun_below_horizon");
+  capabilities.dark_beyond_sun_zenith_deg =
+      optional_member<double>(json, "dark_beyond_sun_zenith_deg");
   // A number of orders, or "all".
   if (member<nlohmann::json>(json, "scattering_orders").is_number())
     capabilities.scattering_orders = member<int>(json, "scattering_orders");

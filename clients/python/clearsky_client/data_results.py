@@ -207,8 +207,12 @@ class Job:
     next_run: Optional[str]
     last_run: Optional[str]
     raw: Dict[str, Any] = field(repr=False)
+    # Due occurrences skipped because the previous run was still going, and the last one.
+    skipped_count: int = 0
+    last_skipped: Optional[str] = None
 
     @classmethod
     def from_json(cls, j: Dict[str, Any]) -> "Job":
         return cls(j["id"], j["name"], j["schedule"], j["dataset"], j["models"],
-                   j["parameters"], j["paused"], j.get("next_run"), j.get("last_run"), j)
+                   j["parameters"], j["paused"], j.get("next_run"), j.get("last_run"), j,
+                   j.get("skipped_count", 0), j.get("last_skipped"))

@@ -390,6 +390,10 @@ class ClientAgainstWriter(unittest.TestCase):
         job = self.client.create_job("nightly", "0 3 * * *", "synthetic", ["preetham", "hosek"],
                                      {"turbidity": 3})
         self.assertFalse(job.paused)
+        # A new job has skipped nothing (the scheduler counts occurrences skipped while the
+        # previous run was still going; tests/server/scheduler).
+        self.assertEqual(self.client.get_job(job.id).skipped_count, 0)
+        self.assertIsNone(self.client.get_job(job.id).last_skipped)
         self.assertRefused(lambda: self.client.create_job("nightly", "0 3 * * *", "synthetic"),
                            409, "conflict", "name")
         second = self.client.create_job("weekly", "0 4 * * 1", "synthetic")

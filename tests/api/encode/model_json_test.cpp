@@ -30,6 +30,10 @@ TEST(ModelJson, EncodesEveryDescriptorField) {
   EXPECT_EQ(j["capabilities"]["sun_below_horizon"], true);
   EXPECT_EQ(j["capabilities"]["scattering_orders"], "all");
   EXPECT_EQ(j["native_wavelengths_nm"].size(), 3u);
+  // No dark sun zenith declared: null; declared: the number.
+  EXPECT_TRUE(j["capabilities"]["dark_beyond_sun_zenith_deg"].is_null());
+  d.capabilities.dark_beyond_sun_zenith_deg = 104.5;
+  EXPECT_EQ(descriptor_to_json(d)["capabilities"]["dark_beyond_sun_zenith_deg"], 104.5);
 }
 
 }  // namespace

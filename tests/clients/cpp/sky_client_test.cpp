@@ -44,6 +44,8 @@ TEST_F(SkyClient, ModelsListTheServedModelWithItsParameters) {
   EXPECT_EQ(models[0].table_status, "ready");
   EXPECT_TRUE(models[0].capabilities.sky_irradiance);
   EXPECT_GT(models[0].capabilities.max_sun_zenith_deg, 80);
+  // Preetham answers no sun below the horizon, so it declares no dark sun zenith (null).
+  EXPECT_FALSE(models[0].capabilities.dark_beyond_sun_zenith_deg.has_value());
   EXPECT_TRUE(std::any_of(models[0].parameters.begin(), models[0].parameters.end(),
                           [](const ModelParameterInfo& p) { return p.name == "turbidity"; }));
   EXPECT_TRUE(client().healthy());

@@ -117,11 +117,18 @@ TEST(Scheduler, AJobStillRunningIsNotStartedAgain) {
   EXPECT_EQ(second.started, 0);
   EXPECT_EQ(second.skipped_running, 1);
   EXPECT_EQ(scheduler.in_flight().count(id), 1u);
+  // The skipped occurrence is counted on the job, with its time (GET /v1/jobs/{id}).
+  EXPECT_EQ(f.record(id).skipped_count, 1);
+  EXPECT_EQ(f.record(id).last_skipped_utc, std::optional<std::string>("2026-11-21T11:02:00Z"));
+  const auto shown = api::show_job(f.db, id);
+  EXPECT_EQ(shown["skipped_count"], 1);
+  EXPECT_EQ(shown["last_skipped"], "2026-11-21T11:02:00Z");
   pool.wait_idle();
   EXPECT_TRUE(scheduler.in_flight().empty());
   EXPECT_EQ(scheduler.tick(kT0 + 180).started, 1);
   pool.wait_idle();
   EXPECT_EQ(f.runs_of(id), 2u);
+  EXPECT_EQ(f.record(id).skipped_count, 1);
 }
 
 TEST(Scheduler, PausedJobsWait) {

@@ -96,6 +96,8 @@ struct ModelCapabilities {
   bool aerial_perspective = false;
   double max_sun_zenith_deg = 0;
   bool sun_below_horizon = false;
+  // Beyond this sun zenith the model answers zeros at once; absent: none declared.
+  std::optional<double> dark_beyond_sun_zenith_deg;
   std::optional<int> scattering_orders;  // absent: all orders
   bool per_sun_precomputation = false;
   bool sun_irradiance = false;
