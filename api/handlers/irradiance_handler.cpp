@@ -137,9 +137,10 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
           broadband_diffuse_w_m2(over_model_range(horizontal.diffuse), conditions);
       const double global_horizontal =
           integrated(horizontal.global, model, m.indices, xyz).irradiance_w_m2;
-      const double ground =
+      const double ground_w_m2 =
           integrated(on_plane.ground_diffuse, model, m.indices, xyz).irradiance_w_m2;
-      bb_ground = global_horizontal > 0.0 ? ground / global_horizontal * global_horizontal_bb : 0.0;
+      bb_ground =
+          global_horizontal > 0.0 ? ground_w_m2 / global_horizontal * global_horizontal_bb : 0.0;
     }
   }
   if (bb_direct && bb_diffuse) bb_global = *bb_direct + *bb_diffuse + bb_ground.value_or(0.0);

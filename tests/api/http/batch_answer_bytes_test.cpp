@@ -29,7 +29,7 @@ TEST(BatchAnswerBytes, ASingleViewAtTheDefaultGridsIsNotCounted) {
 }
 
 TEST(BatchAnswerBytes, CoversTheEncodedBodyAndTheComputedSpectra) {
-  for (const auto [views, wavelengths] :
+  for (const auto& [views, wavelengths] :
        {std::pair<std::size_t, std::size_t>{1, 40}, {100, 40}, {1000, 3}, {10, 2000}}) {
     const std::size_t estimate = batch_answer_bytes(views, wavelengths, wavelengths);
     EXPECT_GT(estimate, radiance_body_bytes(views, wavelengths) + views * wavelengths * 8)

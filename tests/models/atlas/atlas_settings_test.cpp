@@ -38,8 +38,9 @@ TEST(AtlasSettings, EveryModelListsTheStandardSettingFirstAndOnlyDeclaredOptions
       // A numerical model's full atlas checks its reference against one step finer (Elek's
       // reference has Bruneton's tables, checked in Bruneton's atlas).
       if (scope == AtlasScope::full && !a.settings[1].options.empty() && d.id != "hosek" &&
-          d.id != "elek")
+          d.id != "elek") {
         EXPECT_FALSE(a.reference_check.name.empty()) << d.id;
+      }
     }
   }
 }

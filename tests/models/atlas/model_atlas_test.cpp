@@ -52,9 +52,11 @@ TEST(ModelAtlas, MoreRaySamplesComeCloserToTheReference) {
   if (!r.draft.empty()) {
     const SettingMeasurement& draft = named(r, r.draft);
     EXPECT_LE(draft.spectral_error.p95, kDraftMaxP95Error);
-    for (const SettingMeasurement& m : r.settings)
-      if (m.first_sky_s() < draft.first_sky_s())
+    for (const SettingMeasurement& m : r.settings) {
+      if (m.first_sky_s() < draft.first_sky_s()) {
         EXPECT_GT(m.spectral_error.p95, kDraftMaxP95Error) << m.setting.name;
+      }
+    }
   }
 }
 
