@@ -184,7 +184,7 @@ Area service_area() {
         "description": "Every model is ready.",
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/Readiness"},
-          "example": {"models": {"hosek": {"progress": 1.0, "status": "ready"}, "preetham": {"progress": 1.0, "status": "ready"}}, "status": "ready"}
+          "example": {"models": {"hosek": {"progress": 1.0, "status": "ready", "levels": {"draft": {"progress": 1.0, "status": "ready"}, "standard": {"progress": 1.0, "status": "ready"}, "reference": {"progress": 1.0, "status": "ready"}}}, "preetham": {"progress": 1.0, "status": "ready", "levels": {"draft": {"progress": 1.0, "status": "ready"}, "standard": {"progress": 1.0, "status": "ready"}, "reference": {"progress": 1.0, "status": "ready"}}}}, "status": "ready"}
         }}
       },
       "503": {
@@ -192,7 +192,7 @@ Area service_area() {
         "headers": {"Retry-After": {"$ref": "#/components/headers/Retry-After"}},
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/NotReady"},
-          "example": {"error": {"code": "not_ready", "message": "the default tables of some models are being built", "parameter": null}, "models": {"bruneton": {"progress": 0.0042955326460481094, "status": "precomputing"}, "preetham": {"progress": 1.0, "status": "ready"}}}
+          "example": {"error": {"code": "not_ready", "message": "the default tables of some models are being built", "parameter": null}, "models": {"bruneton": {"progress": 0.0042955326460481094, "status": "precomputing", "levels": {"draft": {"progress": 1.0, "status": "ready"}, "standard": {"progress": 0.0042955326460481094, "status": "precomputing"}, "reference": {"progress": 0.0, "status": "not_built"}}}, "preetham": {"progress": 1.0, "status": "ready", "levels": {"draft": {"progress": 1.0, "status": "ready"}, "standard": {"progress": 1.0, "status": "ready"}, "reference": {"progress": 1.0, "status": "ready"}}}}}
         }}
       }
     }

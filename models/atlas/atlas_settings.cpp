@@ -233,7 +233,9 @@ ModelAtlasSettings formula(bool has_native_bands, const std::string& native_opti
 
 ModelAtlasSettings atlas_settings(const ModelDescriptor& descriptor, AtlasScope scope) {
   const std::string& id = descriptor.id;
-  if (id == "bruneton") return precomputed_tables(false, scope);
+  // measured_aerosols runs Bruneton's engine with the same table options
+  // (models/measured_aerosols/README.md): Bruneton's list and reference.
+  if (id == "bruneton" || id == "measured_aerosols") return precomputed_tables(false, scope);
   if (id == "elek") return precomputed_tables(true, scope);
   if (id == "haber") return haber(scope);
   if (id == "nishita96") return nishita96(scope);

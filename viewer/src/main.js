@@ -63,9 +63,16 @@ function timeText() {
   return `${$('date').value}T${hh}:${mm}:00Z`;
 }
 
+// The place and time of the sun (GET /v1/sun takes nothing else).
+function sunPlace() {
+  return new URLSearchParams({ lat: $('lat').value, lon: $('lon').value, time: timeText() });
+}
+
 // Every sky request carries the chosen quality level (docs/quality-levels.md).
 function place() {
-  return new URLSearchParams({ lat: $('lat').value, lon: $('lon').value, time: timeText(), quality: $('quality').value });
+  const query = sunPlace();
+  query.set('quality', $('quality').value);
+  return query;
 }
 
 // "quality standard" or, when cheaper tables answered, "quality standard (served draft)".
@@ -312,7 +319,7 @@ async function update() {
   $('sky-b').hidden = !$('model-b').value;
   busy(+1);
   try {
-    const sun = await api(`/v1/sun?${place()}`);
+    const sun = await api(`/v1/sun?${sunPlace()}`);
     if (mine !== generation) return;
     await Promise.all([
       loadSky('a', models[0], projection, sun),

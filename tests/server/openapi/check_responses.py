@@ -321,6 +321,12 @@ def run(checker, workdir):
     c.call("getIrradiance", 200, query=c.query("getIrradiance", *place, spectral="true",
                                                tilt=30))
     c.call("getIrradiance", 400, query=c.query("getIrradiance", *sun, component="sideways"))
+    day = "model=preetham&lat=48.85&lon=2.35&start=2024-06-21T00:00:00Z&end=2024-06-22T00:00:00Z"
+    c.call("getIrradianceSeries", 200, query=day + "&step=PT1H&planes=30:180,90:90")
+    c.call("getIrradianceSeries", 200, query=day + "&step=PT3H&format=csv")
+    c.call("getIrradianceSeries", 400, query=day + "&planes=30")
+    c.call("getIrradianceSeries", 413, query=day.replace("2024-06-22", "2034-06-22") +
+           "&step=PT1M")
     c.call("getRgb", 200, query=c.query("getRgb", *sun, "view_zenith", "view_azimuth"))
     check_not_modified(c, "getRgb", c.query("getRgb", *sun, "view_zenith", "view_azimuth"))
     c.call("getRgb", 200, query=c.query("getRgb", *place, "view_zenith", "view_azimuth",
