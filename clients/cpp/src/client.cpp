@@ -152,6 +152,19 @@ IrradianceSeriesResult Client::irradiance_series(const IrradianceSeriesRequest& 
       json_of(transport_->get(query.target("/v1/irradiance/series"))));
 }
 
+SkyPatchesResult Client::sky_patches(const SkyPatchesRequest& request) const {
+  QueryText query;
+  detail::add_sky_query(query, request);
+  query.add("scheme", request.scheme);
+  if (request.mf) query.add("mf", static_cast<std::int64_t>(*request.mf));
+  query.add("sun", request.sun_handling);
+  query.add("output", request.output);
+  query.add("ground_reflectance", request.ground_reflectance);
+  if (!request.wavelengths_nm.empty())
+    query.add("wavelengths", detail::number_list_text(request.wavelengths_nm));
+  return detail::sky_patches_of(json_of(transport_->get(query.target("/v1/skypatches"))));
+}
+
 RgbResult Client::rgb(const RgbRequest& request) const {
   QueryText query;
   detail::add_sky_query(query, request);
@@ -282,6 +295,33 @@ Page<EvaluationSummary> Client::evaluations(const EvaluationFilter& filter) cons
   add_page(query, filter);
   return page_of<EvaluationSummary>(transport_->get(query.target("/v1/evaluations")),
                                     detail::evaluation_summary_of);
+}
+
+Fit Client::create_fit(const FitRequest& request) const {
+  return detail::fit_of(
+      json_of(transport_->post_json("/v1/fits", detail::fit_request_json(request).dump())));
+}
+
+Fit Client::fit(std::int64_t id) const {
+  return detail::fit_of(json_of(transport_->get(id_path("/v1/fits", id))));
+}
+
+Page<Fit> Client::fits(const PageRequest& page) const {
+  QueryText query;
+  add_page(query, page);
+  return page_of<Fit>(transport_->get(query.target("/v1/fits")), detail::fit_of);
+}
+
+Fit Client::wait_for_fit(std::int64_t id, const WaitOptions& wait) const {
+  const Fit final_state = poll<Fit>(
+      wait, "fit " + std::to_string(id), [&] { return fit(id); },
+      [](const Fit& state) { return state.done(); });
+  if (final_state.status != "succeeded") {
+    throw Error(0, "fit_" + final_state.status,
+                "fit " + std::to_string(id) + " " + final_state.status + ": " +
+                    final_state.error.value_or(""));
+  }
+  return final_state;
 }
 
 Job Client::create_job(const JobRequest& request) const {

@@ -61,6 +61,23 @@ nlohmann::json evaluation_request_json(const EvaluationRequest& request) {
           {"parameters", parameters_json(request.parameters)}};
 }
 
+nlohmann::json fit_request_json(const FitRequest& request) {
+  nlohmann::json body = {{"dataset", request.dataset},
+                         {"model", request.model},
+                         {"parameters", parameters_json(request.parameters)},
+                         {"per_capture", request.per_capture},
+                         {"cross_validate", request.cross_validate}};
+  if (!request.free.empty()) body["free"] = request.free;
+  if (!request.bounds.empty()) {
+    nlohmann::json bounds = nlohmann::json::object();
+    for (const auto& [name, range] : request.bounds) bounds[name] = {range[0], range[1]};
+    body["bounds"] = std::move(bounds);
+  }
+  if (!request.captures.empty()) body["captures"] = request.captures;
+  if (request.max_evaluations) body["max_evaluations"] = *request.max_evaluations;
+  return body;
+}
+
 nlohmann::json job_request_json(const JobRequest& request) {
   return {{"name", request.name},
           {"schedule", request.schedule},
@@ -210,6 +227,27 @@ Job job_of(const nlohmann::json& json) {
                                optional_member<double>(r, "rmse")});
   }
   return job;
+}
+
+Fit fit_of(const nlohmann::json& json) {
+  Fit fit;
+  fit.id = member<std::int64_t>(json, "id");
+  fit.dataset = member<std::string>(json, "dataset");
+  fit.model = member<std::string>(json, "model");
+  fit.status = member<std::string>(json, "status");
+  fit.progress = member<double>(json, "progress");
+  fit.stage = optional_member<std::string>(json, "stage");
+  if (const auto values = optional_member<nlohmann::json>(json, "values")) {
+    for (const auto& [name, value] : values->items())
+      if (value.is_number()) fit.values[name] = value.get<double>();
+  }
+  fit.rmse_before = optional_member<double>(json, "rmse_before");
+  fit.rmse_after = optional_member<double>(json, "rmse_after");
+  fit.cross_validated_rmse = optional_member<double>(json, "cross_validated_rmse");
+  fit.created = member<std::string>(json, "created_utc");
+  fit.finished = optional_member<std::string>(json, "finished_utc");
+  fit.error = optional_member<std::string>(json, "error");
+  return fit;
 }
 
 }  // namespace clearsky::client::detail

@@ -13,6 +13,7 @@ namespace clearsky::client::detail {
 
 nlohmann::json evaluation_request_json(const EvaluationRequest& request);
 nlohmann::json job_request_json(const JobRequest& request);
+nlohmann::json fit_request_json(const FitRequest& request);
 
 DatasetSummary dataset_summary_of(const nlohmann::json& json);
 Dataset dataset_of(const nlohmann::json& json);
@@ -21,5 +22,6 @@ EvaluationTicket ticket_of(const nlohmann::json& json);
 EvaluationSummary evaluation_summary_of(const nlohmann::json& json);
 Evaluation evaluation_of(const nlohmann::json& json);
 Job job_of(const nlohmann::json& json);
+Fit fit_of(const nlohmann::json& json);
 
 }  // namespace clearsky::client::detail

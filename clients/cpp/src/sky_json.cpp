@@ -264,4 +264,36 @@ RgbResult rgb_of(const nlohmann::json& json) {
   return result;
 }
 
+namespace {
+
+// A patch's or the sun's value: an array (spectral, rgb) or one number (luminance).
+std::vector<double> patch_value_of(const nlohmann::json& object) {
+  const nlohmann::json value = member<nlohmann::json>(object, "value");
+  if (value.is_number()) return {value.get<double>()};
+  return member<std::vector<double>>(object, "value");
+}
+
+}  // namespace
+
+SkyPatchesResult sky_patches_of(const nlohmann::json& json) {
+  SkyPatchesResult out;
+  out.model = member<std::string>(json, "model");
+  out.scheme = member<std::string>(json, "scheme");
+  out.mf = member<int>(json, "mf");
+  out.output = member<std::string>(json, "output");
+  if (const auto wavelengths = optional_member<std::vector<double>>(json, "wavelengths_nm"))
+    out.wavelengths_nm = *wavelengths;
+  for (const nlohmann::json& p : member<nlohmann::json>(json, "patches")) {
+    out.patches.push_back({member<int>(p, "patch"), member<double>(p, "altitude_deg"),
+                           member<double>(p, "azimuth_deg"), member<double>(p, "solid_angle_sr"),
+                           patch_value_of(p)});
+  }
+  if (const auto sun = optional_member<nlohmann::json>(json, "sun_source")) {
+    out.sun_source =
+        SkyPatch{-1, member<double>(*sun, "altitude_deg"), member<double>(*sun, "azimuth_deg"),
+                 member<double>(*sun, "solid_angle_sr"), patch_value_of(*sun)};
+  }
+  return out;
+}
+
 }  // namespace clearsky::client::detail

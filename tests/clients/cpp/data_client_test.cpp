@@ -219,5 +219,40 @@ TEST_F(DataClient, AnUnknownImportIs404NamingTheId) {
   }
 }
 
+// Fits: created with the token on an imported capture, followed to success, read back and
+// listed; the fitted turbidity lies within the bounds and lowers the RMSE; an unknown fit is a
+// 404 naming its id.
+TEST_F(DataClient, FitLifecycle) {
+  CLEARSKY_REQUIRE_SHARED_DATA(kArchive);
+  const Client client = server_->client();
+  ASSERT_EQ(imported("noon").status, "succeeded");
+  FitRequest request;
+  request.dataset = "noon";
+  request.model = "preetham";
+  request.free = {"turbidity"};
+  request.bounds["turbidity"] = {2.0, 6.0};
+  const Fit queued = client.create_fit(request);
+  EXPECT_EQ(queued.dataset, "noon");
+  EXPECT_EQ(queued.model, "preetham");
+  const Fit done = client.wait_for_fit(queued.id);
+  EXPECT_EQ(done.status, "succeeded");
+  ASSERT_EQ(done.values.count("turbidity"), 1u);
+  EXPECT_GE(done.values.at("turbidity"), 2.0);
+  EXPECT_LE(done.values.at("turbidity"), 6.0);
+  ASSERT_TRUE(done.rmse_before && done.rmse_after);
+  EXPECT_LE(*done.rmse_after, *done.rmse_before);
+  EXPECT_TRUE(done.finished.has_value());
+  EXPECT_EQ(client.fit(queued.id).values, done.values);
+  const Page<Fit> listed = client.fits();
+  ASSERT_EQ(listed.items.size(), 1u);
+  EXPECT_EQ(listed.items[0].id, queued.id);
+  try {
+    client.fit(queued.id + 1000);
+    FAIL() << "an unknown fit was answered";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), 404);
+  }
+}
+
 }  // namespace
 }  // namespace clearsky::client

@@ -314,5 +314,48 @@ TEST_F(SkyClient, NoServerIsAConnectionError) {
   }
 }
 
+// GET /v1/skypatches: Tregenza's 145 patches and the ground in Radiance's order, the separate
+// sun, and the luminance output one number per patch; a bad scheme is an Error naming it.
+TEST_F(SkyClient, SkyPatchesInRadiancesOrder) {
+  SkyPatchesRequest request;
+  request.model = "preetham";
+  request.sun = SunAngles{30, 135};
+  request.output = "luminance";
+  const SkyPatchesResult vector = client().sky_patches(request);
+  EXPECT_EQ(vector.scheme, "tregenza");
+  EXPECT_EQ(vector.output, "luminance");
+  ASSERT_EQ(vector.patches.size(), 146u);
+  double solid_angle_sr = 0;
+  for (std::size_t k = 0; k < vector.patches.size(); ++k) {
+    EXPECT_EQ(vector.patches[k].patch, static_cast<int>(k));
+    ASSERT_EQ(vector.patches[k].value.size(), 1u);
+    EXPECT_GE(vector.patches[k].value[0], 0.0);
+    if (k > 0) solid_angle_sr += vector.patches[k].solid_angle_sr;
+  }
+  EXPECT_NEAR(solid_angle_sr, 2.0 * 3.14159265358979, 1e-9);  // the sky hemisphere
+  ASSERT_TRUE(vector.sun_source.has_value());
+  EXPECT_NEAR(vector.sun_source->altitude_deg, 60.0, 1e-9);
+  EXPECT_GT(vector.sun_source->value[0], vector.patches[1].value[0]);
+
+  request.output = "spectral";
+  request.scheme = "reinhart";
+  request.mf = 2;
+  request.wavelengths_nm = {450, 550};
+  const SkyPatchesResult spectral = client().sky_patches(request);
+  EXPECT_EQ(spectral.mf, 2);
+  EXPECT_EQ(spectral.patches.size(), 578u);
+  EXPECT_EQ(spectral.wavelengths_nm, (std::vector<double>{450, 550}));
+  EXPECT_EQ(spectral.patches[10].value.size(), 2u);
+
+  request.scheme = "klems";
+  try {
+    client().sky_patches(request);
+    FAIL() << "an unknown scheme was answered";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), 400);
+    EXPECT_EQ(e.parameter(), "scheme");
+  }
+}
+
 }  // namespace
 }  // namespace clearsky::client

@@ -79,6 +79,7 @@ class Client {
   // failed download leaves no file behind.
   SkydomeDownload skydome_to_file(const SkydomeRequest& request,
                                   const std::filesystem::path& file) const;
+  SkyPatchesResult sky_patches(const SkyPatchesRequest& request) const;
 
   // Datasets (writes need the token).
   Page<DatasetSummary> datasets(const PageRequest& page = {}) const;
@@ -101,6 +102,14 @@ class Client {
   EvaluationTicket wait_for_ticket(std::int64_t ticket, const WaitOptions& wait = {}) const;
   Evaluation evaluation(std::int64_t id, const EvaluationQuery& query = {}) const;
   Page<EvaluationSummary> evaluations(const EvaluationFilter& filter = {}) const;
+
+  // Fits (docs/fits.md; creating one needs the token): the answer to create_fit is the queued
+  // fit; follow it with wait_for_fit, which throws an Error (code "fit_failed" or
+  // "fit_interrupted") when the fit did not succeed.
+  Fit create_fit(const FitRequest& request) const;
+  Fit fit(std::int64_t id) const;
+  Page<Fit> fits(const PageRequest& page = {}) const;
+  Fit wait_for_fit(std::int64_t id, const WaitOptions& wait = {}) const;
 
   // Jobs.
   Job create_job(const JobRequest& request) const;

@@ -3,9 +3,11 @@
 // 8601 texts; ids are the server's integers (never reused).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -227,6 +229,35 @@ struct Job {
   std::optional<std::string> last_run;
   std::optional<std::string> next_run;
   std::vector<JobResult> last_result;
+};
+
+// POST /v1/fits (docs/fits.md "Over HTTP"): the options of `clearsky fit`.
+struct FitRequest {
+  std::string dataset;
+  std::string model;
+  std::vector<std::string> free;  // empty: the model's default free parameters
+  // Per free parameter: [low, high]; absent: the descriptor's range.
+  std::map<std::string, std::array<double, 2>> bounds;
+  Parameters parameters;              // the fixed parameters (and "quality")
+  std::vector<std::string> captures;  // capture labels; empty: all of the dataset
+  bool per_capture = false;
+  bool cross_validate = false;
+  std::optional<int> max_evaluations;
+};
+// A fit's state; values and the RMSE (mW/(m2.sr.nm)) once it succeeded.
+struct Fit {
+  std::int64_t id = 0;
+  std::string dataset;
+  std::string model;
+  std::string status;   // "queued", "running", "succeeded", "failed", "interrupted"
+  double progress = 0;  // 0..1
+  std::optional<std::string> stage;
+  std::map<std::string, double> values;  // the fitted parameters
+  std::optional<double> rmse_before, rmse_after, cross_validated_rmse;
+  std::string created;
+  std::optional<std::string> finished;
+  std::optional<std::string> error;
+  bool done() const { return status != "queued" && status != "running"; }
 };
 
 }  // namespace clearsky::client

@@ -264,4 +264,34 @@ struct SkydomeDownload {
   std::uint64_t bytes = 0;   // written to the stream or file
 };
 
+// GET /v1/skypatches: the sky vector of Radiance's daylight-coefficient tools
+// (docs/building-energy.md "Sky-patch vectors"), in Radiance's patch order.
+struct SkyPatchesRequest : SkyQuery {
+  std::optional<std::string> scheme;         // "tregenza" (default) or "reinhart"
+  std::optional<int> mf;                     // Reinhart subdivision, 1..6
+  std::optional<std::string> sun_handling;   // the query's sun: "separate" (default) or "patch"
+  std::optional<std::string> output;         // "spectral" (default), "rgb" or "luminance"
+  std::optional<double> ground_reflectance;  // the ground patch's Lambertian reflectance
+  std::vector<double> wavelengths_nm;        // spectral output; empty: the model's grid
+};
+// One patch (patch 0 is the ground) or the separate sun: its value is the radiance averaged
+// over its solid angle, W/(m2.sr.nm) per wavelength (spectral), Radiance's RGB (3 values) or
+// the luminance in cd/m2 (1 value).
+struct SkyPatch {
+  int patch = 0;  // -1 for the separate sun
+  double altitude_deg = 0;
+  double azimuth_deg = 0;  // clockwise from North
+  double solid_angle_sr = 0;
+  std::vector<double> value;
+};
+struct SkyPatchesResult {
+  std::string model;
+  std::string scheme;
+  int mf = 1;
+  std::string output;
+  std::vector<double> wavelengths_nm;  // spectral output
+  std::vector<SkyPatch> patches;
+  std::optional<SkyPatch> sun_source;  // with sun_handling "separate" and the sun up
+};
+
 }  // namespace clearsky::client
