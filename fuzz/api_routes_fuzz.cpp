@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <string_view>
 
@@ -167,20 +168,41 @@ bool non_negative_member(std::string_view key) {
          key == "luminance_cd_m2" || key.ends_with("_w_m2") || key.ends_with("_w_m2_nm");
 }
 
+// The members a sky answer may leave null, each only with the member that says why
+// (docs/http-api.md): the broadband figures when the answer names why the model cannot go
+// broadband (broadband_unavailable), and the quality level's error when the request overrode
+// one of the level's options (quality_overridden). Any other null could be a value that was
+// not computed.
+std::set<std::string> explained_null_members(const nlohmann::json& body) {
+  std::set<std::string> out;
+  if (!body.is_object()) return out;
+  const auto unavailable = body.find("broadband_unavailable");
+  if (unavailable != body.end() && unavailable->is_string() &&
+      !unavailable->get<std::string>().empty()) {
+    out.insert("broadband");
+    out.insert("broadband_irradiance_w_m2");
+  }
+  const auto overridden = body.find("quality_overridden");
+  if (overridden != body.end() && !overridden->empty()) out.insert("quality_error");
+  return out;
+}
+
 void check_json_numbers(const nlohmann::json& value, bool sky, bool non_negative,
-                        const std::string& where, const std::string& input) {
-  if (value.is_null()) check(!sky, "null in a sky answer at " + where, input);
+                        const std::string& where, const std::string& input,
+                        const std::set<std::string>& nullable = {}, bool explained = false) {
+  if (value.is_null()) check(!sky || explained, "null in a sky answer at " + where, input);
   if (value.is_number()) {
     const double x = value.get<double>();
     check(std::isfinite(x), "non-finite number at " + where, input);
     check(!non_negative || x >= 0.0, "negative number at " + where, input);
   } else if (value.is_array()) {
     for (std::size_t i = 0; i < value.size(); ++i)
-      check_json_numbers(value[i], sky, non_negative, where + "[" + std::to_string(i) + "]", input);
+      check_json_numbers(value[i], sky, non_negative, where + "[" + std::to_string(i) + "]", input,
+                         nullable);
   } else if (value.is_object()) {
     for (const auto& [key, member] : value.items())
       check_json_numbers(member, sky, non_negative || non_negative_member(key), where + "." + key,
-                         input);
+                         input, nullable, nullable.count(key) > 0);
   }
 }
 
@@ -236,7 +258,8 @@ void check_response(const api::ApiResponse& response, std::string_view pattern,
     } catch (const nlohmann::json::exception& e) {
       fail(std::string("2xx body is not JSON: ") + e.what(), input);
     }
-    check_json_numbers(body, sky_route(pattern), false, "body", input);
+    check_json_numbers(body, sky_route(pattern), false, "body", input,
+                       explained_null_members(body));
   } else if (response.content_type.starts_with("text/csv")) {
     check_csv(response.body, input);
   }
