@@ -48,6 +48,12 @@ std::vector<double> sparse_sun_zeniths_deg(double max_sun_zenith_deg) {
   return out;
 }
 
+std::vector<double> swept_sun_zeniths_deg(double max_sun_zenith_deg, bool per_sun_precomputation,
+                                          bool dense_per_sun) {
+  return per_sun_precomputation && !dense_per_sun ? sparse_sun_zeniths_deg(max_sun_zenith_deg)
+                                                  : sun_zeniths_deg(max_sun_zenith_deg);
+}
+
 std::vector<double> view_zeniths_deg(double last_deg) {
   const double fine_from = 90.0 - kNearHorizonHalfWidthDeg;
   const double fine_to = 90.0 + kNearHorizonHalfWidthDeg;

@@ -34,6 +34,10 @@ std::vector<double> sun_zeniths_deg(double max_sun_zenith_deg);
 // zenith, of the horizon and of max_sun_zenith_deg, 5-degree steps between.
 std::vector<double> sparse_sun_zeniths_deg(double max_sun_zenith_deg);
 inline constexpr double kSparseSunZenithStepDeg = 5.0;
+// The sun zeniths of the sun sweep: every step, or the sparse list for a model that precomputes
+// per sun unless dense_per_sun (StressOptions::dense_per_sun_zeniths) asks for every step.
+std::vector<double> swept_sun_zeniths_deg(double max_sun_zenith_deg, bool per_sun_precomputation,
+                                          bool dense_per_sun);
 // 0 to last_deg, finer within kNearHorizonHalfWidthDeg of 90.
 std::vector<double> view_zeniths_deg(double last_deg);
 // [0, 360): offsets from the sun's azimuth.

@@ -92,13 +92,14 @@ class ModelStress {
     report_.options = base_.options;
     const std::shared_ptr<const SkyModel> model = build(base_, "base configuration");
     if (model) {
-      sweep_sun_zenith(*model);
-      sweep_view_zenith(*model);
-      sweep_view_azimuth(*model);
-      sweep_altitude(*model);
+      if (runs("sun_zenith")) sweep_sun_zenith(*model);
+      if (runs("view_zenith")) sweep_view_zenith(*model);
+      if (runs("view_azimuth")) sweep_view_azimuth(*model);
+      if (runs("altitude")) sweep_altitude(*model);
     }
-    for (const ParameterSpec& p : d.parameters)
-      if (p.atmosphere || options_.sweep_options) sweep_parameter(p);
+    if (runs("parameters"))
+      for (const ParameterSpec& p : d.parameters)
+        if (p.atmosphere || options_.sweep_options) sweep_parameter(p);
     if (model) {
       for (BoundCheck* check : {&report_.symmetry, &report_.energy, &report_.radiance_below_sun})
         apply_documented_limit(*model, *check);
@@ -265,6 +266,10 @@ class ModelStress {
     return point;
   }
 
+  bool runs(const std::string& sweep) const {
+    return options_.sweeps.empty() || options_.sweeps.contains(sweep);
+  }
+
   std::shared_ptr<const SunState> sun_state(const SkyModel& m, double sun_zenith_deg) {
     PrecomputeContext context;
     context.threads = options_.precompute_threads;
@@ -294,41 +299,54 @@ class ModelStress {
     std::vector<Chain> chains = chains_named(ps);
     chains.push_back({"sun_irradiance", {}});
     const std::vector<double> suns =
-        thinned(caps.per_sun_precomputation ? sparse_sun_zeniths_deg(caps.max_sun_zenith_deg)
-                                            : sun_zeniths_deg(caps.max_sun_zenith_deg),
+        thinned(swept_sun_zeniths_deg(caps.max_sun_zenith_deg, caps.per_sun_precomputation,
+                                      options_.dense_per_sun_zeniths),
                 options_.max_points_per_sweep);
-    for (double sun_zenith : suns) {
-      const auto sun = sun_state(m, sun_zenith);
-      std::vector<ChainPoint> points = radiance(m, *sun, sun_zenith, altitude_m, ps, sun_zenith);
-      for (std::size_t i = 0; i < ps.size(); ++i) chains[i].points.push_back(std::move(points[i]));
-      chains.back().points.push_back(irradiance_point(m, m.sun_irradiance(*sun, {altitude_m}),
-                                                      sun_zenith, altitude_m, sun_zenith));
-    }
-    summarize("sun_zenith_deg", "sun_zenith_deg", chains, m, altitude_m);
-
-    // The sky irradiance and the energy bound, on a coarser step (each is a quadrature).
+    // The sky irradiance and the energy bound, on a coarser step (each is a quadrature), except
+    // for models that precompute per sun: there the state is paid for already, so every sun.
     std::vector<Chain> irradiance = {{"sky_irradiance", {}}, {"global_irradiance", {}}};
     const std::vector<double> irradiance_suns =
         caps.per_sun_precomputation
             ? suns
             : thinned(steps_from_to(0.0, caps.max_sun_zenith_deg, kIrradianceSunStepDeg),
                       options_.max_points_per_sweep);
-    for (double sun_zenith : irradiance_suns) {
+    std::size_t next_irradiance = 0;
+    for (double sun_zenith : suns) {
       const auto sun = sun_state(m, sun_zenith);
-      const SpectralSample direct = m.sun_irradiance(*sun, {altitude_m});
-      const SpectralSample sky = m.sky_irradiance(*sun, {altitude_m});
-      irradiance[0].points.push_back(irradiance_point(m, sky, sun_zenith, altitude_m, sun_zenith));
-      ChainPoint global{sun_zenith, false, {}, SampleStatus::ok};
-      if (direct.status == SampleStatus::ok && sky.status == SampleStatus::ok) {
-        global.answered = true;
-        const double cos_sun = std::max(0.0, std::cos(degrees_to_radians(sun_zenith)));
-        for (std::size_t w = 0; w < sky.value.size(); ++w)
-          global.values.push_back(sky.value[w] + direct.value[w] * cos_sun);
+      std::vector<ChainPoint> points = radiance(m, *sun, sun_zenith, altitude_m, ps, sun_zenith);
+      for (std::size_t i = 0; i < ps.size(); ++i) chains[i].points.push_back(std::move(points[i]));
+      chains.back().points.push_back(irradiance_point(m, m.sun_irradiance(*sun, {altitude_m}),
+                                                      sun_zenith, altitude_m, sun_zenith));
+      // One state per sun serves both sweeps of a per-sun model (a Nishita96 state costs
+      // seconds).
+      if (caps.per_sun_precomputation) {
+        add_irradiance_point(m, *sun, sun_zenith, altitude_m, irradiance);
+        ++next_irradiance;
       }
-      irradiance[1].points.push_back(std::move(global));
-      check_energy(m, direct, sky, sun_zenith, altitude_m);
+    }
+    summarize("sun_zenith_deg", "sun_zenith_deg", chains, m, altitude_m);
+    for (; next_irradiance < irradiance_suns.size(); ++next_irradiance) {
+      const double sun_zenith = irradiance_suns[next_irradiance];
+      add_irradiance_point(m, *sun_state(m, sun_zenith), sun_zenith, altitude_m, irradiance);
     }
     summarize("sun_zenith_deg irradiance", "sun_zenith_deg", irradiance, m, altitude_m);
+  }
+
+  // The sky and global irradiance of one sun, and the energy bound on them.
+  void add_irradiance_point(const SkyModel& m, const SunState& sun, double sun_zenith,
+                            double altitude_m, std::vector<Chain>& irradiance) {
+    const SpectralSample direct = m.sun_irradiance(sun, {altitude_m});
+    const SpectralSample sky = m.sky_irradiance(sun, {altitude_m});
+    irradiance[0].points.push_back(irradiance_point(m, sky, sun_zenith, altitude_m, sun_zenith));
+    ChainPoint global{sun_zenith, false, {}, SampleStatus::ok};
+    if (direct.status == SampleStatus::ok && sky.status == SampleStatus::ok) {
+      global.answered = true;
+      const double cos_sun = std::max(0.0, std::cos(degrees_to_radians(sun_zenith)));
+      for (std::size_t w = 0; w < sky.value.size(); ++w)
+        global.values.push_back(sky.value[w] + direct.value[w] * cos_sun);
+    }
+    irradiance[1].points.push_back(std::move(global));
+    check_energy(m, direct, sky, sun_zenith, altitude_m);
   }
 
   void sweep_view_zenith(const SkyModel& m) {

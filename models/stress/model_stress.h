@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,13 @@ struct StressOptions {
   std::map<std::string, double> options;
   // Threads of each precomputation (0: all cores).
   unsigned precompute_threads = 0;
+  // Models that precompute per sun (Haber, Nishita96) sweep the sun zenith every 0.05 degree
+  // over the whole range too, instead of only near the zenith, the horizon and the largest
+  // zenith: one per-sun state per step, hours for Nishita96 (docs/stability.md).
+  bool dense_per_sun_zeniths = false;
+  // The sweeps to run, by name (sun_zenith, view_zenith, view_azimuth, altitude, parameters);
+  // empty: all of them.
+  std::set<std::string> sweeps;
 };
 
 // Relative difference of mirrored views above which the symmetry check fails: the contract's

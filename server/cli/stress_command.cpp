@@ -1,5 +1,5 @@
 // `clearsky stress [--models all|ID,...] [--samples N] [--parameter-values N] [--options JSON]
-// [--quality LEVEL] [--threads N] [--json]`: the
+// [--quality LEVEL] [--threads N] [--dense-sun-sweep] [--sweeps NAME,...] [--json]`: the
 // numerical stress run of docs/stability.md, dense sweeps over each model's declared domain
 // (models/stress/model_stress.h). --samples N thins every sweep to at most N points and sweeps
 // each parameter through min(N, 7) values (at least 2; --parameter-values sets it); without it
@@ -80,6 +80,8 @@ void add_stress_command(CLI::App& app) {
     std::string options;
     std::string quality = "standard";
     unsigned threads = 0;
+    bool dense_sun_sweep = false;
+    std::vector<std::string> sweeps;
     bool json = false;
   };
   auto options = std::make_shared<Options>();
@@ -107,6 +109,14 @@ void add_stress_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--threads", options->threads,
                       "Threads of each precomputation (default 0: all cores)");
+  command->add_flag("--dense-sun-sweep", options->dense_sun_sweep,
+                    "Models that precompute per sun (Haber, Nishita96) also sweep the sun "
+                    "zenith every 0.05 degree over the whole range (one state per step: hours)");
+  command
+      ->add_option("--sweeps", options->sweeps, "Sweeps to run, separated by commas (default: all)")
+      ->delimiter(',')
+      ->check(
+          CLI::IsMember({"sun_zenith", "view_zenith", "view_azimuth", "altitude", "parameters"}));
   command->add_flag("--json", options->json, "Print one JSON object: {\"models\": [...]}");
   command->callback([options] {
     stress::StressOptions run;
@@ -115,6 +125,8 @@ void add_stress_command(CLI::App& app) {
       run.parameter_values = std::max<std::size_t>(2, std::min<std::size_t>(options->samples, 7));
     if (options->parameter_values != 0) run.parameter_values = options->parameter_values;
     run.precompute_threads = options->threads;
+    run.dense_per_sun_zeniths = options->dense_sun_sweep;
+    run.sweeps.insert(options->sweeps.begin(), options->sweeps.end());
     if (!options->options.empty()) {
       const nlohmann::json parsed = nlohmann::json::parse(options->options, nullptr, false);
       if (!parsed.is_object())

@@ -18,6 +18,18 @@ TEST(DomainSweeps, SunZenithsStepByAFiftiethOfADegreeToTheLargestDeclared) {
   EXPECT_NEAR(sun_zeniths_deg(101.39).back(), 101.39, 1e-12);
 }
 
+TEST(DomainSweeps, PerSunModelsSweepEveryStepOnlyWhenDenseIsAsked) {
+  const std::vector<double> every = swept_sun_zeniths_deg(111.0, false, false);
+  const std::vector<double> sparse = swept_sun_zeniths_deg(111.0, true, false);
+  const std::vector<double> dense = swept_sun_zeniths_deg(111.0, true, true);
+  EXPECT_EQ(every.size(), 2221u);  // 0, 0.05, ..., 111
+  EXPECT_EQ(dense, every);
+  EXPECT_EQ(sparse, sparse_sun_zeniths_deg(111.0));
+  EXPECT_LT(sparse.size(), every.size() / 10);
+  // The dense list has no gap wider than a step.
+  for (std::size_t i = 1; i < dense.size(); ++i) EXPECT_NEAR(dense[i] - dense[i - 1], 0.05, 1e-9);
+}
+
 TEST(DomainSweeps, ViewZenithsAreFinerNearTheHorizon) {
   const std::vector<double> z = view_zeniths_deg(180.0);
   EXPECT_EQ(z.front(), 0.0);

@@ -66,6 +66,33 @@ TEST_P(ReducedStress, FindsNothingUndeclared) {
   }
 }
 
+// A model that precomputes per sun runs one state per sun for both the radiance and the
+// irradiance of the sun sweep; --sweeps runs only the sweeps named.
+TEST(SunSweepOfPerSunModels, OneStatePerSunServesRadianceAndIrradianceAndOnlyTheNamedSweepsRun) {
+  const ModelFactory* nishita96 = nullptr;
+  for (const ModelFactory* f : testing::registered_factories())
+    if (f->descriptor->id == "nishita96") nishita96 = f;
+  ASSERT_NE(nishita96, nullptr);
+  StressOptions options;
+  options.options = testing::cheap_options();
+  options.precompute_threads = 1;
+  options.sweeps = {"sun_zenith"};
+  options.dense_per_sun_zeniths = true;
+  options.max_points_per_sweep = 24;
+  const ModelStressReport r = stress_model(*nishita96, options);
+  std::size_t radiance_points = 0, irradiance_points = 0;
+  for (const SweepSummary& s : r.sweeps) {
+    EXPECT_EQ(s.coordinate, "sun_zenith_deg") << s.name;
+    if (s.name == "sun_zenith_deg") radiance_points = s.points;
+    if (s.name == "sun_zenith_deg irradiance") irradiance_points = s.points;
+  }
+  EXPECT_EQ(radiance_points, 24u);
+  EXPECT_EQ(irradiance_points, radiance_points);
+  EXPECT_EQ(r.non_finite_values, 0u);
+  EXPECT_EQ(r.negative_values, 0u);
+  EXPECT_TRUE(stress_passed(r));
+}
+
 INSTANTIATE_TEST_SUITE_P(Registered, ReducedStress,
                          ::testing::ValuesIn(testing::registered_factories()),
                          [](const ::testing::TestParamInfo<const ModelFactory*>& param) {
