@@ -18,10 +18,11 @@ def free_port():
 
 
 def start_server(binary, workdir, models, extra=(), open_files=None, file_bytes=None,
-                 ready_s=120):
+                 ready_s=120, cache_dir=None):
     """Starts `binary serve` on a free port; returns (process, port) once it is ready (ready_s
     at most). Its output goes to workdir/server.log. open_files: its RLIMIT_NOFILE;
-    file_bytes: its RLIMIT_FSIZE (SIGXFSZ ignored, so that a write beyond fails with EFBIG)."""
+    file_bytes: its RLIMIT_FSIZE (SIGXFSZ ignored, so that a write beyond fails with EFBIG);
+    cache_dir: its table cache (default workdir/cache)."""
     port = free_port()
     log = open(os.path.join(workdir, "server.log"), "ab")
 
@@ -34,7 +35,8 @@ def start_server(binary, workdir, models, extra=(), open_files=None, file_bytes=
 
     process = subprocess.Popen(
         [binary, "serve", "--port", str(port), "--db", os.path.join(workdir, "db.sqlite"),
-         "--cache-dir", os.path.join(workdir, "cache"), "--models", models, *extra],
+         "--cache-dir", cache_dir or os.path.join(workdir, "cache"), "--models", models,
+         *extra],
         stdout=log, stderr=subprocess.STDOUT, preexec_fn=limits)
     deadline = time.time() + ready_s
     while time.time() < deadline:

@@ -29,10 +29,9 @@ import sys
 import tempfile
 import time
 import http.client
-import subprocess
 
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "hostile"))
-from serve_process import free_port  # noqa: E402
+import serve_process  # noqa: E402
 
 ROOT = os.path.join(os.path.dirname(__file__), "..", "..")
 SUNS_DEG = [20.0, 45.0, 70.0, 85.0]
@@ -45,26 +44,8 @@ SERVE_LIMITS = ["--build-rate", "0", "--table-capacity", "64", "--table-memory",
 def start_server(binary, workdir, models, extra, cache_dir=None):
     """`binary serve` on a free port, ready once /readyz answers 200 (the default tables of a
     table model take minutes on a loaded machine: 1800 s at most)."""
-    port = free_port()
-    log = open(os.path.join(workdir, "server.log"), "ab")
-    process = subprocess.Popen(
-        [binary, "serve", "--port", str(port), "--db", os.path.join(workdir, "db.sqlite"),
-         "--cache-dir", cache_dir or os.path.join(workdir, "cache"), "--models", models, *extra],
-        stdout=log, stderr=subprocess.STDOUT)
-    deadline = time.time() + 1800
-    while time.time() < deadline:
-        if process.poll() is not None:
-            raise RuntimeError("the server exited at start (see %s/server.log)" % workdir)
-        try:
-            c = http.client.HTTPConnection("127.0.0.1", port, timeout=5)
-            c.request("GET", "/readyz")
-            if c.getresponse().status == 200:
-                return process, port
-        except OSError:
-            pass
-        time.sleep(0.5)
-    process.kill()
-    raise RuntimeError("the server was not ready within 1800 s")
+    return serve_process.start_server(binary, workdir, models, extra, ready_s=1800,
+                                      cache_dir=cache_dir)
 
 
 def levels_of(model):
