@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "api/encode/atlas_json.h"
+#include "api/evaluation/evaluation_runner.h"
 #include "api/evaluation/prepared_dataset.h"
 #include "models/atlas/model_atlas.h"
 #include "models/registry.h"
@@ -22,20 +23,6 @@
 namespace clearsky::cli {
 
 namespace {
-
-std::vector<const ModelFactory*> atlas_models(const std::vector<std::string>& ids) {
-  std::vector<const ModelFactory*> out;
-  if (ids.size() == 1 && ids[0] == "all") {
-    for (const ModelFactory& f : registered_models()) out.push_back(&f);
-    return out;
-  }
-  for (const std::string& id : ids) {
-    const ModelFactory* f = find_model(id);
-    if (f == nullptr) throw CLI::ValidationError("--models", "unknown model '" + id + "'");
-    out.push_back(f);
-  }
-  return out;
-}
 
 void print_text(const atlas::ModelAtlasReport& r) {
   std::cout << r.model << " (version " << r.version << "): " << r.seconds << " s; reference "
@@ -89,7 +76,8 @@ void add_atlas_command(CLI::App& app) {
                       "cores)");
   command->add_flag("--json", options->json, "Print one JSON object: {\"models\": [...]}");
   command->callback([options] {
-    const std::vector<const ModelFactory*> factories = atlas_models(options->models);
+    const std::vector<const ModelFactory*> factories =
+        api::resolve_models(options->models, registered_models());
     api::PreparedDataset prepared;
     if (!options->dataset.empty()) {
       storage::Database db = open_cli_database(options->db);

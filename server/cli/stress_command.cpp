@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "api/encode/stress_json.h"
+#include "api/evaluation/evaluation_runner.h"
 #include "models/quality/quality_levels.h"
 #include "models/registry.h"
 #include "models/stress/documented_limits.h"
@@ -22,20 +23,6 @@
 namespace clearsky::cli {
 
 namespace {
-
-std::vector<const ModelFactory*> chosen_models(const std::vector<std::string>& ids) {
-  std::vector<const ModelFactory*> out;
-  if (ids.size() == 1 && ids[0] == "all") {
-    for (const ModelFactory& f : registered_models()) out.push_back(&f);
-    return out;
-  }
-  for (const std::string& id : ids) {
-    const ModelFactory* f = find_model(id);
-    if (f == nullptr) throw std::invalid_argument("unknown model '" + id + "' (--models)");
-    out.push_back(f);
-  }
-  return out;
-}
 
 void print_text(const stress::ModelStressReport& r) {
   std::cout << r.model << " (version " << r.version << "): " << r.samples << " samples, "
@@ -139,7 +126,7 @@ void add_stress_command(CLI::App& app) {
     }
     nlohmann::json models = nlohmann::json::array();
     bool all_passed = true;
-    for (const ModelFactory* factory : chosen_models(options->models)) {
+    for (const ModelFactory* factory : api::resolve_models(options->models, registered_models())) {
       stress::StressOptions model_run = run;
       apply_quality_level(
           *factory->descriptor,
