@@ -12,6 +12,7 @@
 #include <regex>
 #include <thread>
 
+#include "tests/server/http/answer_memory_gauge.h"
 #include "tests/server/http/hostile_clients.h"
 #include "tests/server/http/watched_serve_process.h"
 #include "tests/support/sanitizers.h"
@@ -39,15 +40,6 @@ std::size_t status_bytes(pid_t pid, const std::string& field) {
     if (line.rfind(field + ":", 0) == 0) return std::stoull(line.substr(field.size() + 1)) * 1024;
   }
   return 0;
-}
-
-bool ready(int port) {
-  const auto end = std::chrono::steady_clock::now() + 60s;
-  while (std::chrono::steady_clock::now() < end) {
-    if (testing::probe(port, "/readyz")) return true;
-    std::this_thread::sleep_for(20ms);
-  }
-  return false;
 }
 
 // GET path on a new connection: the answer's head and, unless it is a 200 (a skydome, left
@@ -86,24 +78,13 @@ std::string await_status(int port, const std::string& path, const std::string& s
   return answer;
 }
 
-// clearsky_answer_memory_bytes{state="reserved"} of GET /metrics (-1 when absent).
-double reserved_bytes(const WatchedServeProcess& server) {
-  auto client = server.client();
-  const auto r = client.Get("/metrics");
-  if (!r || r->status != 200) return -1;
-  std::smatch m;
-  static const std::regex kGauge(R"(clearsky_answer_memory_bytes\{state="reserved"\} (\S+))");
-  if (!std::regex_search(r->body, m, kGauge)) return -1;
-  return std::stod(m[1].str());
-}
-
 TEST(AnswerMemory, SlowReadersOfSkydomesStayWithinTheBudget) {
   WatchedServeProcess server({"--models", "preetham", "--prebuild-three", "false",
                               "--answer-memory", std::to_string(kBudgetBytes),
                               // The readers are not cut during the test.
                               "--send-rate-grace", "300", "--write-timeout", "300"});
   ASSERT_GT(server.port(), 0) << server.log();
-  ASSERT_TRUE(ready(server.port())) << server.log();
+  ASSERT_TRUE(testing::ready(server.port())) << server.log();
   const std::size_t peak_before = status_bytes(server.pid(), "VmHWM");
   ASSERT_GT(peak_before, 0u);
   {
@@ -115,7 +96,7 @@ TEST(AnswerMemory, SlowReadersOfSkydomesStayWithinTheBudget) {
     EXPECT_NE(refused.find("Retry-After: "), std::string::npos) << refused;
     EXPECT_NE(refused.find(R"("parameter":"answer_memory")"), std::string::npos) << refused;
     EXPECT_NE(refused.find(R"("code":"busy")"), std::string::npos) << refused;
-    const double held = reserved_bytes(server);
+    const double held = testing::reserved_answer_bytes(server);
     EXPECT_GT(held, 0.0);
     EXPECT_LE(held, static_cast<double>(kBudgetBytes));
     for (int i = 0; i < 4; ++i) {
@@ -135,9 +116,9 @@ TEST(AnswerMemory, SlowReadersOfSkydomesStayWithinTheBudget) {
   // The readers left: their bands come back, and a skydome is answered again.
   EXPECT_TRUE(server.healthy_within_1s());
   const auto end = std::chrono::steady_clock::now() + 60s;
-  while (reserved_bytes(server) != 0.0 && std::chrono::steady_clock::now() < end)
+  while (testing::reserved_answer_bytes(server) != 0.0 && std::chrono::steady_clock::now() < end)
     std::this_thread::sleep_for(100ms);
-  EXPECT_EQ(reserved_bytes(server), 0.0);
+  EXPECT_EQ(testing::reserved_answer_bytes(server), 0.0);
   const std::string answered = await_status(server.port(), kSkydome, "200");
   EXPECT_EQ(answered.rfind("HTTP/1.1 200", 0), 0u) << answered.substr(0, 400);
   EXPECT_TRUE(server.healthy_within_1s());

@@ -11,6 +11,7 @@
 #include <regex>
 #include <thread>
 
+#include "tests/server/http/answer_memory_gauge.h"
 #include "tests/server/http/hostile_clients.h"
 #include "tests/server/http/watched_serve_process.h"
 
@@ -27,33 +28,13 @@ constexpr const char* kSkydome =
 constexpr const char* kSingleView =
     "/v1/radiance?model=preetham&sun_zenith=30&sun_azimuth=0&view_zenith=45&view_azimuth=90";
 
-bool ready(int port) {
-  const auto end = std::chrono::steady_clock::now() + 60s;
-  while (std::chrono::steady_clock::now() < end) {
-    if (testing::probe(port, "/readyz")) return true;
-    std::this_thread::sleep_for(20ms);
-  }
-  return false;
-}
-
-// clearsky_answer_memory_bytes{state="reserved"} of GET /metrics (-1 when absent).
-double reserved_bytes(const WatchedServeProcess& server) {
-  auto client = server.client();
-  const auto r = client.Get("/metrics");
-  if (!r || r->status != 200) return -1;
-  std::smatch m;
-  static const std::regex kGauge(R"(clearsky_answer_memory_bytes\{state="reserved"\} (\S+))");
-  if (!std::regex_search(r->body, m, kGauge)) return -1;
-  return std::stod(m[1].str());
-}
-
 // The reserved bytes once the answers sent have given theirs back (their responses are
 // destroyed just after the client has read the last byte): 0 within 30 s.
 double reserved_once_released(const WatchedServeProcess& server) {
   const auto end = std::chrono::steady_clock::now() + 30s;
-  while (reserved_bytes(server) != 0.0 && std::chrono::steady_clock::now() < end)
+  while (testing::reserved_answer_bytes(server) != 0.0 && std::chrono::steady_clock::now() < end)
     std::this_thread::sleep_for(50ms);
-  return reserved_bytes(server);
+  return testing::reserved_answer_bytes(server);
 }
 
 // A batch of `views` views of the preetham sky (radiance at every wavelength of its grid, or
@@ -94,7 +75,7 @@ TEST(BatchAnswerMemory, BatchesAreCountedInTheAnswerMemoryBudget) {
                               "--answer-memory", std::to_string(kBudgetBytes), "--send-rate-grace",
                               "300", "--write-timeout", "300"});
   ASSERT_GT(server.port(), 0) << server.log();
-  ASSERT_TRUE(ready(server.port())) << server.log();
+  ASSERT_TRUE(testing::ready(server.port())) << server.log();
 
   // Estimated at about 4.8 kB per view of radiance on preetham's 40 bins, 1.4 kB per RGB view
   // (api/http/batch_answer_bytes.h): 1,000 radiance views are above the budget alone.
@@ -111,9 +92,9 @@ TEST(BatchAnswerMemory, BatchesAreCountedInTheAnswerMemoryBudget) {
     HostileClients reader(HostileClients::Kind::slow_reader, server.port(), 1, kSkydome);
     ASSERT_EQ(reader.connected(), 1u);
     const auto end = std::chrono::steady_clock::now() + 60s;
-    while (reserved_bytes(server) <= 0.0 && std::chrono::steady_clock::now() < end)
+    while (testing::reserved_answer_bytes(server) <= 0.0 && std::chrono::steady_clock::now() < end)
       std::this_thread::sleep_for(50ms);
-    ASSERT_GT(reserved_bytes(server), 0.0) << server.log();
+    ASSERT_GT(testing::reserved_answer_bytes(server), 0.0) << server.log();
     for (const auto& [path, views] :
          {std::pair<std::string, std::size_t>{"/v1/radiance", 700}, {"/v1/rgb", 2500}}) {
       const Answer busy = post(server, path, views);

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace clearsky::server::testing {
@@ -68,6 +69,17 @@ inline std::optional<std::chrono::duration<double>> probe(int port,
   ::close(fd);
   if (answer.rfind("HTTP/1.1 200", 0) != 0) return std::nullopt;
   return std::chrono::steady_clock::now() - start;
+}
+
+// Whether GET /readyz is answered 200 within `within` (the model tables are built): a sky
+// request asked before may be a 503.
+inline bool ready(int port, std::chrono::seconds within = std::chrono::seconds(60)) {
+  const auto end = std::chrono::steady_clock::now() + within;
+  while (std::chrono::steady_clock::now() < end) {
+    if (probe(port, "/readyz")) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
 }
 
 // Connections of one kind of attacker; their sockets close with the object.

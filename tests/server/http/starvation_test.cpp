@@ -25,16 +25,6 @@ using Kind = HostileClients::Kind;
 constexpr const char* kSkydome =
     "/v1/skydome?model=preetham&sun_zenith=30&sun_azimuth=0&size=512&channels=spectral";
 
-// Whether the model tables are ready (/readyz) within 60 s: a skydome asked before is a 503.
-bool ready(int port) {
-  const auto end = std::chrono::steady_clock::now() + 60s;
-  while (std::chrono::steady_clock::now() < end) {
-    if (testing::probe(port, "/readyz")) return true;
-    std::this_thread::sleep_for(20ms);
-  }
-  return false;
-}
-
 // Probes /healthz every 250 ms for `during`, ticking the attack every 500 ms; every probe must
 // be answered 200 within 1 s.
 void expect_health_answered(int port, HostileClients* attack, std::chrono::milliseconds during) {
@@ -60,7 +50,7 @@ void expect_no_starvation(const std::vector<std::string>& options, Kind kind, in
   clearsky::testing::TempDir dir;
   ServeProcess server(dir.path, options);
   ASSERT_GT(server.port(), 0) << server.log();
-  ASSERT_TRUE(ready(server.port())) << server.log();
+  ASSERT_TRUE(testing::ready(server.port())) << server.log();
   {
     HostileClients attack(kind, server.port(), connections, path);
     ASSERT_EQ(attack.connected(), static_cast<std::size_t>(connections));
@@ -160,7 +150,7 @@ TEST(Starvation, AnAnswerReadBelowTheMinimumSendRateIsCut) {
   clearsky::testing::TempDir dir;
   ServeProcess server(dir.path, {"--min-send-rate", "65536", "--send-rate-grace", "1"});
   ASSERT_GT(server.port(), 0) << server.log();
-  ASSERT_TRUE(ready(server.port())) << server.log();
+  ASSERT_TRUE(testing::ready(server.port())) << server.log();
   const std::string request =
       std::string("GET ") + kSkydome + " HTTP/1.1\r\nHost: clearsky\r\nConnection: close\r\n\r\n";
   // Read at once, the skydome arrives whole.
