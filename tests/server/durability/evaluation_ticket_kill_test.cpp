@@ -15,6 +15,7 @@
 #include "storage/repositories/dataset_repository.h"
 #include "storage/schema/migrations.h"
 #include "tests/models/evaluation/function_model.h"
+#include "tests/server/durability/background_work_client.h"
 #include "tests/server/http/serve_process.h"
 #include "tests/support/temp_dir.h"
 
@@ -22,8 +23,6 @@ namespace clearsky::server {
 namespace {
 
 using namespace std::chrono_literals;
-
-const char* kToken = "t0ken";
 
 double sky(const ViewDirection&, double) { return 0.05; }
 
@@ -40,20 +39,6 @@ void add_synthetic_dataset(const std::filesystem::path& path) {
   t.commit();
 }
 
-httplib::Client client_of(const testing::ServeProcess& server) {
-  httplib::Client c("127.0.0.1", server.port());
-  c.set_bearer_token_auth(kToken);
-  c.set_read_timeout(60, 0);
-  c.set_write_timeout(60, 0);
-  return c;
-}
-
-nlohmann::json get_json(httplib::Client& c, const std::string& path) {
-  const auto r = c.Get(path.c_str());
-  if (!r) return nullptr;
-  return nlohmann::json::parse(r->body, nullptr, false);
-}
-
 TEST(TicketDurability, ServerKilledDuringAMultiModelEvaluationKeepsTheTicket) {
   clearsky::testing::TempDir dir;
   add_synthetic_dataset(dir.path / "sky.db");
@@ -66,9 +51,10 @@ TEST(TicketDurability, ServerKilledDuringAMultiModelEvaluationKeepsTheTicket) {
   {
     // Bruneton first: its table precomputation keeps its run running long enough to be killed
     // with the two analytic models still queued.
-    testing::ServeProcess server(dir.path, {"--token", kToken}, "bruneton,preetham,hosek");
+    testing::ServeProcess server(dir.path, {"--token", testing::kDurabilityToken},
+                                 "bruneton,preetham,hosek");
     ASSERT_GT(server.port(), 0) << server.log();
-    auto c = client_of(server);
+    auto c = testing::token_client(server);
     const auto accepted = c.Post("/v1/evaluations", body, "application/json");
     ASSERT_TRUE(accepted) << httplib::to_string(accepted.error());
     ASSERT_EQ(accepted->status, 202) << accepted->body;
@@ -81,7 +67,7 @@ TEST(TicketDurability, ServerKilledDuringAMultiModelEvaluationKeepsTheTicket) {
     // Generous deadline: a loaded machine or a sanitizer build is several times slower.
     const auto deadline = std::chrono::steady_clock::now() + 120s;
     while (std::chrono::steady_clock::now() < deadline) {
-      at_kill = get_json(c, location);
+      at_kill = testing::get_json(c, location);
       ASSERT_TRUE(at_kill.is_object()) << "no answer from the server";
       if (at_kill["models"][0]["status"] == "running") break;
       ASSERT_TRUE(at_kill["status"] == "queued" || at_kill["status"] == "running")
@@ -94,10 +80,10 @@ TEST(TicketDurability, ServerKilledDuringAMultiModelEvaluationKeepsTheTicket) {
   ASSERT_EQ(at_kill["models"][1]["status"], "queued") << at_kill.dump();
   const std::int64_t run_id = at_kill["models"][0]["run"].get<std::int64_t>();
 
-  testing::ServeProcess server(dir.path, {"--token", kToken}, "preetham");
+  testing::ServeProcess server(dir.path, {"--token", testing::kDurabilityToken}, "preetham");
   ASSERT_GT(server.port(), 0) << server.log();
-  auto c = client_of(server);
-  const nlohmann::json after = get_json(c, location);
+  auto c = testing::token_client(server);
+  const nlohmann::json after = testing::get_json(c, location);
   ASSERT_TRUE(after.is_object()) << "the ticket does not answer after the restart";
   EXPECT_EQ(after["ticket"], ticket_id);
   EXPECT_EQ(after["status"], "interrupted") << after.dump();
@@ -113,7 +99,7 @@ TEST(TicketDurability, ServerKilledDuringAMultiModelEvaluationKeepsTheTicket) {
     EXPECT_NE(after["models"][i]["error"].get<std::string>().find("before"), std::string::npos);
   }
   EXPECT_EQ(after["runs"], nlohmann::json::array({run_id}));
-  const nlohmann::json run = get_json(c, "/v1/evaluations/" + std::to_string(run_id));
+  const nlohmann::json run = testing::get_json(c, "/v1/evaluations/" + std::to_string(run_id));
   EXPECT_EQ(run["status"], "failed") << run.dump();
   EXPECT_NE(run["error"].get<std::string>().find("interrupted"), std::string::npos);
 
@@ -123,15 +109,9 @@ TEST(TicketDurability, ServerKilledDuringAMultiModelEvaluationKeepsTheTicket) {
   ASSERT_TRUE(again);
   ASSERT_EQ(again->status, 202) << again->body;
   EXPECT_EQ(nlohmann::json::parse(again->body)["ticket"], ticket_id + 1);
-  nlohmann::json done;
-  const auto deadline = std::chrono::steady_clock::now() + 120s;
-  while (std::chrono::steady_clock::now() < deadline) {
-    done = get_json(c, again->get_header_value("Location"));
-    if (done["status"] != "queued" && done["status"] != "running") break;
-    std::this_thread::sleep_for(10ms);
-  }
+  const nlohmann::json done = testing::await_end(c, again->get_header_value("Location"));
   EXPECT_EQ(done["status"], "succeeded") << done.dump();
-  EXPECT_EQ(get_json(c, location)["status"], "interrupted");
+  EXPECT_EQ(testing::get_json(c, location)["status"], "interrupted");
 }
 
 }  // namespace

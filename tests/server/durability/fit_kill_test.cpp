@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "storage/schema/migrations.h"
+#include "tests/server/durability/background_work_client.h"
 #include "tests/server/http/serve_process.h"
 #include "tests/support/model_made_dataset.h"
 #include "tests/support/temp_dir.h"
@@ -19,22 +20,6 @@ namespace clearsky::server {
 namespace {
 
 using namespace std::chrono_literals;
-
-const char* kToken = "t0ken";
-
-httplib::Client client_of(const testing::ServeProcess& server) {
-  httplib::Client c("127.0.0.1", server.port());
-  c.set_bearer_token_auth(kToken);
-  c.set_read_timeout(60, 0);
-  c.set_write_timeout(60, 0);
-  return c;
-}
-
-nlohmann::json get_json(httplib::Client& c, const std::string& path) {
-  const auto r = c.Get(path.c_str());
-  if (!r) return nullptr;
-  return nlohmann::json::parse(r->body, nullptr, false);
-}
 
 std::string post_fit(httplib::Client& c, const std::string& body) {
   const auto accepted = c.Post("/v1/fits", body, "application/json");
@@ -61,9 +46,9 @@ TEST(FitDurability, ServerKilledDuringAFitMarksItInterrupted) {
   std::string running;
   std::string queued;
   {
-    testing::ServeProcess server(dir.path, {"--token", kToken}, "hosek");
+    testing::ServeProcess server(dir.path, {"--token", testing::kDurabilityToken}, "hosek");
     ASSERT_GT(server.port(), 0) << server.log();
-    auto c = client_of(server);
+    auto c = testing::token_client(server);
     running = post_fit(c, long_fit);
     queued = post_fit(c, long_fit);
     ASSERT_FALSE(running.empty());
@@ -71,7 +56,7 @@ TEST(FitDurability, ServerKilledDuringAFitMarksItInterrupted) {
     nlohmann::json at_kill;
     const auto deadline = std::chrono::steady_clock::now() + 120s;
     while (std::chrono::steady_clock::now() < deadline) {
-      at_kill = get_json(c, running);
+      at_kill = testing::get_json(c, running);
       ASSERT_TRUE(at_kill.is_object()) << "no answer from the server";
       if (at_kill["status"] == "running" && at_kill["stage"] == "grid") break;
       ASSERT_TRUE(at_kill["status"] == "queued" || at_kill["status"] == "running")
@@ -79,15 +64,15 @@ TEST(FitDurability, ServerKilledDuringAFitMarksItInterrupted) {
       std::this_thread::sleep_for(5ms);
     }
     ASSERT_EQ(at_kill["stage"], "grid") << at_kill.dump();
-    EXPECT_EQ(get_json(c, queued)["status"], "queued");
+    EXPECT_EQ(testing::get_json(c, queued)["status"], "queued");
     EXPECT_EQ(server.kill_now(), SIGKILL);
   }
 
-  testing::ServeProcess server(dir.path, {"--token", kToken}, "hosek");
+  testing::ServeProcess server(dir.path, {"--token", testing::kDurabilityToken}, "hosek");
   ASSERT_GT(server.port(), 0) << server.log();
-  auto c = client_of(server);
+  auto c = testing::token_client(server);
   for (const std::string& location : {running, queued}) {
-    const nlohmann::json after = get_json(c, location);
+    const nlohmann::json after = testing::get_json(c, location);
     ASSERT_TRUE(after.is_object()) << "the fit does not answer after the restart";
     EXPECT_EQ(after["status"], "interrupted") << after.dump();
     EXPECT_FALSE(after["finished_utc"].is_null());
@@ -96,13 +81,7 @@ TEST(FitDurability, ServerKilledDuringAFitMarksItInterrupted) {
   const std::string next =
       post_fit(c, R"({"dataset": "made", "model": "hosek", "free": ["turbidity"], "grid": [5]})");
   ASSERT_FALSE(next.empty());
-  nlohmann::json done;
-  const auto deadline = std::chrono::steady_clock::now() + 120s;
-  while (std::chrono::steady_clock::now() < deadline) {
-    done = get_json(c, next);
-    if (done["status"] != "queued" && done["status"] != "running") break;
-    std::this_thread::sleep_for(10ms);
-  }
+  const nlohmann::json done = testing::await_end(c, next);
   EXPECT_EQ(done["status"], "succeeded") << done.dump();
 }
 
