@@ -85,7 +85,8 @@ CheckedFit check_fit_request(const FitRequest& request) {
   // A fit starts from values given as they are; it does not expand a stored fit (that is for
   // the sky endpoints and evaluations, docs/fits.md "Using a fit").
   if (parameters.contains(kFitParameter))
-    throw InvalidInput(kFitParameter, "a fit's parameters cannot name a stored fit: give values");
+    throw invalid_parameter(kFitParameter,
+                            "a fit's parameters cannot name a stored fit: give values");
   out.fixed_parameters = parameters_for_model(descriptor, parameters);
   out.settings.config = config_for_model(descriptor, parameters);
   out.settings.evaluation.out_of_domain = out_of_domain_of(parameters);
