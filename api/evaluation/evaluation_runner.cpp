@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "api/error/api_error.h"
+#include "api/evaluation/evaluation_fit.h"
 #include "api/evaluation/prepared_dataset.h"
 #include "api/request/sky_request.h"
 #include "models/core/fit_domain.h"
@@ -198,8 +199,13 @@ EvaluationReport run_evaluation(storage::Database& db, const EvaluationRequest& 
     run.job_id = request.job_id;
     run.model_id = id;
     run.model_version = factory.descriptor->version;
-    const ModelConfig config = config_for_model(*factory.descriptor, request.parameters);
-    nlohmann::json applied = parameters_for_model(*factory.descriptor, request.parameters);
+    // A stored fit named by the parameters, expanded now: "latest" is the newest when the run
+    // starts (evaluation_fit.h).
+    const nlohmann::json parameters =
+        expand_evaluation_fit(db, request.parameters, *factory.descriptor);
+    const ModelConfig config = config_for_model(*factory.descriptor, parameters);
+    nlohmann::json applied = parameters_for_model(*factory.descriptor, parameters);
+    if (parameters.contains(kFitParameter)) applied[kFitParameter] = parameters[kFitParameter];
     if (request.parameters.is_object() && request.parameters.contains(kOutOfDomainParameter))
       applied[kOutOfDomainParameter] = request.parameters[kOutOfDomainParameter];
     if (request.parameters.is_object() && request.parameters.contains(kQualityParameter))

@@ -9,6 +9,7 @@
 
 #include "api/encode/iso8601_time.h"
 #include "api/error/api_error.h"
+#include "api/evaluation/evaluation_fit.h"
 #include "api/http/json_body.h"
 #include "api/parse/iso8601_time.h"
 #include "api/request/sky_request.h"
@@ -78,12 +79,18 @@ nlohmann::json parse_evaluation_parameters(const nlohmann::json& parameters,
       }
       continue;
     }
+    if (name == kFitParameter) {
+      // A stored fit (evaluation_fit.h): read here, found and checked where the database is.
+      evaluation_fit_reference(parameters);
+      continue;
+    }
     const bool grass = name == "albedo" && value.is_string() && value.get<std::string>() == "grass";
     if (!grass && !value.is_number()) throw invalid_parameter(name, "must be a number");
   }
   if (models.empty()) return parameters;
   for (const auto& [name, value] : parameters.items()) {
-    if (name == kOutOfDomainParameter || name == kQualityParameter) continue;
+    if (name == kOutOfDomainParameter || name == kQualityParameter || name == kFitParameter)
+      continue;
     std::vector<const ModelFactory*> takers;
     for (const ModelFactory* model : models)
       if (model->descriptor->find_parameter(name) != nullptr) takers.push_back(model);
@@ -157,6 +164,7 @@ EvaluationRequest parse_evaluation_request(storage::Database& db, const std::str
   }
   request.parameters =
       parse_evaluation_parameters(j.value("parameters", nlohmann::json()), factories);
+  check_evaluation_fit(db, request.parameters, factories);
   return request;
 }
 

@@ -9,6 +9,7 @@
 #include "api/evaluation/evaluation_runner.h"
 #include "api/evaluation/evaluations_api.h"
 #include "api/evaluation/prepared_dataset.h"
+#include "api/request/sky_fit.h"
 #include "models/core/invalid_input.h"
 #include "models/registry.h"
 #include "storage/repositories/dataset_repository.h"
@@ -81,6 +82,11 @@ CheckedFit check_fit_request(const FitRequest& request) {
       make_free_parameters(descriptor, names, parse_bounds(request.bounds), request.grid);
   const ModelFactory* const models[] = {out.factory};
   const nlohmann::json parameters = parse_evaluation_parameters(request.parameters, models);
+  // A fit starts from values given as they are; it does not expand a stored fit (that is for
+  // the sky endpoints and evaluations, docs/fits.md "Using a fit").
+  if (parameters.contains(kFitParameter))
+    throw invalid_parameter(kFitParameter,
+                            "a fit's parameters cannot name a stored fit: give values");
   out.fixed_parameters = parameters_for_model(descriptor, parameters);
   out.settings.config = config_for_model(descriptor, parameters);
   out.settings.evaluation.out_of_domain = out_of_domain_of(parameters);

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <optional>
 
+#include "api/fits/stored_fit_values.h"
 #include "api/handlers/handlers.h"
 #include "api/handlers/sky_radiance_query.h"
 #include "api/irradiance/broadband_irradiance.h"
@@ -60,7 +61,8 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
   const ModelDescriptor& d = *factory.descriptor;
   const SunSpec sun = parse_sun(p);
   const Viewpoint viewpoint = parse_viewpoint(p);
-  ModelConfig config = parse_config(p, d);
+  SkyConfig sky = parse_sky_config(p, d, stored_fit_lookup(context));
+  ModelConfig& config = sky.config;
   const RequestQuality quality = parse_quality(p, d, config, context.default_quality);
   const double tilt_deg = p.number_or("tilt", 0.0, 0.0, 180.0);
   const double surface_azimuth_deg = p.number_or("surface_azimuth", 180.0, -360.0, 360.0);
@@ -184,9 +186,11 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
   if (all || component == "global")
     body["global"] = component_json(on_plane.global, model, m.indices, xyz, spectral, bb_global);
   add_quality_members(body, quality, m.served_quality);
+  add_fit_member(body, sky.fit);
   ApiResponse response = json_response(body);
   response.model_id = d.id;
   add_quality_headers(response.headers, quality, m.served_quality);
+  add_fit_headers(response.headers, sky.fit);
   return response;
 }
 

@@ -16,6 +16,7 @@ ApiResponse irradiance_series(const ApiContext& context, const ApiRequest& reque
   response.content_type = series->csv ? "text/csv" : "application/json";
   response.model_id = series->grid.model->descriptor().id;
   add_quality_headers(response.headers, series->quality, series->grid.served_quality);
+  add_fit_headers(response.headers, series->fit);
   response.stream = [series](const ByteSink& sink) {
     return write_irradiance_series(*series, sink);
   };

@@ -5,6 +5,7 @@
 // (view_zenith_deg,view_azimuth_deg,wavelength_nm,radiance_w_m2_sr_nm).
 #include <cstdio>
 
+#include "api/fits/stored_fit_values.h"
 #include "api/handlers/handlers.h"
 #include "api/handlers/sky_radiance_query.h"
 #include "api/http/answer_memory_reservation.h"
@@ -26,7 +27,8 @@ ApiResponse radiance(const ApiContext& context, const ApiRequest& request) {
   const ModelFactory& factory = parse_model(p, context.models);
   const SunSpec sun = parse_sun(p);
   const Viewpoint viewpoint = parse_viewpoint(p);
-  ModelConfig config = parse_config(p, *factory.descriptor);
+  SkyConfig sky = parse_sky_config(p, *factory.descriptor, stored_fit_lookup(context));
+  ModelConfig& config = sky.config;
   const RequestQuality quality =
       parse_quality(p, *factory.descriptor, config, context.default_quality);
   const auto wavelengths = parse_wavelengths(p, context.limits);
@@ -48,6 +50,7 @@ ApiResponse radiance(const ApiContext& context, const ApiRequest& request) {
   ApiResponse response;
   response.model_id = factory.descriptor->id;
   add_quality_headers(response.headers, quality, m.served_quality);
+  add_fit_headers(response.headers, sky.fit);
   response.held_until_sent = std::move(reservation);
   if (format == "csv") {
     std::string body = "view_zenith_deg,view_azimuth_deg,wavelength_nm,radiance_w_m2_sr_nm\n";
@@ -82,6 +85,7 @@ ApiResponse radiance(const ApiContext& context, const ApiRequest& request) {
                          {"samples", std::move(samples)}};
   if (grid.kind() == WavelengthGrid::Kind::bins) body["bin_width_nm"] = grid.bin_width_nm();
   add_quality_members(body, quality, m.served_quality);
+  add_fit_member(body, sky.fit);
   response.body = body.dump();
   return response;
 }

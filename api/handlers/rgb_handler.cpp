@@ -12,6 +12,7 @@
 
 #include "api/colour/srgb_gamut.h"
 #include "api/colour/xyz_weights.h"
+#include "api/fits/stored_fit_values.h"
 #include "api/handlers/handlers.h"
 #include "api/handlers/sky_radiance_query.h"
 #include "api/http/answer_memory_reservation.h"
@@ -36,7 +37,8 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
   const ModelFactory& factory = parse_model(p, context.models);
   const SunSpec sun = parse_sun(p);
   const Viewpoint viewpoint = parse_viewpoint(p);
-  ModelConfig config = parse_config(p, *factory.descriptor);
+  SkyConfig sky = parse_sky_config(p, *factory.descriptor, stored_fit_lookup(context));
+  ModelConfig& config = sky.config;
   const RequestQuality quality =
       parse_quality(p, *factory.descriptor, config, context.default_quality);
   const std::string method = p.choice("method", {"spectral", "three"}, "spectral");
@@ -115,9 +117,11 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
     }
   }
   add_quality_members(body, quality, m.served_quality);
+  add_fit_member(body, sky.fit);
   ApiResponse response = json_response(body);
   response.model_id = factory.descriptor->id;
   add_quality_headers(response.headers, quality, m.served_quality);
+  add_fit_headers(response.headers, sky.fit);
   response.held_until_sent = std::move(reservation);
   return response;
 }

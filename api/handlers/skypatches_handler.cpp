@@ -26,6 +26,7 @@
 
 #include "api/colour/radiance_rgb.h"
 #include "api/colour/xyz_weights.h"
+#include "api/fits/stored_fit_values.h"
 #include "api/handlers/handlers.h"
 #include "api/handlers/sky_radiance_query.h"
 #include "api/skypatches/sky_patch_vector.h"
@@ -87,7 +88,8 @@ ApiResponse skypatches(const ApiContext& context, const ApiRequest& request) {
   const ModelDescriptor& d = *factory.descriptor;
   const SunSpec sun = parse_sun(p);
   const Viewpoint viewpoint = parse_viewpoint(p);
-  ModelConfig config = parse_config(p, d);
+  SkyConfig sky = parse_sky_config(p, d, stored_fit_lookup(context));
+  ModelConfig& config = sky.config;
   const RequestQuality quality = parse_quality(p, d, config, context.default_quality);
   if (d.find_parameter(kClampNegativeFitOption) &&
       !config.options.contains(kClampNegativeFitOption))
@@ -165,6 +167,7 @@ ApiResponse skypatches(const ApiContext& context, const ApiRequest& request) {
     response.content_type = "text/csv";
     response.model_id = d.id;
     add_quality_headers(response.headers, quality, m.served_quality);
+    add_fit_headers(response.headers, sky.fit);
     return response;
   }
 
@@ -220,9 +223,11 @@ ApiResponse skypatches(const ApiContext& context, const ApiRequest& request) {
     body["gamut_mapping"] = "negative components clipped to 0";
   }
   add_quality_members(body, quality, m.served_quality);
+  add_fit_member(body, sky.fit);
   response = json_response(body);
   response.model_id = d.id;
   add_quality_headers(response.headers, quality, m.served_quality);
+  add_fit_headers(response.headers, sky.fit);
   return response;
 }
 

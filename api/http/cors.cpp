@@ -24,7 +24,7 @@ void CorsPolicy::add_headers(std::optional<std::string_view> origin, ApiResponse
   response.headers.emplace_back(
       "Access-Control-Expose-Headers",
       "ETag, Location, Retry-After, WWW-Authenticate, Allow, Content-Disposition, "
-      "Clearsky-Quality, Clearsky-Served-Quality, Clearsky-Quality-Detail");
+      "Clearsky-Quality, Clearsky-Served-Quality, Clearsky-Quality-Detail, Clearsky-Fit");
 }
 
 ApiResponse CorsPolicy::options(const ApiRequest& request, const std::string& allow) const {

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "api/encode/iso8601_time.h"
+#include "api/fits/stored_fit_values.h"
 #include "api/irradiance/ground_reflection_request.h"
 #include "api/parse/iso8601_duration.h"
 #include "api/parse/iso8601_time.h"
@@ -177,7 +178,9 @@ IrradianceSeriesRequest parse_irradiance_series(const ApiContext& context,
   s.position = place.position;
   s.delta_t_from_time = place.delta_t_from_time;
   s.viewpoint = Viewpoint{s.position.elevation_m};
-  ModelConfig config = parse_config(p, d);
+  SkyConfig sky = parse_sky_config(p, d, stored_fit_lookup(context));
+  ModelConfig& config = sky.config;
+  s.fit = std::move(sky.fit);
   s.quality = parse_quality(p, d, config, context.default_quality);
   if (auto planes = p.text("planes")) s.planes = parse_planes(*planes);
   s.ground = parse_ground_reflection(p);
@@ -264,6 +267,7 @@ bool write_irradiance_series(const IrradianceSeriesRequest& s, const ByteSink& s
         {"sky_diffuse_on_planes", s.tabulated_sky ? "table" : "per_step"},
         {"columns", columns}};
     add_quality_members(head, s.quality, s.grid.served_quality);
+    add_fit_member(head, s.fit);
     out = head.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     out.pop_back();  // the closing brace: the rows follow
     out += ",\"rows\":[";

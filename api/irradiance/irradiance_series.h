@@ -33,6 +33,7 @@
 #include "api/irradiance/plane_list.h"
 #include "api/request/place_time.h"
 #include "api/request/quality.h"
+#include "api/request/sky_fit.h"
 
 namespace clearsky::api {
 
@@ -43,6 +44,7 @@ inline constexpr std::size_t kMaxPerSunDaySteps = 96;
 struct IrradianceSeriesRequest {
   ModelOnGrid grid;
   RequestQuality quality;
+  std::optional<AppliedFit> fit;  // the request's fit=, when given
   Viewpoint viewpoint;
   SolarPositionInput position;  // the place; unix_time_utc_s set per step
   bool delta_t_from_time = false;

@@ -21,7 +21,8 @@ Json schemas() {
     "type": "object",
     "description": "The shared atmosphere parameters (alpha, beta, g, turbidity, albedo as a number or \"grass\", ...) and any option of a requested model, each applied to the models whose descriptor lists it and range-checked before queueing (GET /v1/models lists them).",
     "properties": {
-      "out_of_domain": {"type": "string", "enum": ["exclude", "clamp"], "default": "exclude", "description": "Samples a model cannot answer (outside its fit domain, below its horizon, outside its wavelengths): left out of the RMSE and counted (exclude), or answered at the nearest point of the model's domain and counted (clamp)."}
+      "out_of_domain": {"type": "string", "enum": ["exclude", "clamp"], "default": "exclude", "description": "Samples a model cannot answer (outside its fit domain, below its horizon, outside its wavelengths): left out of the RMSE and counted (exclude), or answered at the nearest point of the model's domain and counted (clamp)."},
+      "fit": {"oneOf": [{"type": "integer", "minimum": 1}, {"type": "string", "pattern": "^([1-9][0-9]*|latest(:.+)?)$"}], "description": "A stored fit (docs/fits.md \"Using a fit\"): its id applies its fitted values to its own model (which must be requested; else 409 fit_model_mismatch), latest (or latest:DATASET) to each requested model its newest succeeded fit (404 unknown_fit when one has none); a fit not succeeded is a 409 fit_not_succeeded; a parameter given too that the fit sets is a 400 conflicting_parameters naming it. Expanded when each model's run starts (a job with latest uses the newest fit at each occurrence); a run stores the id used as fit and the values it set."}
     },
     "additionalProperties": {
       "oneOf": [{"type": "number"}, {"type": "string", "enum": ["grass"]}]
@@ -143,7 +144,7 @@ Json schemas() {
       "dataset": {"type": "string", "nullable": true},
       "model": {"type": "string"},
       "model_version": {"type": "string"},
-      "parameters": {"allOf": [{"$ref": "#/components/schemas/EvaluationParameters"}], "description": "The parameters applied to this run's model, as given (docs/data-api.md)."},
+      "parameters": {"allOf": [{"$ref": "#/components/schemas/EvaluationParameters"}], "description": "The parameters applied to this run's model, as given, with a fit expanded: fit is then the id used and its values are among the parameters (docs/data-api.md)."},
       "software_version": {"type": "string"},
       "wavelength_range_nm": {"type": "array", "minItems": 2, "maxItems": 2, "items": {"type": "number"}},
       "wavelengths_nm": {"type": "array", "nullable": true, "items": {"type": "number"}, "description": "With samples=spectra; null for runs stored before per-sample errors were kept."},
@@ -302,7 +303,8 @@ Json operations() {
         }}
       },
       "400": {"description": "A body that is not a JSON object, an unknown member, no dataset, or an invalid model list or parameter."},
-      "404": {"description": "No such dataset (unknown_dataset) or model (unknown_model)."},
+      "404": {"description": "No such dataset (unknown_dataset) or model (unknown_model), or no stored fit matches parameters.fit (unknown_fit, parameter fit)."},
+      "409": {"description": "parameters.fit names a fit that is not succeeded (fit_not_succeeded) or of a model not requested (fit_model_mismatch); parameter fit."},
       "503": {"description": "The evaluation queue is full (--evaluation-queue; code busy)."}
     }
   },
@@ -382,8 +384,8 @@ Json operations() {
         "content": {"application/json": {"schema": {"$ref": "#/components/schemas/Job"}}}
       },
       "400": {"description": "A body that is not a JSON object, an unknown member, no name or schedule, an invalid schedule, model list or parameter."},
-      "404": {"description": "No such dataset or model."},
-      "409": {"description": "A job of that name exists (code conflict)."}
+      "404": {"description": "No such dataset or model, or no stored fit matches parameters.fit (unknown_fit)."},
+      "409": {"description": "A job of that name exists (code conflict), or parameters.fit names a fit that is not succeeded (fit_not_succeeded) or of a model not requested (fit_model_mismatch; parameter fit)."}
     }
   },
   "getJob": {

@@ -40,6 +40,19 @@ Json schemas() {
       "max_relative": {"type": "number", "minimum": 0, "nullable": true, "description": "Its maximum."}
     }
   },
+  "AppliedFit": {
+    "type": "object",
+    "description": "The stored fit the request named (fit=) and the values it set (docs/fits.md \"Using a fit\").",
+    "required": ["id", "model", "model_version", "dataset", "parameters"],
+    "additionalProperties": false,
+    "properties": {
+      "id": {"type": "integer", "minimum": 1},
+      "model": {"type": "string"},
+      "model_version": {"type": "string", "description": "The model's version when it was fitted."},
+      "dataset": {"type": "string", "description": "The dataset it was fitted to."},
+      "parameters": {"type": "object", "additionalProperties": {"type": "number"}, "description": "The fitted values used, by parameter name."}
+    }
+  },
   "SunUsed": {
     "type": "object",
     "description": "The sun the model was asked for: given, or computed by SPA from lat, lon and time.",
@@ -95,6 +108,7 @@ Json schemas() {
       "quality_setting": {"type": "object", "additionalProperties": {"type": "number"}, "description": "Every option of the served level, with the value used (a request's explicit option included)."},
       "quality_error": {"type": "object", "allOf": [{"$ref": "#/components/schemas/QualityError"}], "nullable": true, "description": "The served level's measured error against the reference level; null when the request overrode one of the level's options."},
       "quality_overridden": {"type": "array", "items": {"type": "string"}, "description": "The level's options the request gave itself (present only then)."},
+      "fit": {"$ref": "#/components/schemas/AppliedFit"},
       "sun": {"$ref": "#/components/schemas/SunUsed"},
       "altitude_m": {"type": "number"},
       "unit": {"type": "string", "enum": ["W/(m2.sr.nm)"]},
@@ -136,6 +150,7 @@ Json schemas() {
       "quality_setting": {"type": "object", "additionalProperties": {"type": "number"}, "description": "Every option of the served level, with the value used (a request's explicit option included)."},
       "quality_error": {"type": "object", "allOf": [{"$ref": "#/components/schemas/QualityError"}], "nullable": true, "description": "The served level's measured error against the reference level; null when the request overrode one of the level's options."},
       "quality_overridden": {"type": "array", "items": {"type": "string"}, "description": "The level's options the request gave itself (present only then)."},
+      "fit": {"$ref": "#/components/schemas/AppliedFit"},
       "method": {"type": "string", "enum": ["spectral", "three"]},
       "sun": {"$ref": "#/components/schemas/SunUsed"},
       "altitude_m": {"type": "number"},
@@ -172,6 +187,7 @@ Json schemas() {
       "quality_setting": {"type": "object", "additionalProperties": {"type": "number"}, "description": "Every option of the served level, with the value used (a request's explicit option included)."},
       "quality_error": {"type": "object", "allOf": [{"$ref": "#/components/schemas/QualityError"}], "nullable": true, "description": "The served level's measured error against the reference level; null when the request overrode one of the level's options."},
       "quality_overridden": {"type": "array", "items": {"type": "string"}, "description": "The level's options the request gave itself (present only then)."},
+      "fit": {"$ref": "#/components/schemas/AppliedFit"},
       "sun": {"$ref": "#/components/schemas/SunUsed"},
       "altitude_m": {"type": "number"},
       "plane": {
@@ -229,6 +245,7 @@ Json schemas() {
       "quality_setting": {"type": "object", "additionalProperties": {"type": "number"}},
       "quality_error": {"type": "object", "allOf": [{"$ref": "#/components/schemas/QualityError"}], "nullable": true},
       "quality_overridden": {"type": "array", "items": {"type": "string"}},
+      "fit": {"$ref": "#/components/schemas/AppliedFit"},
       "lat": {"type": "number"},
       "lon": {"type": "number"},
       "altitude_m": {"type": "number"},
@@ -263,6 +280,7 @@ Json schemas() {
       "quality_setting": {"type": "object", "additionalProperties": {"type": "number"}, "description": "Every option of the served level, with the value used (a request's explicit option included)."},
       "quality_error": {"type": "object", "allOf": [{"$ref": "#/components/schemas/QualityError"}], "nullable": true, "description": "The served level's measured error against the reference level; null when the request overrode one of the level's options."},
       "quality_overridden": {"type": "array", "items": {"type": "string"}, "description": "The level's options the request gave itself (present only then)."},
+      "fit": {"$ref": "#/components/schemas/AppliedFit"},
       "sun": {"$ref": "#/components/schemas/SunUsed"},
       "altitude_m": {"type": "number"},
       "scheme": {"type": "string", "enum": ["tregenza", "reinhart"]},
@@ -398,9 +416,18 @@ void add_sky_errors(Json& operation, bool get) {
       "invalid_body); error.parameter names it.");
   r["400"]["content"]["application/json"]["example"] = parse(
       R"json({"error": {"code": "invalid_parameter", "message": "turbidity: must be in [2, 10]", "parameter": "turbidity"}})json");
-  r["404"] = error_response("No served model has this id (code unknown_model).");
+  r["404"] = error_response(
+      "No served model has this id (code unknown_model), or no stored fit matches fit= (code "
+      "unknown_fit), or fit= on a server without a database (code no_database, parameter "
+      "fit).");
   r["404"]["content"]["application/json"]["example"] = parse(
       R"json({"error": {"code": "unknown_model", "message": "model: no model 'nope' (available: preetham, hosek)", "parameter": "model"}})json");
+  r["409"] = error_response(
+      "The fit named by fit= is not succeeded (code fit_not_succeeded: queued, running, failed "
+      "or interrupted) or is a fit of another model (code fit_model_mismatch); error.parameter "
+      "is fit.");
+  r["409"]["content"]["application/json"]["example"] = parse(
+      R"json({"error": {"code": "fit_model_mismatch", "message": "fit: fit 3 is a fit of hosek, not of preetham", "parameter": "fit"}})json");
   r["413"] = error_response(
       "Above a configured limit: views, wavelengths, image size, or the request body (code "
       "too_large); error.parameter names it.");

@@ -182,6 +182,23 @@ Json sky_parameter_components() {
        "skydome's clearskyQuality attributes); another value: 400 naming quality "
        "(docs/quality-levels.md)."},
       {"schema", {{"type", "string"}, {"enum", {"draft", "standard", "reference"}}}}};
+  components["fit"] = {
+      {"name", "fit"},
+      {"in", "query"},
+      {"required", false},
+      {"description",
+       "A stored atmosphere fit of the request's model (GET /v1/fits; docs/fits.md \"Using a "
+       "fit\"): its id, latest (the model's newest succeeded fit) or latest:DATASET (the newest "
+       "on that dataset). Its fitted values (the free parameters it fitted) are used as if the "
+       "request gave them, range-checked like them; its fixed parameters are not applied. A "
+       "parameter given too that the fit sets: 400 conflicting_parameters naming it. An unknown "
+       "id or no such fit: 404 unknown_fit; a fit not succeeded or of another model: 409 "
+       "fit_not_succeeded or fit_model_mismatch; a server without a database (serve --role "
+       "query): 404 no_database; each naming fit. The answer has a fit member (id, model, "
+       "model_version, dataset, parameters) and the header Clearsky-Fit (the skydome: also its "
+       "clearskyFit attribute); with latest it is Cache-Control: no-store."},
+      {"schema", {{"type", "string"}, {"pattern", "^([1-9][0-9]*|latest(:.+)?)$"}}},
+      {"example", "latest"}};
   const Json place = place_parameters();
   for (const auto& [name, parameter] : place.items()) components[name] = parameter;
   for (const ListedParameter& p : listed_parameters()) {

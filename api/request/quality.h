@@ -33,7 +33,7 @@ struct RequestQuality {
 };
 
 // Reads `quality` (400 naming it for another value) and applies the level to config's options
-// (after parse_config: explicit options win).
+// (after parse_sky_config: explicit options win).
 RequestQuality parse_quality(Parameters& p, const ModelDescriptor& descriptor, ModelConfig& config,
                              QualityLevel default_level);
 

@@ -54,6 +54,8 @@ bool set_atmosphere_parameter(AtmosphereParameters& a, const std::string& name, 
   return clearsky::set_atmosphere_parameter(a, name, value);
 }
 
+namespace {
+
 ModelConfig parse_config(Parameters& p, const ModelDescriptor& descriptor) {
   ModelConfig config;
   for (const ParameterSpec& spec : descriptor.parameters) {
@@ -88,6 +90,29 @@ ModelConfig parse_config(Parameters& p, const ModelDescriptor& descriptor) {
   // configuration as a whole is validated once, by the model provider (the server's TableStore
   // before it queues a build) and once per build (models/core/model_factory.h).
   return config;
+}
+
+}  // namespace
+
+SkyConfig parse_sky_config(Parameters& p, const ModelDescriptor& descriptor,
+                           const FitLookup& fits) {
+  SkyConfig out;
+  out.fit = expand_fit(p, descriptor, fits);
+  try {
+    out.config = parse_config(p, descriptor);
+  } catch (const ApiError& e) {
+    if (!out.fit) throw;
+    for (const auto& [name, value] : out.fit->values) {
+      // A fitted value the descriptor's range no longer holds: say where it came from.
+      if (name == e.parameter()) {
+        throw ApiError(
+            e.status(), e.code(), e.parameter(),
+            std::string(e.what()) + " (the value of fit " + std::to_string(out.fit->id) + ")");
+      }
+    }
+    throw;
+  }
+  return out;
 }
 
 void validate_model_config(const ModelDescriptor& descriptor, const ModelConfig& config) {

@@ -7,6 +7,7 @@
 // | sun_zenith, sun_azimuth                | degree | [0, 180], [-360, 360] | the sun given directly (azimuth clockwise from North) |
 // | lat, lon, time, altitude, pressure, ... | see api/request/place_time.h | | place and time; the sun from NREL SPA     |
 // | alpha, beta, g, turbidity, albedo, ... | per descriptor | per descriptor | atmosphere and model parameters the model's descriptor lists |
+// | fit                                    | -      | ID, latest, latest:DATASET | a stored fit's values (api/request/sky_fit.h) |
 // | wavelengths                            | nm     | list or start:stop:step | output wavelengths (default: the paper's 40 bins)  |
 // clang-format on
 //
@@ -22,6 +23,7 @@
 
 #include "api/request/parameters.h"
 #include "api/request/quality.h"
+#include "api/request/sky_fit.h"
 #include "api/service/model_provider.h"
 #include "models/core/sky_model.h"
 
@@ -49,9 +51,16 @@ struct SunSpec {
 const ModelFactory& parse_model(Parameters& p, const ModelProvider& provider);
 SunSpec parse_sun(Parameters& p);
 Viewpoint parse_viewpoint(Parameters& p);
+// The model's configuration and the fit that set part of it.
+struct SkyConfig {
+  ModelConfig config;
+  std::optional<AppliedFit> fit;  // the request's fit=, expanded into config
+};
 // The model's configuration with the request's overrides of the parameters its descriptor
-// lists (400 naming the parameter for a value out of range).
-ModelConfig parse_config(Parameters& p, const ModelDescriptor& descriptor);
+// lists (400 naming the parameter for a value out of range), a stored fit's values included
+// (fit=, expanded by expand_fit through fits and then read as any parameter): every sky
+// endpoint reads its model's parameters here.
+SkyConfig parse_sky_config(Parameters& p, const ModelDescriptor& descriptor, const FitLookup& fits);
 // validate_config (models/core/sky_model.h) with its refusals (clearsky::InvalidInput) as a 400
 // naming the request parameter (from_invalid_argument).
 void validate_model_config(const ModelDescriptor& descriptor, const ModelConfig& config);

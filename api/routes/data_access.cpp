@@ -5,12 +5,12 @@
 
 namespace clearsky::api {
 
-ApiError no_database() {
+ApiError no_database(const std::string& parameter) {
   // 404, not 503: the resource is not on this server and never will be (a 503 would invite a
   // retry here); the proxy routes data paths to the writer (docs/deploy.md "Roles").
-  return ApiError(404, "no_database", "role",
+  return ApiError(404, "no_database", parameter,
                   "this server has no database (serve --role query): datasets, imports, "
-                  "evaluations and jobs are served by the writer (serve --role writer)");
+                  "evaluations, fits and jobs are served by the writer (serve --role writer)");
 }
 
 const DataServices& data_services(const ApiContext& context) {

@@ -8,9 +8,10 @@
 
 namespace clearsky::api {
 
-// The refusal of a data route by a server without a database (serve --role query): 503
-// no_database, naming the role (docs/deploy.md "Roles").
-ApiError no_database();
+// The refusal of a data route by a server without a database (serve --role query): 404
+// no_database, naming the role (docs/deploy.md "Roles"), or the parameter that needs the
+// database (a sky request's fit).
+ApiError no_database(const std::string& parameter = "role");
 // The context's data services; no_database() when the server has none.
 const DataServices& data_services(const ApiContext& context);
 // A new connection to the server's database.

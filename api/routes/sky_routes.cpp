@@ -30,6 +30,7 @@ ApiResponse get_skydome(const ApiContext& context, const ApiRequest& request) {
   response.content_type = job->content_type();
   response.model_id = job->model_id();
   job->add_quality_headers(response.headers);
+  job->add_fit_headers(response.headers);
   response.headers.emplace_back("Content-Disposition",
                                 std::string("inline; filename=\"") + job->file_name() + "\"");
   // The stream owns the reservation: it is released when the answer is destroyed, after the

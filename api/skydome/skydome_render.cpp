@@ -17,6 +17,7 @@
 #include "api/colour/display_tone_mapping.h"
 #include "api/colour/srgb_gamut.h"
 #include "api/colour/xyz_weights.h"
+#include "api/fits/stored_fit_values.h"
 #include "api/handlers/sky_radiance_query.h"
 #include "api/skydome/exr_compression.h"
 #include "api/skydome/exr_stream.h"
@@ -32,6 +33,7 @@ namespace clearsky::api {
 struct SkydomeRender::Settings {
   std::string model_id;
   RequestQuality quality;
+  std::optional<AppliedFit> fit;  // the request's fit=, when given
   ModelOnGrid m;
   std::shared_ptr<const SunState> sun_state;
   SunSpec sun;
@@ -269,7 +271,7 @@ bool write_png(const SkydomeRender::Settings& s, const SkydomeRender::Sink& sink
   const DisplayToneMapping display(s.exposure_ev100, s.tone_curve);
   char exposure[32];
   std::snprintf(exposure, sizeof exposure, "%g", s.exposure_ev100);
-  const std::vector<std::pair<std::string, std::string>> text = {
+  std::vector<std::pair<std::string, std::string>> text = {
       {"Software", "clearsky GET /v1/skydome"},
       {"clearskyModel", s.model_id},
       {"clearskyProjection", s.projection_name},
@@ -281,6 +283,7 @@ bool write_png(const SkydomeRender::Settings& s, const SkydomeRender::Sink& sink
       {"clearskyQuality", std::string(to_string(s.quality.level))},
       {"clearskyServedQuality", std::string(to_string(s.m.served_quality))},
       {"clearskyQualityDetail", quality_summary(s.quality, s.m.served_quality)}};
+  if (s.fit) text.emplace_back("clearskyFit", fit_summary(*s.fit));
   PngStream png(sink, width, height, text);
   if (png.aborted()) return false;
   const std::size_t n_channels = channel_count(s);
@@ -332,7 +335,9 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
   s->model_id = factory.descriptor->id;
   s->sun = parse_sun(p);
   s->viewpoint = parse_viewpoint(p);
-  ModelConfig config = parse_config(p, *factory.descriptor);
+  SkyConfig sky = parse_sky_config(p, *factory.descriptor, stored_fit_lookup(context));
+  ModelConfig& config = sky.config;
+  s->fit = std::move(sky.fit);
   s->quality = parse_quality(p, *factory.descriptor, config, context.default_quality);
   s->png = p.choice("format", {"exr", "png"}, "exr") == "png";
   s->projection_name = p.choice("projection", {"fisheye", "latlong", "cubemap"}, "fisheye");
@@ -438,6 +443,10 @@ void SkydomeRender::add_quality_headers(
     std::vector<std::pair<std::string, std::string>>& headers) const {
   api::add_quality_headers(headers, settings_->quality, settings_->m.served_quality);
 }
+void SkydomeRender::add_fit_headers(
+    std::vector<std::pair<std::string, std::string>>& headers) const {
+  api::add_fit_headers(headers, settings_->fit);
+}
 int SkydomeRender::width() const { return settings_->projection.width(); }
 int SkydomeRender::height() const { return settings_->projection.height(); }
 const char* SkydomeRender::content_type() const {
@@ -509,6 +518,8 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
                 Imf::StringAttribute(std::string(to_string(s.m.served_quality))));
   header.insert("clearskyQualityDetail",
                 Imf::StringAttribute(quality_summary(s.quality, s.m.served_quality)));
+  // The stored fit whose values the request used (docs/fits.md "Using a fit").
+  if (s.fit) header.insert("clearskyFit", Imf::StringAttribute(fit_summary(*s.fit)));
   header.insert("sunZenithDeg", Imf::FloatAttribute(static_cast<float>(s.sun.zenith_deg)));
   header.insert("sunAzimuthDeg", Imf::FloatAttribute(static_cast<float>(s.sun.azimuth_deg)));
   header.insert("clearskyAlpha", Imf::StringAttribute(alpha_rule(s.options.ground)));

@@ -52,6 +52,8 @@ class SkydomeRender {
   const std::string& model_id() const;
   // Clearsky-Quality, Clearsky-Served-Quality, Clearsky-Quality-Detail (api/request/quality.h).
   void add_quality_headers(std::vector<std::pair<std::string, std::string>>& headers) const;
+  // Clearsky-Fit when the request named a fit (api/request/sky_fit.h).
+  void add_fit_headers(std::vector<std::pair<std::string, std::string>>& headers) const;
   int width() const;
   int height() const;
   // "image/x-exr" and "sky.exr", or "image/png" and "sky.png" (format=png).

@@ -13,6 +13,7 @@
 #include <iostream>
 
 #include "api/encode/evaluation_json.h"
+#include "api/evaluation/evaluation_fit.h"
 #include "api/evaluation/evaluation_runner.h"
 #include "api/evaluation/evaluations_api.h"
 #include "api/http/json_body.h"
@@ -79,6 +80,7 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
         throw CLI::ValidationError("--models", e.what());
       }
       request.parameters = api::parse_evaluation_parameters(parameters, factories);
+      api::check_evaluation_fit(db, request.parameters, factories);
     }
     if (!options->out_of_domain.empty())
       request.parameters[api::kOutOfDomainParameter] = options->out_of_domain;

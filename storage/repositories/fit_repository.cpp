@@ -143,4 +143,20 @@ std::vector<FitRecord> FitRepository::list(int limit, std::int64_t before_id) {
   return out;
 }
 
+std::optional<FitRecord> FitRepository::latest_succeeded(const std::string& model_id,
+                                                         std::optional<std::int64_t> dataset_id) {
+  auto statement = db_.prepare(std::string(kSelect) +
+                               " WHERE f.model_id = ? AND f.status = 'succeeded'"
+                               " AND (? IS NULL OR f.dataset_id = ?) ORDER BY f.id DESC LIMIT 1");
+  statement.bind(1, model_id);
+  for (const int index : {2, 3}) {
+    if (dataset_id)
+      statement.bind(index, *dataset_id);
+    else
+      statement.bind_null(index);
+  }
+  if (!statement.step()) return std::nullopt;
+  return read_fit(statement);
+}
+
 }  // namespace clearsky::storage

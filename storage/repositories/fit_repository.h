@@ -69,6 +69,10 @@ class FitRepository {
   std::optional<FitRecord> get(std::int64_t id);
   // Newest first: at most limit fits with id < before_id (0: from the newest).
   std::vector<FitRecord> list(int limit, std::int64_t before_id = 0);
+  // The newest (highest id) succeeded fit of the model, on the dataset when given (fit=latest,
+  // docs/fits.md "Using a fit"); nullopt when there is none.
+  std::optional<FitRecord> latest_succeeded(const std::string& model_id,
+                                            std::optional<std::int64_t> dataset_id);
 
  private:
   Database& db_;

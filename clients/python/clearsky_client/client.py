@@ -14,8 +14,8 @@ from .data_results import (Dataset, DatasetSummary, Evaluation, EvaluationSummar
 from .errors import ClearskyError
 from .exr_image import SkydomeImage, read_skydome
 from .retry import RetryPolicy
-from .sky_query import (Number, ParameterValue, Time, View, Wavelengths, as_query,
-                        format_time, format_value, sky_parameters, views_body)
+from .sky_query import (FitReference, Number, ParameterValue, Time, View, Wavelengths,
+                        as_query, format_time, format_value, sky_parameters, views_body)
 from .sky_results import (Irradiance, IrradianceSeries, ModelInfo, Radiance, Rgb, SkydomeFile,
                           Sun)
 from .transport import Answer, Transport
@@ -99,12 +99,15 @@ class Client:
                  lon: Optional[Union[Number, str]] = None, time: Optional[Time] = None,
                  wavelengths: Optional[Wavelengths] = None,
                  quality: Optional[str] = None,
+                 fit: Optional[FitReference] = None,
                  **parameters: ParameterValue) -> Radiance:
         """GET /v1/radiance: the spectral radiance of one view, W/(m2.sr.nm).
 
         The sun is given (sun_zenith, sun_azimuth, degrees) or computed (lat, lon, time).
         wavelengths: nm, a list or a text ("400:700:10"); absent, the model's default grid.
         parameters: the model's and the atmosphere's (turbidity=3, albedo=0.1, altitude=...).
+        fit: a stored fit of the model (its id, "latest" or "latest:DATASET") whose fitted values
+        are used instead (docs/fits.md "Using a fit"; the answer's ``fit`` says which).
 
         Example:
             >>> sky = client.radiance("hosek", 45, 0, lat=42.444, lon=-76.5,
@@ -113,7 +116,7 @@ class Client:
             (1, 40)
         """
         query = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time, wavelengths,
-                               parameters, quality)
+                               parameters, quality, fit)
         query.update(view_zenith=view_zenith, view_azimuth=view_azimuth)
         return Radiance.from_json(self._get("/v1/radiance", query).json())
 
@@ -123,6 +126,7 @@ class Client:
                        lon: Optional[Union[Number, str]] = None, time: Optional[Time] = None,
                        wavelengths: Optional[Wavelengths] = None,
                        quality: Optional[str] = None,
+                       fit: Optional[FitReference] = None,
                        **parameters: ParameterValue) -> Radiance:
         """POST /v1/radiance: many views at once, (zenith, azimuth) in degrees; one row of the
         answer per view, in the order given. Otherwise as ``radiance``.
@@ -134,7 +138,7 @@ class Client:
             (2, 3)
         """
         body: Dict[str, Any] = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time,
-                                              wavelengths, parameters, quality)
+                                              wavelengths, parameters, quality, fit)
         body["views"] = views_body(views)
         return Radiance.from_json(self._transport.request("POST", "/v1/radiance",
                                                           json_body=body).json())
@@ -148,6 +152,7 @@ class Client:
                    ground_reflection: Optional[str] = None,
                    ground_albedo: Optional[Number] = None,
                    quality: Optional[str] = None,
+                   fit: Optional[FitReference] = None,
                    precipitable_water_cm: Optional[Number] = None,
                    ozone_atm_cm: Optional[Number] = None,
                    **parameters: ParameterValue) -> Irradiance:
@@ -166,7 +171,7 @@ class Client:
             659.987393848494
         """
         query = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time, None, parameters,
-                               quality)
+                               quality, fit)
         for name, value in (("tilt", tilt), ("surface_azimuth", surface_azimuth),
                             ("component", component), ("ground_reflection", ground_reflection),
                             ("ground_albedo", ground_albedo),
@@ -184,6 +189,7 @@ class Client:
                           planes: Optional[Sequence[Sequence[Number]]] = None,
                           ground_reflection: Optional[str] = None,
                           ground_albedo: Optional[Number] = None,
+                          fit: Optional[FitReference] = None,
                           **parameters: ParameterValue) -> IrradianceSeries:
         """GET /v1/irradiance/series: the irradiance of a place from start to end (both ISO
         8601 with an offset, aware datetimes, or local times in ``tz``, an IANA zone) every
@@ -204,7 +210,7 @@ class Client:
             query["planes"] = ",".join(f"{format_value(tilt)}:{format_value(azimuth)}"
                                        for tilt, azimuth in planes)
         for name, value in (("step", step), ("tz", tz), ("ground_reflection", ground_reflection),
-                            ("ground_albedo", ground_albedo)):
+                            ("ground_albedo", ground_albedo), ("fit", fit)):
             if value is not None:
                 query[name] = value
         query.update(parameters)
@@ -215,6 +221,7 @@ class Client:
             sun_azimuth: Optional[Number] = None, lat: Optional[Union[Number, str]] = None,
             lon: Optional[Union[Number, str]] = None, time: Optional[Time] = None,
             quality: Optional[str] = None,
+            fit: Optional[FitReference] = None,
             **parameters: ParameterValue) -> Rgb:
         """GET /v1/rgb: linear sRGB (D65, radiometric) and luminance of one view; method
         ``spectral`` (default, CIE 1931 over the 40 bins) or ``three`` (the paper's
@@ -225,7 +232,7 @@ class Client:
             array([5404.27240365])
         """
         query = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time, None, parameters,
-                               quality)
+                               quality, fit)
         query.update(view_zenith=view_zenith, view_azimuth=view_azimuth)
         if method is not None:
             query["method"] = method
@@ -236,10 +243,11 @@ class Client:
                   lat: Optional[Union[Number, str]] = None,
                   lon: Optional[Union[Number, str]] = None, time: Optional[Time] = None,
                   quality: Optional[str] = None,
+                  fit: Optional[FitReference] = None,
                   **parameters: ParameterValue) -> Rgb:
         """POST /v1/rgb: ``rgb`` for many views, one row per view in the order given."""
         body: Dict[str, Any] = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time,
-                                              None, parameters, quality)
+                                              None, parameters, quality, fit)
         if method is not None:
             body["method"] = method
         body["views"] = views_body(views)
@@ -253,6 +261,7 @@ class Client:
                 lon: Optional[Union[Number, str]] = None, time: Optional[Time] = None,
                 chunk_bytes: int = 1 << 20, progress: Optional[Progress] = None,
                 quality: Optional[str] = None,
+                fit: Optional[FitReference] = None,
                 **parameters: ParameterValue) -> SkydomeFile:
         """GET /v1/skydome streamed into the file ``path`` (an OpenEXR image) chunk by chunk,
         never whole in memory. progress(bytes_received, 0) after each chunk (the length of a
@@ -266,7 +275,7 @@ class Client:
             SkydomeFile(path='sky.exr', bytes_written=...)
         """
         query = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time, wavelengths,
-                               parameters, quality)
+                               parameters, quality, fit)
         for name, value in (("projection", projection), ("size", size),
                             ("channels", channels), ("pixel_type", pixel_type),
                             ("method", method)):
@@ -306,6 +315,7 @@ class Client:
                     lat: Optional[Union[Number, str]] = None,
                     lon: Optional[Union[Number, str]] = None, time: Optional[Time] = None,
                     quality: Optional[str] = None,
+                    fit: Optional[FitReference] = None,
                     **parameters: ParameterValue) -> Dict[str, Any]:
         """GET /v1/skypatches: the sky vector of Radiance's daylight-coefficient tools
         (docs/building-energy.md), the JSON answer as a dict: ``patches`` in Radiance's order
@@ -319,7 +329,7 @@ class Client:
             146
         """
         query = sky_parameters(model, sun_zenith, sun_azimuth, lat, lon, time, wavelengths,
-                               parameters, quality)
+                               parameters, quality, fit)
         for name, value in (("scheme", scheme), ("mf", mf), ("sun", sun), ("output", output),
                             ("ground_reflectance", ground_reflectance)):
             if value is not None:

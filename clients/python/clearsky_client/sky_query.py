@@ -15,6 +15,8 @@ Number = Union[int, float]
 ParameterValue = Union[int, float, str, bool]
 Wavelengths = Union[str, Sequence[Number]]
 Time = Union[str, datetime]
+# A stored fit: its id, "latest" or "latest:DATASET".
+FitReference = Union[int, str]
 # A view: (view_zenith_deg, view_azimuth_deg).
 View = Tuple[Number, Number]
 
@@ -48,12 +50,17 @@ def sky_parameters(model: str, sun_zenith: Optional[Number], sun_azimuth: Option
                    lat: Optional[Union[Number, str]], lon: Optional[Union[Number, str]],
                    time: Optional[Time], wavelengths: Optional[Wavelengths],
                    parameters: Mapping[str, ParameterValue],
-                   quality: Optional[str] = None) -> Dict[str, ParameterValue]:
+                   quality: Optional[str] = None,
+                   fit: Optional[FitReference] = None) -> Dict[str, ParameterValue]:
     """The parameters of a sky request as a dict, only those given. quality: draft, standard or
-    reference (docs/quality-levels.md); absent, the server's level."""
+    reference (docs/quality-levels.md); absent, the server's level. fit: a stored fit's id,
+    "latest" or "latest:DATASET", whose fitted values the model then uses (docs/fits.md "Using
+    a fit")."""
     out: Dict[str, ParameterValue] = {"model": model}
     if quality is not None:
         out["quality"] = quality
+    if fit is not None:
+        out["fit"] = fit
     for name, value in (("sun_zenith", sun_zenith), ("sun_azimuth", sun_azimuth),
                         ("lat", lat), ("lon", lon)):
         if value is not None:

@@ -111,6 +111,12 @@ class Radiance:
         """The level whose tables answered: quality, or draft while standard is being built."""
         return self.raw["served_quality"]
 
+    @property
+    def fit(self) -> Optional[Dict[str, Any]]:
+        """The stored fit the request named (fit=): id, model, model_version, dataset and the
+        fitted parameters used; None without one (docs/fits.md "Using a fit")."""
+        return self.raw.get("fit")
+
     @classmethod
     def from_json(cls, j: Dict[str, Any]) -> "Radiance":
         samples = j["samples"]
@@ -152,6 +158,12 @@ class Rgb:
     def served_quality(self) -> str:
         """The level whose tables answered: quality, or draft while standard is being built."""
         return self.raw["served_quality"]
+
+    @property
+    def fit(self) -> Optional[Dict[str, Any]]:
+        """The stored fit the request named (fit=): id, model, model_version, dataset and the
+        fitted parameters used; None without one (docs/fits.md "Using a fit")."""
+        return self.raw.get("fit")
 
     @classmethod
     def from_json(cls, j: Dict[str, Any]) -> "Rgb":
@@ -216,6 +228,12 @@ class Irradiance:
     def served_quality(self) -> str:
         """The level whose tables answered: quality, or draft while standard is being built."""
         return self.raw["served_quality"]
+
+    @property
+    def fit(self) -> Optional[Dict[str, Any]]:
+        """The stored fit the request named (fit=): id, model, model_version, dataset and the
+        fitted parameters used; None without one (docs/fits.md "Using a fit")."""
+        return self.raw.get("fit")
 
     @property
     def broadband_unavailable(self) -> Optional[str]:

@@ -387,6 +387,23 @@ class ClientAgainstWriter(unittest.TestCase):
         self.assertRefused(lambda: self.client.create_fit("synthetic", "preetham", ["alpha"]),
                            400, "invalid_parameter", "free")
 
+        # The stored fit used by a sky request: the same answer as its values given explicitly,
+        # and the answer says which fit (docs/fits.md "Using a fit").
+        turbidity = fit.values["turbidity"]
+        by_fit = self.client.radiance("preetham", 45, 0, sun_zenith=30, sun_azimuth=135,
+                                      fit=fit.id)
+        explicit = self.client.radiance("preetham", 45, 0, sun_zenith=30, sun_azimuth=135,
+                                        turbidity=turbidity)
+        self.assertEqual(by_fit.radiance.tolist(), explicit.radiance.tolist())
+        self.assertEqual((by_fit.fit["id"], by_fit.fit["parameters"]),
+                         (fit.id, {"turbidity": turbidity}))
+        self.assertIsNone(explicit.fit)
+        self.assertEqual(self.client.rgb("preetham", 45, 0, sun_zenith=30, sun_azimuth=135,
+                                         fit="latest").fit["id"], fit.id)
+        self.assertRefused(lambda: self.client.radiance("hosek", 45, 0, sun_zenith=30,
+                                                        sun_azimuth=135, fit=fit.id),
+                           409, "fit_model_mismatch", "fit")
+
         job = self.client.create_job("nightly", "0 3 * * *", "synthetic", ["preetham", "hosek"],
                                      {"turbidity": 3})
         self.assertFalse(job.paused)

@@ -36,6 +36,9 @@ TEST(Cors, AllowedOriginsOnly) {
   EXPECT_EQ(allowed.header("Access-Control-Allow-Origin"), "https://a.example");
   EXPECT_EQ(allowed.header("Vary"), "Origin");
   EXPECT_NE(allowed.header("Access-Control-Expose-Headers")->find("ETag"), std::string::npos);
+  // The stored fit an answer used (docs/fits.md "Using a fit"), readable by a page.
+  EXPECT_NE(allowed.header("Access-Control-Expose-Headers")->find("Clearsky-Fit"),
+            std::string::npos);
 
   ApiResponse other;
   cors.add_headers("https://b.example", other);

@@ -1,7 +1,8 @@
 // A query replica (`clearsky serve --role query`, docs/deploy.md "Roles"), the real process:
 // it serves the sky endpoints without a database, opens none (no file appears where the default
 // --db would be), answers every data endpoint, writes included, 404 no_database naming the
-// role, and refuses to start with a --db (a usage error).
+// role (a sky request naming a stored fit: naming fit), and refuses to start with a --db (a
+// usage error).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -63,6 +64,12 @@ TEST(QueryRole, ServesTheSkyWithoutADatabaseAndRefusesTheDataEndpointsNamingTheR
   ASSERT_TRUE(removal);
   EXPECT_EQ(removal->status, 404);
   EXPECT_EQ(error_of(removal)["code"], "no_database");
+  // A sky request naming a stored fit needs the database too (docs/fits.md "Using a fit").
+  const auto with_fit = c.Get(query + "&fit=1");
+  ASSERT_TRUE(with_fit);
+  EXPECT_EQ(with_fit->status, 404);
+  EXPECT_EQ(error_of(with_fit)["code"], "no_database");
+  EXPECT_EQ(error_of(with_fit)["parameter"], "fit");
 
   EXPECT_TRUE(server.alive());
   EXPECT_FALSE(std::filesystem::exists(server.directory() / "var")) << server.log();

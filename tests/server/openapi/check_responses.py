@@ -410,6 +410,23 @@ def run(checker, workdir):
     c.call("listFits", 200)
     c.call("listFits", 400, query="limit=0")
 
+    # The stored fit used by the sky endpoints (fit=, docs/fits.md "Using a fit"): the answers
+    # carry its fit member; another model's fit and an unknown one are refused naming fit.
+    sun = ("model", "sun_zenith", "sun_azimuth")
+    views = ("view_zenith", "view_azimuth")
+    with_fit = c.call("getRadiance", 200,
+                      query=c.query("getRadiance", *sun, *views, fit=fit["id"]))
+    if not with_fit or with_fit.get("fit", {}).get("id") != fit["id"]:
+        raise RuntimeError(f"the radiance with fit={fit['id']} does not name it: {with_fit}")
+    c.call("getRgb", 200, query=c.query("getRgb", *sun, *views, fit="latest"))
+    c.call("getIrradiance", 200, query=c.query("getIrradiance", *sun, fit=fit["id"]))
+    c.call("getSkyPatches", 200, query=c.query("getSkyPatches", *sun, fit=fit["id"]))
+    c.call("postRadiance", 200, body=dict(c.body_example("postRadiance"), fit=fit["id"]))
+    c.call("getRadiance", 400, query=c.query("getRadiance", *sun, *views, fit="first"))
+    c.call("getRadiance", 404, query=c.query("getRadiance", *sun, *views, fit=999))
+    c.call("getRadiance", 409, query=c.query("getRadiance", "sun_zenith", "sun_azimuth", *views,
+                                             model="hosek", fit=fit["id"]))
+
     # Jobs.
     c.call("createJob", 401, body=c.body_example("createJob"))
     c.call("createJob", 201, body=c.body_example("createJob"), token=TOKEN)
