@@ -130,8 +130,10 @@ bool write_sky_matrix_radiance(const SkyMatrixAnswer& a, const ByteSink& sink) {
          "\nFORMAT=ascii\n\n";
   for (std::size_t patch = 0; patch < m.patch_count; ++patch) {
     for (std::size_t step = 0; step < m.steps; ++step) {
-      for (std::size_t c = 0; c < m.components; ++c)
-        text += (c ? "\t" : "") + csv_number(m.at(patch, step, c));
+      for (std::size_t c = 0; c < m.components; ++c) {
+        if (c > 0) text += '\t';
+        text += csv_number(m.at(patch, step, c));
+      }
       text += '\n';
       if (!out.flush_if_full()) return false;
     }
