@@ -14,18 +14,18 @@
 // irradiance_w_m2 stays as a deprecated alias) and broadband_irradiance_w_m2 (300..4000 nm,
 // with the molecular absorbers precipitable_water_cm and ozone_atm_cm:
 // api/irradiance/broadband_irradiance.h), null for a model that cannot go broadband, whose
-// answer names why (broadband_unavailable). The broadband ground term is the ground's
-// model-range share of the global horizontal applied to the broadband global horizontal.
+// answer names why (broadband_unavailable); the broadband step is
+// api/irradiance/broadband_plane_irradiance.h, shared with the series.
 #include <cmath>
 #include <optional>
 
 #include "api/fits/stored_fit_values.h"
 #include "api/handlers/handlers.h"
 #include "api/handlers/sky_radiance_query.h"
-#include "api/irradiance/broadband_irradiance.h"
+#include "api/irradiance/broadband_plane_irradiance.h"
+#include "api/irradiance/broadband_request.h"
 #include "api/irradiance/ground_reflection_request.h"
 #include "api/irradiance/plane_irradiance.h"
-#include "models/atmosphere/atmosphere_parameter_table.h"
 #include "models/atmosphere/spctral2.h"
 #include "models/core/numeric.h"
 
@@ -69,12 +69,7 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
   const std::string component =
       p.choice("component", {"all", "direct", "diffuse", "ground_diffuse", "global"}, "all");
   const bool spectral = p.boolean_or("spectral", false);
-  AtmosphereParameters absorbers_atmosphere = config.atmosphere;
-  for (const char* name : {"precipitable_water_cm", "ozone_atm_cm"}) {
-    const AtmosphereParameterInfo& info = *find_atmosphere_parameter(name);
-    info.set(absorbers_atmosphere,
-             p.number_or(name, info.default_value, info.min_value, info.max_value));
-  }
+  const AtmosphereParameters absorbers_atmosphere = parse_broadband_absorbers(p, config.atmosphere);
   const GroundReflection ground = parse_ground_reflection(p);
   p.reject_unused();
   if (component == "ground_diffuse" && !ground.included)
@@ -105,7 +100,7 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
       plane_irradiance(model, *state, viewpoint, plane, horizontal,
                        ground_albedo_spectrum(model, ground), used, want_diffuse, sun.parameter);
 
-  // The broadband figures (api/irradiance/broadband_irradiance.h).
+  // The broadband figures (api/irradiance/broadband_plane_irradiance.h).
   const std::optional<std::string> broadband_unavailable = broadband_unavailable_reason(d);
   const BroadbandConditions conditions{
       .sun_zenith_rad = sun.sun.zenith_rad,
@@ -115,37 +110,13 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
                                                              day_of_year_utc(*sun.unix_time_utc_s))
                                                        : 1.0};
   const XyzWeights xyz(model.wavelengths());
-  std::optional<double> bb_direct_normal, bb_direct, bb_diffuse, bb_ground, bb_global;
+  BroadbandHorizontalIrradiance bb_horizontal;
+  BroadbandPlaneIrradiance bb_plane;
   if (!broadband_unavailable) {
-    const auto over_model_range = [&](const Spectrum& e) {
-      return ModelSpectrum{model.wavelengths(), m.indices, e};
-    };
-    const double above_horizon = sun.sun.zenith_rad <= 0.5 * kPi ? 1.0 : 0.0;
-    if (want_direct) {
-      bb_direct_normal =
-          broadband_direct_normal_w_m2(over_model_range(horizontal.direct_normal), conditions);
-      const double cos_incidence =
-          dot(SkyDirection{plane.tilt_rad, plane.azimuth_rad}.unit_vector(),
-              SkyDirection{sun.sun}.unit_vector());
-      bb_direct = *bb_direct_normal * std::max(0.0, cos_incidence) * above_horizon;
-    }
-    if (want_diffuse)
-      bb_diffuse = broadband_diffuse_w_m2(over_model_range(on_plane.sky_diffuse), conditions);
-    if (want_ground) {
-      // The ground reflects the global horizontal: its model-range share of it (the albedo
-      // and view factor of plane_irradiance.h) applied to the broadband global horizontal.
-      const double global_horizontal_bb =
-          *bb_direct_normal * std::cos(sun.sun.zenith_rad) * above_horizon +
-          broadband_diffuse_w_m2(over_model_range(horizontal.diffuse), conditions);
-      const double global_horizontal =
-          integrated(horizontal.global, model, m.indices, xyz).irradiance_w_m2;
-      const double ground_w_m2 =
-          integrated(on_plane.ground_diffuse, model, m.indices, xyz).irradiance_w_m2;
-      bb_ground =
-          global_horizontal > 0.0 ? ground_w_m2 / global_horizontal * global_horizontal_bb : 0.0;
-    }
+    const BroadbandExtension extension(model.wavelengths(), m.indices, conditions);
+    bb_horizontal = broadband_horizontal_irradiance(extension, horizontal);
+    bb_plane = broadband_plane_irradiance(extension, horizontal, bb_horizontal, on_plane);
   }
-  if (bb_direct && bb_diffuse) bb_global = *bb_direct + *bb_diffuse + bb_ground.value_or(0.0);
 
   nlohmann::json body = {
       {"model", d.id},
@@ -157,34 +128,28 @@ ApiResponse irradiance(const ApiContext& context, const ApiRequest& request) {
        {model.wavelengths().lower_edge_nm(m.indices.front()),
         model.wavelengths().upper_edge_nm(m.indices.back())}},
       {"ground_reflection", ground_reflection_json(ground)}};
+  body["broadband"] = broadband_json(broadband_unavailable, absorbers_atmosphere);
   if (broadband_unavailable) {
-    body["broadband"] = nullptr;
     body["broadband_unavailable"] = *broadband_unavailable;
   } else {
-    body["broadband"] = {
-        {"range_nm", {kBroadbandMinNm, kBroadbandMaxNm}},
-        {"precipitable_water_cm", absorbers_atmosphere.precipitable_water_cm},
-        {"ozone_atm_cm", absorbers_atmosphere.ozone_atm_cm},
-        {"earth_sun_distance_factor", conditions.earth_sun_distance_factor},
-        {"method",
-         "the model's spectra inside integrated_range_nm, absorbed by water vapour, "
-         "ozone and mixed gases (Bird and Riordan 1986); outside it the model's "
-         "extinction and SPCTRAL2's diffuse scaled to the model at the range ends"}};
+    body["broadband"]["earth_sun_distance_factor"] = conditions.earth_sun_distance_factor;
   }
   if (spectral) body["wavelengths_nm"] = m.wavelengths_nm;
   if (all || component == "direct") {
-    body["direct_normal"] =
-        component_json(horizontal.direct_normal, model, m.indices, xyz, spectral, bb_direct_normal);
-    body["direct"] = component_json(on_plane.direct, model, m.indices, xyz, spectral, bb_direct);
+    body["direct_normal"] = component_json(horizontal.direct_normal, model, m.indices, xyz,
+                                           spectral, bb_horizontal.direct_normal_w_m2);
+    body["direct"] =
+        component_json(on_plane.direct, model, m.indices, xyz, spectral, bb_plane.direct_w_m2);
   }
   if (all || component == "diffuse")
-    body["diffuse"] =
-        component_json(on_plane.sky_diffuse, model, m.indices, xyz, spectral, bb_diffuse);
+    body["diffuse"] = component_json(on_plane.sky_diffuse, model, m.indices, xyz, spectral,
+                                     bb_plane.sky_diffuse_w_m2);
   if (want_ground)
-    body["ground_diffuse"] =
-        component_json(on_plane.ground_diffuse, model, m.indices, xyz, spectral, bb_ground);
+    body["ground_diffuse"] = component_json(on_plane.ground_diffuse, model, m.indices, xyz,
+                                            spectral, bb_plane.ground_diffuse_w_m2);
   if (all || component == "global")
-    body["global"] = component_json(on_plane.global, model, m.indices, xyz, spectral, bb_global);
+    body["global"] =
+        component_json(on_plane.global, model, m.indices, xyz, spectral, bb_plane.global_w_m2);
   add_quality_members(body, quality, m.served_quality);
   add_fit_member(body, sky.fit);
   ApiResponse response = json_response(body);

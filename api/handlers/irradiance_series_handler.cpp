@@ -17,6 +17,10 @@ ApiResponse irradiance_series(const ApiContext& context, const ApiRequest& reque
   response.model_id = series->grid.model->descriptor().id;
   add_quality_headers(response.headers, series->quality, series->grid.served_quality);
   add_fit_headers(response.headers, series->fit);
+  // A CSV has no place for the reason of its empty broadband columns but a header
+  // (docs/building-energy.md "Irradiance time series").
+  if (series->csv && series->broadband_unavailable)
+    response.headers.emplace_back("Clearsky-Broadband-Unavailable", *series->broadband_unavailable);
   response.stream = [series](const ByteSink& sink) {
     return write_irradiance_series(*series, sink);
   };

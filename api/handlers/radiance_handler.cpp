@@ -3,24 +3,14 @@
 // "samples": [{"view_zenith_deg", "view_azimuth_deg", "radiance": [...]}]};
 // format=csv: one row per view and wavelength
 // (view_zenith_deg,view_azimuth_deg,wavelength_nm,radiance_w_m2_sr_nm).
-#include <cstdio>
 
 #include "api/fits/stored_fit_values.h"
+#include "api/encode/csv_number.h"
 #include "api/handlers/handlers.h"
 #include "api/handlers/sky_radiance_query.h"
 #include "api/http/answer_memory_reservation.h"
 
 namespace clearsky::api {
-
-namespace {
-
-std::string csv_number(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(finite(x)));
-  return buffer;
-}
-
-}  // namespace
 
 ApiResponse radiance(const ApiContext& context, const ApiRequest& request) {
   Parameters p = request_parameters(request, {"views"});

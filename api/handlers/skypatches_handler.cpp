@@ -12,23 +12,34 @@
 // | output             | -    | spectral | spectral, rgb, luminance   | W/(m2.sr.nm); Radiance RGB, W/(m2.sr); cd/m2   |
 // | wavelengths        | nm   | model's  | as on /v1/radiance         | output=spectral only; patches x wavelengths <= 1e6 (413) |
 // | ground_reflectance | -    | 0.2      | [0, 1]                     | patch 0: Lambertian ground (gendaymtx's -g)    |
-// | format             | -    | json     | json, csv                  | csv: one row per patch (the sun last, if separate) |
+// | format             | -    | json     | json, csv, radiance        | csv: one row per patch (the sun last, if separate); radiance: with start only |
+// | start, end, step, tz | -  | none     | api/request/time_steps.h   | a sky matrix: one vector per step (lat, lon instead of a sun) |
 // clang-format on
 //
 // and the sky endpoints' model, sun (sun_zenith/sun_azimuth or lat, lon, time, ...), altitude
-// and model parameters. Fitted models (clamp_negative_fit) default to clamping here: a patch
-// average is an integral, and like the sky irradiance it takes the physical limit of no light
-// where the fit goes negative (models/core/fit_domain.h).
+// and model parameters. With start (and end, step, tz: the instants of GET
+// /v1/irradiance/series, api/request/time_steps.h) the answer is a sky matrix instead
+// (api/skypatches/sky_patch_matrix.h, sky_patch_matrix_writer.h): one column per step, at most
+// kMaxSkyMatrixValues values (steps x patches x components: 413 naming step), its floats held
+// in the answer memory budget while it is sent. Fitted models (clamp_negative_fit) default to
+// clamping here: a patch average is an integral, and like the sky irradiance it takes the
+// physical limit of no light where the fit goes negative (models/core/fit_domain.h).
 #include <array>
 #include <cmath>
-#include <cstdio>
+#include <memory>
 #include <numbers>
+#include <optional>
 
-#include "api/colour/radiance_rgb.h"
 #include "api/colour/xyz_weights.h"
+#include "api/encode/csv_number.h"
+#include "api/encode/iso8601_time.h"
 #include "api/fits/stored_fit_values.h"
 #include "api/handlers/handlers.h"
 #include "api/handlers/sky_radiance_query.h"
+#include "api/http/answer_memory_reservation.h"
+#include "api/request/time_steps.h"
+#include "api/skypatches/patch_value_encoder.h"
+#include "api/skypatches/sky_patch_matrix_writer.h"
 #include "api/skypatches/sky_patch_vector.h"
 #include "models/core/fit_domain.h"
 
@@ -38,44 +49,98 @@ namespace {
 
 constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 
-std::string csv_number(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(finite(x)));
-  return buffer;
+// The CSV column suffixes of one value's components (sky_patch_matrix_writer.h).
+std::vector<std::string> component_suffixes(const std::string& output,
+                                            const std::vector<double>& wavelengths_nm) {
+  if (output == "luminance") return {""};
+  if (output == "rgb") return {"_R", "_G", "_B"};
+  std::vector<std::string> out;
+  for (double wl : wavelengths_nm) {
+    std::string suffix = csv_number(wl);  // appended, not "_" + ...: GCC 12's false
+    suffix.insert(suffix.begin(), '_');   // -Wstringop-overflow on operator+(const char*, ...)
+    out.push_back(suffix + "nm");
+  }
+  return out;
 }
 
-// One patch's (or the sun's) values in the requested output.
-struct ValueEncoder {
-  const std::string& output;
-  const ModelOnGrid& m;
-  const XyzWeights& xyz;
-  std::size_t clipped = 0;
-
-  std::vector<double> values(const Spectrum& spectrum) {
-    if (output == "spectral") {
-      std::vector<double> out;
-      for (std::size_t i : m.indices) out.push_back(spectrum[i]);
-      return out;
-    }
-    const Xyz colour = xyz.xyz({spectrum.data(), spectrum.size()});
-    if (output == "luminance") return {kMaxLuminousEfficacy * colour.y};
-    const ClippedRadianceRgb rgb = clip_radiance_rgb(xyz_to_radiance_rgb(colour));
-    if (rgb.clipped) ++clipped;
-    return {rgb.rgb.r, rgb.rgb.g, rgb.rgb.b};
+// The sky matrix of a request with start: checked, computed, then written as it is sent.
+ApiResponse sky_matrix_response(const ApiContext& context, const ModelOnGrid& m,
+                                const RequestQuality& quality, std::shared_ptr<TimeSteps> times,
+                                const Viewpoint& viewpoint, int mf, const std::string& scheme_name,
+                                const std::string& sun_handling, const std::string& output,
+                                double ground_reflectance, const std::string& format) {
+  const SkyModel& model = *m.model;
+  const ModelDescriptor& d = model.descriptor();
+  auto scheme = std::make_shared<const SkyPatchScheme>(mf);
+  const std::size_t components =
+      output == "spectral" ? m.indices.size() : (output == "rgb" ? 3 : 1);
+  const std::size_t values = times->steps * scheme->patch_count() * components;
+  if (values > kMaxSkyMatrixValues) {
+    throw too_large("step", std::to_string(times->steps) + " steps x " +
+                                std::to_string(scheme->patch_count()) + " patches x " +
+                                std::to_string(components) + " components is " +
+                                std::to_string(values) + " values, above the limit of " +
+                                std::to_string(kMaxSkyMatrixValues) +
+                                "; ask for a longer step, a shorter period, fewer patches or "
+                                "fewer components (output=rgb or luminance)");
   }
-  nlohmann::json json(const Spectrum& spectrum) {
-    const std::vector<double> v = values(spectrum);
-    if (output == "luminance") return finite(v[0]);
-    nlohmann::json out = nlohmann::json::array();
-    for (double x : v) out.push_back(finite(x));
-    return out;
-  }
-};
+  require_answerable_suns(*times, model);
+  auto reservation =
+      reserve_answer_memory(context, values * sizeof(float), "the sky matrix",
+                            "ask for a longer step, a shorter period or fewer patches");
+  const XyzWeights xyz(model.wavelengths());
+  PatchValueEncoder encoder{output, m.indices, xyz};
+  auto matrix = std::make_shared<const SkyPatchMatrix>(
+      compute_sky_patch_matrix(model, *times, viewpoint, *scheme,
+                               sun_handling == "patch" ? SunHandling::patch : SunHandling::separate,
+                               ground_reflectance, encoder));
 
-const char* unit_of(const std::string& output) {
-  if (output == "spectral") return "W/(m2.sr.nm)";
-  if (output == "rgb") return "W/(m2.sr)";
-  return "cd/m2";
+  ApiResponse response;
+  response.model_id = d.id;
+  add_quality_headers(response.headers, quality, m.served_quality);
+  response.held_until_sent = reservation;
+  auto suffixes = component_suffixes(output, m.wavelengths_nm);
+  if (format == "csv" || format == "radiance") {
+    response.content_type = format == "csv" ? "text/csv" : "text/plain";
+    response.stream = [matrix, times, scheme, suffixes, format, reservation](const ByteSink& sink) {
+      const SkyMatrixAnswer answer{*matrix, *times, *scheme, suffixes};
+      return format == "csv" ? write_sky_matrix_csv(answer, sink)
+                             : write_sky_matrix_radiance(answer, sink);
+    };
+    return response;
+  }
+  const WavelengthGrid& grid = model.wavelengths();
+  nlohmann::json head = {
+      {"model", d.id},
+      {"model_version", d.version},
+      {"lat", times->position.latitude_deg},
+      {"lon", times->position.longitude_deg},
+      {"altitude_m", viewpoint.altitude_m},
+      {"start", format_iso8601_time(times->start_unix_s, 0, true)},
+      {"step", times->step_text},
+      {"step_s", times->step_s},
+      {"steps", times->steps},
+      {"tz", times->tz ? nlohmann::json(*times->tz) : nlohmann::json(nullptr)},
+      {"scheme", scheme_name},
+      {"mf", mf},
+      {"patch_count", scheme->patch_count()},
+      {"sun_handling", sun_handling},
+      {"output", output},
+      {"unit", encoder.unit()},
+      {"ground_reflectance", ground_reflectance},
+      {"integrated_range_nm",
+       {grid.lower_edge_nm(m.indices.front()), grid.upper_edge_nm(m.indices.back())}}};
+  if (output == "spectral") head["wavelengths_nm"] = m.wavelengths_nm;
+  if (output == "rgb") {
+    head["gamut_clipped_values"] = encoder.clipped();
+    head["gamut_mapping"] = "negative components clipped to 0";
+  }
+  add_quality_members(head, quality, m.served_quality);
+  response.content_type = "application/json";
+  response.stream = [matrix, times, scheme, suffixes, head, reservation](const ByteSink& sink) {
+    return write_sky_matrix_json({*matrix, *times, *scheme, suffixes}, head, sink);
+  };
+  return response;
 }
 
 }  // namespace
@@ -86,8 +151,17 @@ ApiResponse skypatches(const ApiContext& context, const ApiRequest& request) {
   Parameters p = request_parameters(request);
   const ModelFactory& factory = parse_model(p, context.models);
   const ModelDescriptor& d = *factory.descriptor;
-  const SunSpec sun = parse_sun(p);
-  const Viewpoint viewpoint = parse_viewpoint(p);
+  // With start, a sky matrix: the instants and suns of the irradiance series.
+  std::shared_ptr<TimeSteps> times;
+  std::optional<SunSpec> single_sun;
+  Viewpoint viewpoint;
+  if (p.has("start")) {
+    times = std::make_shared<TimeSteps>(parse_time_steps(p));
+    viewpoint = Viewpoint{times->position.elevation_m};
+  } else {
+    single_sun = parse_sun(p);
+    viewpoint = parse_viewpoint(p);
+  }
   SkyConfig sky = parse_sky_config(p, d, stored_fit_lookup(context));
   ModelConfig& config = sky.config;
   const RequestQuality quality = parse_quality(p, d, config, context.default_quality);
@@ -103,8 +177,11 @@ ApiResponse skypatches(const ApiContext& context, const ApiRequest& request) {
   const auto wavelengths =
       output == "spectral" ? parse_wavelengths(p, context.limits) : std::nullopt;
   const double ground_reflectance = p.number_or("ground_reflectance", 0.2, 0.0, 1.0);
-  const std::string format = p.choice("format", {"json", "csv"}, "json");
+  const std::string format = p.choice("format", {"json", "csv", "radiance"}, "json");
   p.reject_unused();
+  if (format == "radiance" && !times)
+    throw invalid_parameter("format", "radiance is the format of a sky matrix (with start)");
+  if (times) require_per_sun_day_steps(*times, d);
   const SkyPatchScheme scheme(mf);
   // Bounded answers: at most kMaxPatchValues numbers (patches x wavelengths), e.g. MF 6 with 192
   // wavelengths or Tregenza with 2000. A spectral MF 6 vector on 1881 wavelengths was a 195 MB
@@ -119,6 +196,13 @@ ApiResponse skypatches(const ApiContext& context, const ApiRequest& request) {
 
   const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config),
                                              wavelengths, request.requester(), &quality);
+  if (times) {
+    ApiResponse matrix = sky_matrix_response(context, m, quality, times, viewpoint, mf, scheme_name,
+                                             sun_handling, output, ground_reflectance, format);
+    add_fit_headers(matrix.headers, sky.fit);
+    return matrix;
+  }
+  const SunSpec& sun = *single_sun;
   const SkyModel& model = *m.model;
   const auto state = prepare_sun(context.models, m.model, sun);
   const PatchQuadratureOrder order = default_patch_quadrature_order(scheme);
@@ -130,15 +214,10 @@ ApiResponse skypatches(const ApiContext& context, const ApiRequest& request) {
                  d.id);
 
   const XyzWeights xyz(model.wavelengths());
-  ValueEncoder encode{output, m, xyz};
-  const auto patches = scheme.sky_patches();
-  // Centre altitude and azimuth (degrees) and solid angle of patch k; the ground's centre is
-  // the nadir.
+  PatchValueEncoder encode{output, m.indices, xyz};
   const auto geometry = [&](std::size_t k) -> std::array<double, 3> {
-    if (k == 0) return {-90.0, 0.0, 2.0 * std::numbers::pi};
-    const SkyPatch& patch = patches[k - 1];
-    return {patch.centre_altitude_rad * kDegreesPerRadian,
-            patch.centre_azimuth_rad * kDegreesPerRadian, patch.solid_angle_sr};
+    const PatchGeometry g = patch_geometry(scheme, k);
+    return {g.altitude_deg, g.azimuth_deg, g.solid_angle_sr};
   };
   const double sun_altitude_deg = 90.0 - sun.zenith_deg;
 
@@ -205,7 +284,7 @@ ApiResponse skypatches(const ApiContext& context, const ApiRequest& request) {
       {"sun_handling", sun_handling},
       {"sun_patch", vector.sun_patch},
       {"output", output},
-      {"unit", unit_of(output)},
+      {"unit", encode.unit()},
       {"ground_reflectance", ground_reflectance},
       {"integrated_range_nm",
        {grid.lower_edge_nm(m.indices.front()), grid.upper_edge_nm(m.indices.back())}},
@@ -219,7 +298,7 @@ ApiResponse skypatches(const ApiContext& context, const ApiRequest& request) {
       {"sun_source", std::move(sun_source)}};
   if (output == "spectral") body["wavelengths_nm"] = m.wavelengths_nm;
   if (output == "rgb") {
-    body["gamut_clipped_values"] = encode.clipped;
+    body["gamut_clipped_values"] = encode.clipped();
     body["gamut_mapping"] = "negative components clipped to 0";
   }
   add_quality_members(body, quality, m.served_quality);

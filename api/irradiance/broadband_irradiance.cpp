@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 #include "models/atmosphere/spctral2.h"
 #include "models/core/numeric.h"
@@ -14,16 +15,6 @@ namespace clearsky::api {
 namespace {
 
 constexpr double kStepNm = 1.0;
-
-// The model's answered range [lower edge of the first sample, upper edge of the last]: the
-// integrated_range_nm of the answer.
-struct Range {
-  double lo_nm, hi_nm;
-};
-
-Range model_range(const ModelSpectrum& s) {
-  return {s.grid.lower_edge_nm(s.indices.front()), s.grid.upper_edge_nm(s.indices.back())};
-}
 
 spctral2::Atmosphere spctral2_atmosphere(const BroadbandConditions& c) {
   const AtmosphereParameters& a = c.atmosphere;
@@ -66,17 +57,6 @@ double mean_absorption(const WavelengthGrid& grid, std::size_t i, const Broadban
   return integral_nm(lo, hi, t) / (hi - lo);
 }
 
-// Sum over the model's samples of weight x value x mean transmittance.
-double absorbed_model_integral(const ModelSpectrum& s, const BroadbandConditions& c,
-                               double pressure_ratio) {
-  double sum = 0.0;
-  for (std::size_t i : s.indices) {
-    sum += s.grid.integration_weight_nm(i) * s.values[i] *
-           mean_absorption(s.grid, i, c, pressure_ratio);
-  }
-  return sum;
-}
-
 }  // namespace
 
 std::optional<std::string> broadband_unavailable_reason(const ModelDescriptor& descriptor) {
@@ -90,52 +70,111 @@ std::optional<std::string> broadband_unavailable_reason(const ModelDescriptor& d
          "irradiance\")";
 }
 
-double broadband_direct_normal_w_m2(const ModelSpectrum& direct_normal,
-                                    const BroadbandConditions& c) {
-  if (!(c.sun_zenith_rad < 0.5 * kPi)) return 0.0;
-  const spctral2::Atmosphere atmosphere = spctral2_atmosphere(c);
-  const Range r = model_range(direct_normal);
-  const double inside = absorbed_model_integral(direct_normal, c, atmosphere.pressure_ratio);
-  const auto spctral2_direct = [&](double nm) {
-    return spctral2::spectral_irradiance(nm, c.sun_zenith_rad, atmosphere).direct_normal_w_m2_nm;
+BroadbandIntegrals broadband_integrals(const WavelengthGrid& grid,
+                                       const std::vector<std::size_t>& indices,
+                                       const BroadbandConditions& conditions) {
+  const spctral2::Atmosphere atmosphere = spctral2_atmosphere(conditions);
+  BroadbandIntegrals out;
+  out.mean_absorption.reserve(indices.size());
+  for (std::size_t i : indices)
+    out.mean_absorption.push_back(mean_absorption(grid, i, conditions, atmosphere.pressure_ratio));
+  // The model's answered range [lower edge of the first sample, upper edge of the last]: the
+  // integrated_range_nm of the answer.
+  const double lo_nm = grid.lower_edge_nm(indices.front());
+  const double hi_nm = grid.upper_edge_nm(indices.back());
+  const double zenith = conditions.sun_zenith_rad;
+  const bool sun_up = zenith < 0.5 * kPi;
+  // SPCTRAL2's direct normal and diffuse together, one evaluation per wavelength: each of the
+  // two integrals is the midpoint sum it would be alone.
+  const auto both = [&](double lo, double hi) {
+    double direct = 0.0;
+    const double diffuse = integral_nm(lo, hi, [&](double nm) {
+      const spctral2::SpectralIrradiance e = spctral2::spectral_irradiance(nm, zenith, atmosphere);
+      direct += e.direct_normal_w_m2_nm;
+      return e.diffuse_horizontal_w_m2_nm;
+    });
+    const auto steps = hi > lo ? std::ceil((hi - lo) / kStepNm) : 1.0;
+    return std::pair{direct * ((hi - lo) / steps), diffuse};
   };
-  const double below =
-      integral_nm(kBroadbandMinNm, std::min(r.lo_nm, kBroadbandMaxNm), spctral2_direct);
-  const double above =
-      integral_nm(std::max(r.hi_nm, kBroadbandMinNm), kBroadbandMaxNm, spctral2_direct);
-  return c.earth_sun_distance_factor * (below + inside + above);
+  const auto spctral2_diffuse = [&](double nm) {
+    return spctral2::spectral_irradiance(nm, zenith, atmosphere).diffuse_horizontal_w_m2_nm;
+  };
+  // SPCTRAL2's mean diffuse over one end sample's interval (its point value for a point grid's
+  // end samples, whose interval may be empty).
+  const auto mean_diffuse = [&](std::size_t i) {
+    const double lo = grid.lower_edge_nm(i), hi = grid.upper_edge_nm(i);
+    return hi > lo ? integral_nm(lo, hi, spctral2_diffuse) / (hi - lo) : spctral2_diffuse(grid[i]);
+  };
+  const auto [direct_below, diffuse_below] =
+      both(kBroadbandMinNm, std::min(lo_nm, kBroadbandMaxNm));
+  const auto [direct_above, diffuse_above] =
+      both(std::max(hi_nm, kBroadbandMinNm), kBroadbandMaxNm);
+  if (sun_up) {
+    out.direct_below_w_m2 = direct_below;
+    out.direct_above_w_m2 = direct_above;
+  }
+  if (lo_nm > kBroadbandMinNm) {
+    out.diffuse_below_w_m2 = diffuse_below;
+    out.diffuse_first_w_m2_nm = mean_diffuse(indices.front());
+  }
+  if (hi_nm < kBroadbandMaxNm) {
+    out.diffuse_above_w_m2 = diffuse_above;
+    out.diffuse_last_w_m2_nm = mean_diffuse(indices.back());
+  }
+  return out;
 }
 
-double broadband_diffuse_w_m2(const ModelSpectrum& diffuse, const BroadbandConditions& c) {
-  const spctral2::Atmosphere atmosphere = spctral2_atmosphere(c);
-  const Range r = model_range(diffuse);
-  const double inside = absorbed_model_integral(diffuse, c, atmosphere.pressure_ratio);
-  const auto spctral2_diffuse = [&](double nm) {
-    return spctral2::spectral_irradiance(nm, c.sun_zenith_rad, atmosphere)
-        .diffuse_horizontal_w_m2_nm;
-  };
-  // The scale of SPCTRAL2's diffuse to the model's at one end sample: the model's absorbed
-  // diffuse over the sample's interval over SPCTRAL2's over the same interval (0 when
-  // SPCTRAL2 has none there: a sun below the horizon, whose twilight the extension leaves out).
-  const auto scale_at = [&](std::size_t i) {
-    const double lo = diffuse.grid.lower_edge_nm(i), hi = diffuse.grid.upper_edge_nm(i);
-    const double model =
-        diffuse.values[i] * mean_absorption(diffuse.grid, i, c, atmosphere.pressure_ratio);
-    const double reference = hi > lo ? integral_nm(lo, hi, spctral2_diffuse) / (hi - lo)
-                                     : spctral2_diffuse(diffuse.grid[i]);
-    return reference > 0.0 ? model / reference : 0.0;
-  };
+BroadbandExtension::BroadbandExtension(const WavelengthGrid& grid, std::vector<std::size_t> indices,
+                                       const BroadbandConditions& conditions)
+    : BroadbandExtension(grid, indices, conditions,
+                         broadband_integrals(grid, indices, conditions)) {}
+
+BroadbandExtension::BroadbandExtension(const WavelengthGrid& grid, std::vector<std::size_t> indices,
+                                       const BroadbandConditions& conditions,
+                                       BroadbandIntegrals integrals)
+    : grid_(grid),
+      indices_(std::move(indices)),
+      conditions_(conditions),
+      sun_up_(conditions.sun_zenith_rad < 0.5 * kPi),
+      integrals_(std::move(integrals)) {}
+
+double BroadbandExtension::absorbed_model_integral(const Spectrum& values) const {
+  double sum = 0.0;
+  for (std::size_t k = 0; k < indices_.size(); ++k) {
+    const std::size_t i = indices_[k];
+    sum += grid_.integration_weight_nm(i) * values[i] * integrals_.mean_absorption[k];
+  }
+  return sum;
+}
+
+double BroadbandExtension::direct_normal_w_m2(const Spectrum& direct_normal) const {
+  if (!sun_up_) return 0.0;
+  const double inside = absorbed_model_integral(direct_normal);
+  return conditions_.earth_sun_distance_factor *
+         (integrals_.direct_below_w_m2 + inside + integrals_.direct_above_w_m2);
+}
+
+// The scale of SPCTRAL2's diffuse to the model's at one end sample: the model's absorbed diffuse
+// over the sample's interval over SPCTRAL2's over the same interval (0 when SPCTRAL2 has none
+// there: a sun below the horizon, whose twilight the extension leaves out).
+double BroadbandExtension::diffuse_scale(const Spectrum& diffuse, std::size_t position,
+                                         double reference) const {
+  const double model = diffuse[indices_[position]] * integrals_.mean_absorption[position];
+  return reference > 0.0 ? model / reference : 0.0;
+}
+
+double BroadbandExtension::diffuse_w_m2(const Spectrum& diffuse) const {
+  const double inside = absorbed_model_integral(diffuse);
+  const BroadbandIntegrals& g = integrals_;
   const double below =
-      r.lo_nm > kBroadbandMinNm
-          ? scale_at(diffuse.indices.front()) *
-                integral_nm(kBroadbandMinNm, std::min(r.lo_nm, kBroadbandMaxNm), spctral2_diffuse)
+      g.diffuse_below_w_m2 > 0.0
+          ? diffuse_scale(diffuse, 0, g.diffuse_first_w_m2_nm) * g.diffuse_below_w_m2
           : 0.0;
-  const double above =
-      r.hi_nm < kBroadbandMaxNm
-          ? scale_at(diffuse.indices.back()) *
-                integral_nm(std::max(r.hi_nm, kBroadbandMinNm), kBroadbandMaxNm, spctral2_diffuse)
-          : 0.0;
-  return c.earth_sun_distance_factor * (below + inside + above);
+  const double above = g.diffuse_above_w_m2 > 0.0
+                           ? diffuse_scale(diffuse, indices_.size() - 1, g.diffuse_last_w_m2_nm) *
+                                 g.diffuse_above_w_m2
+                           : 0.0;
+  return conditions_.earth_sun_distance_factor * (below + inside + above);
 }
 
 double day_of_year_utc(double unix_time_utc_s) {

@@ -17,7 +17,7 @@
 //  - the whole multiplied by the Earth-Sun distance factor of the date (Spencer 1971, Bird and
 //    Riordan eq. 2-2) when the request gives a time, 1 (1 au, as the models) otherwise.
 // Integrated by the midpoint rule on 1 nm steps outside the model's range and within each of
-// its bins for the transmittances. Pure functions, thread-safe.
+// its bins for the transmittances. Thread-safe.
 #pragma once
 
 #include <cstddef>
@@ -48,18 +48,57 @@ struct BroadbandConditions {
   double earth_sun_distance_factor = 1.0;  // (1 au / r)^2
 };
 
-// A model's spectral answer over its range: samples indices (ascending, contiguous) of grid.
-struct ModelSpectrum {
-  const WavelengthGrid& grid;
-  const std::vector<std::size_t>& indices;
-  const Spectrum& values;  // W/(m2.nm)
+// What the extension integrates at one sun for a model's grid (W/m2 and W/(m2.nm) at 1 au), the
+// samples `indices` (ascending and contiguous: the answer's integrated_range_nm): the absorbers'
+// mean transmittance over each model bin, and SPCTRAL2's direct normal and diffuse on 1 nm steps
+// outside the model's range (about 3,700 evaluations of SPCTRAL2, which gives both at once).
+struct BroadbandIntegrals {
+  std::vector<double> mean_absorption;  // per position in indices
+  double direct_below_w_m2 = 0, direct_above_w_m2 = 0;
+  double diffuse_below_w_m2 = 0, diffuse_above_w_m2 = 0;
+  // SPCTRAL2's mean diffuse over the model's first and last samples.
+  double diffuse_first_w_m2_nm = 0, diffuse_last_w_m2_nm = 0;
 };
 
-// The broadband direct normal irradiance (W/m2).
-double broadband_direct_normal_w_m2(const ModelSpectrum& direct_normal,
-                                    const BroadbandConditions& conditions);
-// The broadband diffuse irradiance (W/m2) on the plane the model's diffuse spectrum is for.
-double broadband_diffuse_w_m2(const ModelSpectrum& diffuse, const BroadbandConditions& conditions);
+BroadbandIntegrals broadband_integrals(const WavelengthGrid& grid,
+                                       const std::vector<std::size_t>& indices,
+                                       const BroadbandConditions& conditions);
+
+// The broadband extension at one sun: its integrals, done once (at construction, or
+// interpolated in a BroadbandZenithTable for a long series), then each spectrum costs a sum
+// over the model's bins, so the direct normal, the horizontal and every plane's diffuse of one
+// sun share them (tests/bench/broadband_irradiance_bench.cpp). Immutable after construction;
+// thread-safe. grid must outlive it.
+class BroadbandExtension {
+ public:
+  BroadbandExtension(const WavelengthGrid& grid, std::vector<std::size_t> indices,
+                     const BroadbandConditions& conditions);
+  // With the integrals given (those of conditions' sun, or interpolated to it).
+  BroadbandExtension(const WavelengthGrid& grid, std::vector<std::size_t> indices,
+                     const BroadbandConditions& conditions, BroadbandIntegrals integrals);
+
+  // The broadband direct normal irradiance (W/m2) of the model's direct normal spectrum
+  // (W/(m2.nm) on the grid); 0 with the sun at or below the horizon.
+  double direct_normal_w_m2(const Spectrum& direct_normal) const;
+  // The broadband diffuse irradiance (W/m2) on the plane the model's diffuse spectrum is for.
+  double diffuse_w_m2(const Spectrum& diffuse) const;
+
+  const BroadbandConditions& conditions() const { return conditions_; }
+  const WavelengthGrid& grid() const { return grid_; }
+  const std::vector<std::size_t>& indices() const { return indices_; }
+
+ private:
+  // Sum over the model's samples of weight x value x mean transmittance.
+  double absorbed_model_integral(const Spectrum& values) const;
+  // SPCTRAL2's diffuse scaled to the model's absorbed diffuse over one end sample.
+  double diffuse_scale(const Spectrum& diffuse, std::size_t position, double reference) const;
+
+  const WavelengthGrid& grid_;
+  std::vector<std::size_t> indices_;
+  BroadbandConditions conditions_;
+  bool sun_up_ = false;
+  BroadbandIntegrals integrals_;
+};
 
 // Day of the year (1 on 1 January, fractional) of a UTC instant, for the Earth-Sun distance.
 double day_of_year_utc(double unix_time_utc_s);

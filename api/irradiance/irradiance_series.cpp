@@ -3,16 +3,15 @@
 
 #include <cmath>
 #include <memory>
-#include <stdexcept>
 
 #include "api/encode/iso8601_time.h"
 #include "api/fits/stored_fit_values.h"
+#include "api/irradiance/broadband_plane_irradiance.h"
+#include "api/irradiance/broadband_request.h"
+#include "api/irradiance/broadband_zenith_table.h"
 #include "api/irradiance/ground_reflection_request.h"
-#include "api/parse/iso8601_duration.h"
-#include "api/parse/iso8601_time.h"
-#include "models/core/invalid_input.h"
+#include "models/atmosphere/spctral2.h"
 #include "models/core/numeric.h"
-#include "models/solar/delta_t.h"
 
 namespace clearsky::api {
 
@@ -21,87 +20,104 @@ namespace {
 // Rows are encoded in blocks of this many steps (a day of hourly rows).
 constexpr std::size_t kRowsPerBlock = 24;
 
-// An instant with its offset, or a local time in tz (the zone's offset, DST included).
-double parse_instant(const std::string& text, const std::string& parameter,
-                     const std::optional<std::string>& tz) {
-  const std::size_t t = text.find('T');
-  const bool has_offset =
-      t != std::string::npos && text.find_first_of("Zz+-", t) != std::string::npos;
-  if (has_offset || !tz) return parse_iso8601_time(text, parameter).unix_time_utc_s;
-  return parse_iso8601_local_time(text, *tz, parameter, "tz").unix_time_utc_s;
+// The broadband horizontal and plane columns of a row, and the model-range ones.
+constexpr std::size_t kHorizontalValues = 7;  // ghi, dni, dhi, illuminance, model_range_* x 3
+constexpr std::size_t kPlaneValues = 11;      // poa_* x 6, model_range_poa_* x 5
+
+nlohmann::json optional_value(const std::optional<double>& x) {
+  return x ? nlohmann::json(finite(*x)) : nlohmann::json(nullptr);
 }
 
-void check_zone(const std::string& zone) {
-  try {
-    (void)utc_offset_min_in_zone(0.0, zone);
-  } catch (const std::exception&) {
-    throw invalid_parameter("tz",
-                            "must be an IANA time zone name (e.g. Europe/Paris), got " + zone);
-  }
-}
-
-SolarPosition sun_at(SolarPositionInput position, bool delta_t_from_time, double unix_s) {
-  position.unix_time_utc_s = unix_s;
-  try {
-    if (delta_t_from_time) position.delta_t_s = espenak_meeus_delta_t_at_s(unix_s);
-    return solar_position(position);
-  } catch (const InvalidInput& e) {
-    throw invalid_parameter(
-        "end", std::string("a step the sun position cannot be computed for: ") + e.what());
-  }
-}
-
-bool is_night(double zenith_deg) { return zenith_deg >= 90.0; }
-
-// One row as JSON values; a step the model cannot answer has null irradiances.
+// One row as JSON values; a step the model cannot answer has null irradiances. The broadband
+// figures (broadband_plane_irradiance.h) are those of GET /v1/irradiance at the step's sun and
+// date; null for a model that cannot go broadband.
 nlohmann::json row_of(const IrradianceSeriesRequest& s, const SkyModel& model,
                       const XyzWeights& xyz, const Spectrum& albedo,
                       const std::vector<std::unique_ptr<PlaneSkyIrradianceTable>>& tables,
-                      std::size_t i, bool& answered) {
-  const double t = s.start_unix_s + static_cast<double>(i) * static_cast<double>(s.step_s);
+                      const BroadbandZenithTable* broadband_table, std::size_t i, bool& answered) {
+  const TimeSteps& times = s.times;
+  const double t = times.unix_time_s(i);
   nlohmann::json row = nlohmann::json::array();
   row.push_back(format_iso8601_time(t, 0, true));
-  if (s.tz) row.push_back(format_iso8601_time_in_zone(t, *s.tz));
-  const double zenith = s.zenith_deg[i];
-  const bool night = is_night(zenith);
+  if (times.tz) row.push_back(format_iso8601_time_in_zone(t, *times.tz));
+  const bool night = times.night(i);
   row.push_back(night);
-  row.push_back(finite(zenith));
-  row.push_back(finite(s.azimuth_deg[i]));
-  const std::size_t values = 4 + 6 * s.planes.size();
+  row.push_back(finite(times.zenith_deg[i]));
+  row.push_back(finite(times.azimuth_deg[i]));
   answered = true;
+  const bool broadband = !s.broadband_unavailable;
   if (night) {
-    for (std::size_t k = 0; k < values; ++k) row.push_back(0.0);
+    // The broadband columns lead each group: 3 of the horizontal's, 5 of each plane's.
+    const auto zeros = [&](std::size_t broadband_values, std::size_t others) {
+      for (std::size_t k = 0; k < broadband_values; ++k)
+        row.push_back(broadband ? nlohmann::json(0.0) : nlohmann::json(nullptr));
+      for (std::size_t k = 0; k < others; ++k) row.push_back(0.0);
+    };
+    zeros(3, kHorizontalValues - 3);
+    for (std::size_t k = 0; k < s.planes.size(); ++k) zeros(5, kPlaneValues - 5);
     return row;
   }
   try {
-    const SunPosition sun{degrees_to_radians(zenith), degrees_to_radians(s.azimuth_deg[i])};
+    const SunPosition sun = times.sun(i);
     const auto state = model.prepare_sun(sun);
     const HorizontalIrradiance h =
         horizontal_irradiance(model, *state, s.viewpoint, true, true, "start");
     const auto& indices = s.grid.indices;
+    std::optional<BroadbandExtension> extension;
+    BroadbandHorizontalIrradiance bb_h;
+    if (broadband) {
+      const BroadbandConditions conditions{
+          .sun_zenith_rad = sun.zenith_rad,
+          .altitude_m = s.viewpoint.altitude_m,
+          .atmosphere = s.absorbers,
+          .earth_sun_distance_factor = spctral2::earth_sun_distance_factor(day_of_year_utc(t))};
+      if (broadband_table != nullptr) {
+        extension.emplace(model.wavelengths(), indices, conditions,
+                          broadband_table->at(sun.zenith_rad));
+      } else {
+        extension.emplace(model.wavelengths(), indices, conditions);
+      }
+      bb_h = broadband_horizontal_irradiance(*extension, h);
+    }
     const IntegratedIrradiance ghi = integrated(h.global, model, indices, xyz);
     nlohmann::json cells = nlohmann::json::array();
+    cells.push_back(optional_value(bb_h.global_w_m2));
+    cells.push_back(optional_value(bb_h.direct_normal_w_m2));
+    cells.push_back(optional_value(bb_h.diffuse_w_m2));
+    cells.push_back(finite(ghi.illuminance_lx));
     cells.push_back(finite(ghi.irradiance_w_m2));
     cells.push_back(finite(integrated(h.direct_normal, model, indices, xyz).irradiance_w_m2));
     cells.push_back(finite(integrated(h.diffuse, model, indices, xyz).irradiance_w_m2));
-    cells.push_back(finite(ghi.illuminance_lx));
     for (std::size_t k = 0; k < s.planes.size(); ++k) {
       const PlaneIrradiance e =
           plane_irradiance(model, *state, s.viewpoint, s.planes[k].orientation(), h, albedo,
                            s.ground, true, "start", tables.empty() ? nullptr : tables[k].get());
+      BroadbandPlaneIrradiance bb;
+      if (extension) bb = broadband_plane_irradiance(*extension, h, bb_h, e);
+      const std::optional<double> bb_diffuse =
+          bb.sky_diffuse_w_m2
+              ? std::optional<double>(*bb.sky_diffuse_w_m2 + bb.ground_diffuse_w_m2.value_or(0.0))
+              : std::nullopt;
+      cells.push_back(optional_value(bb.global_w_m2));
+      cells.push_back(optional_value(bb.direct_w_m2));
+      cells.push_back(optional_value(bb_diffuse));
+      cells.push_back(optional_value(bb.sky_diffuse_w_m2));
+      cells.push_back(optional_value(broadband ? bb.ground_diffuse_w_m2.value_or(0.0)
+                                               : std::optional<double>()));
       const IntegratedIrradiance global = integrated(e.global, model, indices, xyz);
-      const double sky = integrated(e.sky_diffuse, model, indices, xyz).irradiance_w_m2;
-      const double ground = integrated(e.ground_diffuse, model, indices, xyz).irradiance_w_m2;
+      const double sky = model_range_w_m2(e.sky_diffuse, model.wavelengths(), indices);
+      const double ground = model_range_w_m2(e.ground_diffuse, model.wavelengths(), indices);
+      cells.push_back(finite(global.illuminance_lx));
       cells.push_back(finite(global.irradiance_w_m2));
-      cells.push_back(finite(integrated(e.direct, model, indices, xyz).irradiance_w_m2));
+      cells.push_back(finite(model_range_w_m2(e.direct, model.wavelengths(), indices)));
       cells.push_back(finite(sky + ground));
       cells.push_back(finite(sky));
       cells.push_back(finite(ground));
-      cells.push_back(finite(global.illuminance_lx));
     }
     for (auto& c : cells) row.push_back(std::move(c));
   } catch (const ApiError&) {
     answered = false;
+    const std::size_t values = kHorizontalValues + kPlaneValues * s.planes.size();
     for (std::size_t k = 0; k < values; ++k) row.push_back(nullptr);
   }
   return row;
@@ -125,13 +141,15 @@ void append_csv(std::string& out, const nlohmann::json& row) {
 
 std::vector<std::string> IrradianceSeriesRequest::columns() const {
   std::vector<std::string> out = {"time_utc"};
-  if (tz) out.push_back("time_local");
-  for (const char* name :
-       {"night", "solar_zenith", "solar_azimuth", "ghi", "dni", "dhi", "illuminance"})
+  if (times.tz) out.push_back("time_local");
+  for (const char* name : {"night", "solar_zenith", "solar_azimuth", "ghi", "dni", "dhi",
+                           "illuminance", "model_range_ghi", "model_range_dni", "model_range_dhi"})
     out.emplace_back(name);
   for (const SeriesPlane& plane : planes) {
     for (const char* name : {"poa_global", "poa_direct", "poa_diffuse", "poa_sky_diffuse",
-                             "poa_ground_diffuse", "poa_illuminance"})
+                             "poa_ground_diffuse", "poa_illuminance", "model_range_poa_global",
+                             "model_range_poa_direct", "model_range_poa_diffuse",
+                             "model_range_poa_sky_diffuse", "model_range_poa_ground_diffuse"})
       out.push_back(name + plane.suffix);
   }
   return out;
@@ -145,45 +163,16 @@ IrradianceSeriesRequest parse_irradiance_series(const ApiContext& context,
   IrradianceSeriesRequest s;
   const ModelFactory& factory = parse_model(p, context.models);
   const ModelDescriptor& d = *factory.descriptor;
-  if (p.has("time"))
-    throw invalid_parameter("time", "a series takes start, end and step instead of time");
-  for (const char* name : {"sun_zenith", "sun_azimuth"}) {
-    if (p.has(name))
-      throw invalid_parameter(name, "a series computes the sun of each step from lat and lon");
-  }
-  s.tz = p.text("tz");
-  if (s.tz) check_zone(*s.tz);
-  const std::string start_text = p.required_text("start");
-  const std::string end_text = p.required_text("end");
-  s.start_unix_s = parse_instant(start_text, "start", s.tz);
-  const double end_unix_s = parse_instant(end_text, "end", s.tz);
-  if (end_unix_s < s.start_unix_s)
-    throw invalid_parameter("end",
-                            "must not be before start (" + start_text + "), got " + end_text);
-  if (auto step = p.text("step")) {
-    s.step_text = *step;
-    s.step_s = parse_iso8601_duration_s(*step, "step");
-  }
-  const double span_steps =
-      std::floor((end_unix_s - s.start_unix_s) / static_cast<double>(s.step_s));
-  if (span_steps + 1.0 > static_cast<double>(kMaxSeriesSteps)) {
-    throw too_large("step", "start to end every " + s.step_text + " is " +
-                                std::to_string(static_cast<long long>(span_steps) + 1) +
-                                " steps, above the limit of " + std::to_string(kMaxSeriesSteps) +
-                                " (a leap year every 10 minutes); ask for a longer step or a "
-                                "shorter period");
-  }
-  s.steps = static_cast<std::size_t>(span_steps) + 1;
-  const PlaceTime place = parse_place_and_time(p, s.start_unix_s);
-  s.position = place.position;
-  s.delta_t_from_time = place.delta_t_from_time;
-  s.viewpoint = Viewpoint{s.position.elevation_m};
+  s.times = parse_time_steps(p);
+  s.viewpoint = Viewpoint{s.times.position.elevation_m};
   SkyConfig sky = parse_sky_config(p, d, stored_fit_lookup(context));
   ModelConfig& config = sky.config;
   s.fit = std::move(sky.fit);
   s.quality = parse_quality(p, d, config, context.default_quality);
   if (auto planes = p.text("planes")) s.planes = parse_planes(*planes);
   s.ground = parse_ground_reflection(p);
+  s.absorbers = parse_broadband_absorbers(p, config.atmosphere);
+  s.broadband_unavailable = broadband_unavailable_reason(d);
   s.csv = p.choice("format", {"json", "csv"}, "json") == "csv";
   p.reject_unused();
   if (!d.capabilities.sun_irradiance || !d.capabilities.sky_irradiance) {
@@ -191,34 +180,14 @@ IrradianceSeriesRequest parse_irradiance_series(const ApiContext& context,
                         "it does not compute both the direct sun and the sky irradiance");
   }
 
-  s.zenith_deg.resize(s.steps);
-  s.azimuth_deg.resize(s.steps);
-  std::size_t day_steps = 0;
-  for (std::size_t i = 0; i < s.steps; ++i) {
-    const double t = s.start_unix_s + static_cast<double>(i) * static_cast<double>(s.step_s);
-    const SolarPosition sun = sun_at(s.position, s.delta_t_from_time, t);
-    s.zenith_deg[i] = sun.zenith_deg;
-    s.azimuth_deg[i] = sun.azimuth_deg;
-    if (!is_night(sun.zenith_deg)) ++day_steps;
-  }
   s.tabulated_sky =
-      !d.capabilities.per_sun_precomputation && day_steps > PlaneSkyIrradianceTable::kNodes;
-  if (d.capabilities.per_sun_precomputation && day_steps > kMaxPerSunDaySteps) {
-    throw too_large("end", "model " + d.id + " precomputes its tables for each sun position; a " +
-                               "series by it takes at most " + std::to_string(kMaxPerSunDaySteps) +
-                               " steps with the sun up, this one has " + std::to_string(day_steps) +
-                               "; ask for a shorter period or use a model with shared tables " +
-                               "(bruneton, elek, hosek, preetham)");
-  }
+      !d.capabilities.per_sun_precomputation && s.times.day_steps > PlaneSkyIrradianceTable::kNodes;
+  s.tabulated_broadband =
+      !s.broadband_unavailable && s.times.day_steps > BroadbandZenithTable::kNodes;
+  require_per_sun_day_steps(s.times, d);
   s.grid = model_on_wavelengths(context.models, factory, std::move(config), std::nullopt,
                                 request.requester(), &s.quality);
-  for (std::size_t i = 0; i < s.steps; ++i) {
-    if (is_night(s.zenith_deg[i])) continue;
-    const SunPosition sun{degrees_to_radians(s.zenith_deg[i]),
-                          degrees_to_radians(s.azimuth_deg[i])};
-    const SampleStatus status = s.grid.model->check_sun(sun);
-    if (status != SampleStatus::ok) require_answer(status, "start", d.id);
-  }
+  require_answerable_suns(s.times, *s.grid.model);
   return s;
 }
 
@@ -238,6 +207,14 @@ bool write_irradiance_series(const IrradianceSeriesRequest& s, const ByteSink& s
                                                    model, s.viewpoint, plane.orientation()));
     }
   }
+  // Long series interpolate the broadband integrals over the sun zenith (cheaper once the
+  // daytime steps outnumber the table's nodes).
+  std::unique_ptr<BroadbandZenithTable> broadband_table;
+  if (s.tabulated_broadband) {
+    broadband_table = std::make_unique<BroadbandZenithTable>(
+        model.wavelengths(), s.grid.indices,
+        BroadbandConditions{.altitude_m = s.viewpoint.altitude_m, .atmosphere = s.absorbers});
+  }
   std::string out;
   if (s.csv) {
     for (std::size_t k = 0; k < columns.size(); ++k) out += (k ? "," : "") + columns[k];
@@ -252,20 +229,25 @@ bool write_irradiance_series(const IrradianceSeriesRequest& s, const ByteSink& s
     nlohmann::json head = {
         {"model", d.id},
         {"model_version", d.version},
-        {"lat", s.position.latitude_deg},
-        {"lon", s.position.longitude_deg},
+        {"lat", s.times.position.latitude_deg},
+        {"lon", s.times.position.longitude_deg},
         {"altitude_m", s.viewpoint.altitude_m},
-        {"start", format_iso8601_time(s.start_unix_s, 0, true)},
-        {"step", s.step_text},
-        {"step_s", s.step_s},
-        {"steps", s.steps},
-        {"tz", s.tz ? nlohmann::json(*s.tz) : nlohmann::json(nullptr)},
+        {"start", format_iso8601_time(s.times.start_unix_s, 0, true)},
+        {"step", s.times.step_text},
+        {"step_s", s.times.step_s},
+        {"steps", s.times.steps},
+        {"tz", s.times.tz ? nlohmann::json(*s.times.tz) : nlohmann::json(nullptr)},
         {"planes", std::move(planes)},
         {"integrated_range_nm",
          {grid.lower_edge_nm(s.grid.indices.front()), grid.upper_edge_nm(s.grid.indices.back())}},
         {"ground_reflection", ground_reflection_json(s.ground)},
+        {"broadband", broadband_json(s.broadband_unavailable, s.absorbers)},
+        {"broadband_integration",
+         s.broadband_unavailable ? nlohmann::json(nullptr)
+                                 : nlohmann::json(s.tabulated_broadband ? "table" : "per_step")},
         {"sky_diffuse_on_planes", s.tabulated_sky ? "table" : "per_step"},
         {"columns", columns}};
+    if (s.broadband_unavailable) head["broadband_unavailable"] = *s.broadband_unavailable;
     add_quality_members(head, s.quality, s.grid.served_quality);
     add_fit_member(head, s.fit);
     out = head.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
@@ -273,9 +255,10 @@ bool write_irradiance_series(const IrradianceSeriesRequest& s, const ByteSink& s
     out += ",\"rows\":[";
   }
   std::size_t unanswered = 0;
-  for (std::size_t i = 0; i < s.steps; ++i) {
+  for (std::size_t i = 0; i < s.times.steps; ++i) {
     bool answered = true;
-    const nlohmann::json row = row_of(s, model, xyz, albedo, tables, i, answered);
+    const nlohmann::json row =
+        row_of(s, model, xyz, albedo, tables, broadband_table.get(), i, answered);
     if (!answered) ++unanswered;
     if (s.csv) {
       append_csv(out, row);

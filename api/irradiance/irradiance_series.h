@@ -8,11 +8,10 @@
 // |-----------------------------------|----------|----------|-------------------------|------------------------------------------------------|
 // | model and its parameters, quality |          |          | as GET /v1/irradiance   | the sky model and its table quality                  |
 // | lat, lon, altitude, pressure, ... |          |          | api/request/place_time.h | the place (time is refused: start, end, step)       |
-// | start, end                        | ISO 8601 | required | end >= start            | first and last instant (inclusive); an offset or Z, or local in tz |
-// | tz                                | IANA     | none     | a zone name             | local times of start/end and the time_local column   |
-// | step                              | ISO 8601 | PT1H     | > 0                     | duration between rows (PT10M, PT1H, P1D)             |
+// | start, end, tz, step              |          |          | api/request/time_steps.h | the instants: start to end every step               |
 // | planes                            | degree   | none     | tilt:azimuth,...        | planes besides the horizontal (api/irradiance/plane_list.h) |
 // | ground_reflection, ground_albedo  |          |          | ground_reflection_request.h | the isotropic ground on the planes               |
+// | precipitable_water_cm, ozone_atm_cm | cm, atm-cm | 1.42, 0.34 | broadband_request.h | the absorbers of the broadband columns           |
 // | format                            |          | json     | json, csv               | the encoding                                         |
 // clang-format on
 //
@@ -21,6 +20,12 @@
 // sun up (413 naming end). Night rows (apparent sun zenith >= 90 degrees) are zeros with
 // night true. Everything is checked before the first byte; a step the model then cannot
 // answer is written with null values (empty in CSV) and counted in unanswered_steps.
+//
+// ghi, dni, dhi and the planes' poa_* are broadband, 300..4000 nm (broadband_plane_irradiance.h,
+// the computation of GET /v1/irradiance), for the models that can go broadband; the figures over
+// the model's own range are the model_range_* columns. For a model that cannot
+// (broadband_unavailable_reason), the broadband columns are null in every row and the answer
+// says why (JSON: broadband_unavailable; CSV: the header Clearsky-Broadband-Unavailable).
 #pragma once
 
 #include <memory>
@@ -34,34 +39,28 @@
 #include "api/request/place_time.h"
 #include "api/request/quality.h"
 #include "api/request/sky_fit.h"
+#include "api/request/time_steps.h"
 
 namespace clearsky::api {
-
-// A leap year at 10-minute steps.
-inline constexpr std::size_t kMaxSeriesSteps = 8784 * 6;
-inline constexpr std::size_t kMaxPerSunDaySteps = 96;
 
 struct IrradianceSeriesRequest {
   ModelOnGrid grid;
   RequestQuality quality;
   std::optional<AppliedFit> fit;  // the request's fit=, when given
   Viewpoint viewpoint;
-  SolarPositionInput position;  // the place; unix_time_utc_s set per step
-  bool delta_t_from_time = false;
-  double start_unix_s = 0;
-  long long step_s = 3600;
-  std::string step_text = "PT1H";
-  std::size_t steps = 0;
-  std::optional<std::string> tz;
+  TimeSteps times;  // the instants and the sun of each
   std::vector<SeriesPlane> planes;
   GroundReflection ground;
+  AtmosphereParameters absorbers;  // the request's precipitable water and ozone
+  // Why the model cannot go broadband; nullopt when it can.
+  std::optional<std::string> broadband_unavailable;
   bool csv = false;
   // The tilted planes' sky irradiance interpolated in tables (more daytime steps than a
   // table has nodes) rather than queried at each step.
   bool tabulated_sky = false;
-  // The apparent sun of each step, degrees.
-  std::vector<double> zenith_deg, azimuth_deg;
-
+  // The broadband integrals interpolated over the sun zenith (broadband_zenith_table.h), for
+  // the same reason.
+  bool tabulated_broadband = false;
   std::vector<std::string> columns() const;
 };
 

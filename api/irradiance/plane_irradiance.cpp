@@ -27,13 +27,17 @@ HorizontalIrradiance horizontal_irradiance(const SkyModel& model, const SunState
                                            const Viewpoint& viewpoint, bool with_direct,
                                            bool with_sky, const std::string& parameter) {
   const std::size_t n = model.wavelengths().size();
-  HorizontalIrradiance out{Spectrum(n, 0.0), Spectrum(n, 0.0), Spectrum(n, 0.0), Spectrum(n, 0.0)};
+  HorizontalIrradiance out;
+  out.direct_normal = out.direct = out.diffuse = out.global = Spectrum(n, 0.0);
+  out.with_direct = with_direct;
+  out.with_sky = with_sky;
+  out.beam_factor = std::max(0.0, std::cos(sun.sun().zenith_rad));
   const ModelDescriptor& d = model.descriptor();
   if (with_direct) {
     const SpectralSample s = model.sun_irradiance(sun, viewpoint);
     require(s, parameter, d);
     out.direct_normal = s.value;
-    out.direct = s.value * std::max(0.0, std::cos(sun.sun().zenith_rad));
+    out.direct = s.value * out.beam_factor;
   }
   if (with_sky) {
     const SpectralSample s = model.sky_irradiance(sun, viewpoint, PlaneOrientation{});
@@ -51,12 +55,16 @@ PlaneIrradiance plane_irradiance(const SkyModel& model, const SunState& sun,
                                  const std::string& parameter,
                                  const PlaneSkyIrradianceTable* table) {
   const std::size_t n = model.wavelengths().size();
-  PlaneIrradiance out{Spectrum(n, 0.0), Spectrum(n, 0.0), Spectrum(n, 0.0), Spectrum(n, 0.0)};
+  PlaneIrradiance out;
+  out.direct = out.sky_diffuse = out.ground_diffuse = out.global = Spectrum(n, 0.0);
   const SunPosition& s = sun.sun();
   const double cos_incidence = dot(SkyDirection{plane.tilt_rad, plane.azimuth_rad}.unit_vector(),
                                    SkyDirection{s}.unit_vector());
   const double above_horizon = s.zenith_rad <= 0.5 * kPi ? 1.0 : 0.0;
-  out.direct = horizontal.direct_normal * (std::max(0.0, cos_incidence) * above_horizon);
+  out.with_sky = with_sky;
+  out.with_ground = ground.included;
+  out.beam_factor = std::max(0.0, cos_incidence) * above_horizon;
+  out.direct = horizontal.direct_normal * out.beam_factor;
   if (with_sky) {
     std::optional<Spectrum> tabulated;
     if (table != nullptr && plane.tilt_rad != 0.0) tabulated = table->at(s);
@@ -78,11 +86,17 @@ PlaneIrradiance plane_irradiance(const SkyModel& model, const SunState& sun,
   return out;
 }
 
+double model_range_w_m2(const Spectrum& e, const WavelengthGrid& grid,
+                        const std::vector<std::size_t>& indices) {
+  double sum = 0.0;
+  for (std::size_t i : indices) sum += grid.integration_weight_nm(i) * e[i];
+  return sum;
+}
+
 IntegratedIrradiance integrated(const Spectrum& e, const SkyModel& model,
                                 const std::vector<std::size_t>& indices, const XyzWeights& xyz) {
-  const WavelengthGrid& grid = model.wavelengths();
   IntegratedIrradiance out;
-  for (std::size_t i : indices) out.irradiance_w_m2 += grid.integration_weight_nm(i) * e[i];
+  out.irradiance_w_m2 = model_range_w_m2(e, model.wavelengths(), indices);
   out.illuminance_lx = xyz.luminance({e.data(), e.size()});
   return out;
 }

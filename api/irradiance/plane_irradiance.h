@@ -41,9 +41,11 @@ Spectrum ground_albedo_spectrum(const SkyModel& model, const GroundReflection& g
 // weighting the direct part).
 struct HorizontalIrradiance {
   Spectrum direct_normal;
-  Spectrum direct;   // on the horizontal plane
-  Spectrum diffuse;  // the sky's, on the horizontal plane
-  Spectrum global;   // direct + diffuse
+  Spectrum direct;                             // on the horizontal plane
+  Spectrum diffuse;                            // the sky's, on the horizontal plane
+  Spectrum global;                             // direct + diffuse
+  bool with_direct = false, with_sky = false;  // which parts were asked
+  double beam_factor = 0;                      // direct / direct_normal: max(0, cos zenith)
 };
 
 // The model's answers for one prepared sun, with a sample the model cannot answer turned into
@@ -56,7 +58,10 @@ struct PlaneIrradiance {
   Spectrum direct;
   Spectrum sky_diffuse;
   Spectrum ground_diffuse;
-  Spectrum global;  // direct + sky_diffuse + ground_diffuse
+  Spectrum global;                             // direct + sky_diffuse + ground_diffuse
+  bool with_sky = false, with_ground = false;  // which terms were computed
+  // direct / direct_normal: max(0, cos incidence), 0 with the sun below the horizon.
+  double beam_factor = 0;
 };
 
 // One plane at that sun. A horizontal plane (tilt 0) reuses the horizontal figures; others
@@ -70,6 +75,11 @@ PlaneIrradiance plane_irradiance(const SkyModel& model, const SunState& sun,
                                  const GroundReflection& ground, bool with_sky,
                                  const std::string& parameter,
                                  const PlaneSkyIrradianceTable* table = nullptr);
+
+// A spectrum (W/(m2.nm) on grid) summed over the samples `indices` with the grid's integration
+// weights: W/m2 over the answered range.
+double model_range_w_m2(const Spectrum& e, const WavelengthGrid& grid,
+                        const std::vector<std::size_t>& indices);
 
 // A spectrum summed over the requested wavelengths (W/m2) and its illuminance (lx).
 struct IntegratedIrradiance {

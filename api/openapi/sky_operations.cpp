@@ -124,7 +124,54 @@ Json schemas() {
   },
   "SkyPatchesCsv": {
     "type": "string",
-    "description": "format=csv: a header line (patch,altitude_deg,azimuth_deg,solid_angle_sr, then L_<nm>nm per wavelength, R,G,B, or luminance_cd_m2), one row per patch from 0 (the ground) in Radiance's order, then a row named sun with the sun's disk when sun=separate and the sun is up."
+    "description": "format=csv: a header line (patch,altitude_deg,azimuth_deg,solid_angle_sr, then L_<nm>nm per wavelength, R,G,B, or luminance_cd_m2), one row per patch from 0 (the ground) in Radiance's order, then a row named sun with the sun's disk when sun=separate and the sun is up. With start (a sky matrix): a header line (patch,altitude_deg,azimuth_deg,solid_angle_sr, then one column per step and component, named by the step's UTC time with _R, _G, _B or _<nm>nm), a row named night (1 for a night step, 0 otherwise), then one row per patch from 0."
+  },
+  "SkyPatchMatrix": {
+    "type": "object",
+    "description": "GET /v1/skypatches with start: a sky matrix (docs/building-energy.md \"Sky matrices\"), one sky vector (as SkyPatches) per step from start to end, the matrix a daylight-coefficient calculation multiplies by its coefficients. matrix: one row per patch in Radiance's order (patch 0 the ground), one value per step (a number for luminance, an array for rgb and spectral). Night steps (sun zenith >= 90 degrees) are columns of zeros with night true. With sun=separate the matrix holds the sky alone and each step's sun is in times[].sun_source.",
+    "required": ["model", "model_version", "quality", "served_quality", "quality_setting", "quality_error", "lat", "lon", "altitude_m", "start", "step", "step_s", "steps", "tz", "scheme", "mf", "patch_count", "sun_handling", "output", "unit", "ground_reflectance", "integrated_range_nm", "patches", "times", "matrix", "unanswered_steps"],
+    "additionalProperties": false,
+    "properties": {
+      "model": {"type": "string"},
+      "model_version": {"type": "string"},
+      "quality": {"type": "string", "enum": ["draft", "standard", "reference"]},
+      "served_quality": {"type": "string", "enum": ["draft", "standard", "reference"]},
+      "quality_setting": {"type": "object", "additionalProperties": {"type": "number"}},
+      "quality_error": {"type": "object", "allOf": [{"$ref": "#/components/schemas/QualityError"}], "nullable": true},
+      "quality_overridden": {"type": "array", "items": {"type": "string"}},
+      "scheme": {"type": "string", "enum": ["tregenza", "reinhart"]},
+      "mf": {"type": "integer", "minimum": 1, "maximum": 6},
+      "patch_count": {"type": "integer"},
+      "sun_handling": {"type": "string", "enum": ["separate", "patch"]},
+      "output": {"type": "string", "enum": ["spectral", "rgb", "luminance"]},
+      "unit": {"type": "string"},
+      "ground_reflectance": {"type": "number"},
+      "integrated_range_nm": {"type": "array", "minItems": 2, "maxItems": 2, "items": {"type": "number"}},
+      "wavelengths_nm": {"type": "array", "items": {"type": "number"}, "description": "output=spectral."},
+      "gamut_clipped_values": {"type": "integer", "description": "output=rgb: values with a negative component clipped to 0."},
+      "gamut_mapping": {"type": "string"},
+      "patches": {"type": "array", "items": {"type": "object", "required": ["patch", "altitude_deg", "azimuth_deg", "solid_angle_sr"], "additionalProperties": false, "properties": {"patch": {"type": "integer"}, "altitude_deg": {"type": "number"}, "azimuth_deg": {"type": "number"}, "solid_angle_sr": {"type": "number"}}}},
+      "times": {"type": "array", "description": "One per step (column).", "items": {"type": "object", "required": ["time_utc", "night", "answered", "sun_zenith_deg", "sun_azimuth_deg", "sun_patch", "sun_source"], "additionalProperties": false, "properties": {
+        "time_utc": {"type": "string"},
+        "time_local": {"type": "string", "description": "With tz."},
+        "night": {"type": "boolean"},
+        "answered": {"type": "boolean", "description": "false: the model could not answer this step (its column is zeros; counted in unanswered_steps)."},
+        "sun_zenith_deg": {"type": "number"},
+        "sun_azimuth_deg": {"type": "number"},
+        "sun_patch": {"type": "integer", "minimum": 0, "description": "The patch holding the sun's centre; 0 at night."},
+        "sun_source": {"type": "object", "nullable": true, "description": "sun=separate with the sun up: its direction (Radiance's frame: x East, y North, z up), the solid angle of its disk and its radiance in the output.", "required": ["direction", "solid_angle_sr", "value"], "additionalProperties": false, "properties": {"direction": {"type": "array", "minItems": 3, "maxItems": 3, "items": {"type": "number"}}, "solid_angle_sr": {"type": "number"}, "value": {"oneOf": [{"type": "number"}, {"type": "array", "items": {"type": "number"}}]}}}
+      }}},
+      "matrix": {"type": "array", "description": "One row per patch, one value per step.", "items": {"type": "array", "items": {"oneOf": [{"type": "number", "minimum": 0}, {"type": "array", "items": {"type": "number", "minimum": 0}}]}}},
+      "unanswered_steps": {"type": "integer", "minimum": 0}
+    }
+  },
+  "SkyPatchesAnswer": {
+    "description": "GET /v1/skypatches: one sky vector, or with start a sky matrix.",
+    "oneOf": [{"$ref": "#/components/schemas/SkyPatches"}, {"$ref": "#/components/schemas/SkyPatchMatrix"}]
+  },
+  "SkyPatchMatrixText": {
+    "type": "string",
+    "description": "format=radiance with start: Radiance's matrix format as gendaymtx writes it (#?RADIANCE, NROWS=patches, NCOLS=steps, NCOMP=components, FORMAT=ascii, a blank line, then each patch's values step by step, components separated by tabs), for dctimestep and rmtxop."
   },
   "RgbSample": {
     "type": "object",
@@ -234,8 +281,8 @@ Json schemas() {
   },
   "IrradianceSeries": {
     "type": "object",
-    "description": "One row per step from start to end (both included), the values in the order of columns: time_utc, time_local (with tz), night, solar_zenith and solar_azimuth (apparent, degrees), ghi, dni, dhi (W/m2 over integrated_range_nm), illuminance (global horizontal, lx), then per plane poa_global, poa_direct, poa_diffuse (sky + ground, as pvlib), poa_sky_diffuse, poa_ground_diffuse (W/m2) and poa_illuminance (lx), each suffixed _<tilt>_<azimuth> as the plane was written. Night rows (sun zenith >= 90 degrees) hold zeros; a step the model could not answer holds nulls and is counted in unanswered_steps.",
-    "required": ["model", "model_version", "quality", "served_quality", "quality_setting", "quality_error", "lat", "lon", "altitude_m", "start", "step", "step_s", "steps", "tz", "planes", "integrated_range_nm", "ground_reflection", "sky_diffuse_on_planes", "columns", "rows", "unanswered_steps"],
+    "description": "One row per step from start to end (both included), the values in the order of columns: time_utc, time_local (with tz), night, solar_zenith and solar_azimuth (apparent, degrees), ghi, dni, dhi (broadband, 300..4000 nm, W/m2: the figures of GET /v1/irradiance's broadband_irradiance_w_m2), illuminance (global horizontal, lx), model_range_ghi, model_range_dni, model_range_dhi (W/m2 over integrated_range_nm), then per plane poa_global, poa_direct, poa_diffuse (sky + ground, as pvlib), poa_sky_diffuse, poa_ground_diffuse (broadband, W/m2), poa_illuminance (lx) and model_range_poa_global, model_range_poa_direct, model_range_poa_diffuse, model_range_poa_sky_diffuse, model_range_poa_ground_diffuse (W/m2 over integrated_range_nm), each suffixed _<tilt>_<azimuth> as the plane was written. For a model that cannot go broadband (broadband null) the broadband columns are null in every row and broadband_unavailable says why. Night rows (sun zenith >= 90 degrees) hold zeros; a step the model could not answer holds nulls and is counted in unanswered_steps.",
+    "required": ["model", "model_version", "quality", "served_quality", "quality_setting", "quality_error", "lat", "lon", "altitude_m", "start", "step", "step_s", "steps", "tz", "planes", "integrated_range_nm", "ground_reflection", "broadband", "broadband_integration", "sky_diffuse_on_planes", "columns", "rows", "unanswered_steps"],
     "additionalProperties": false,
     "properties": {
       "model": {"type": "string"},
@@ -246,17 +293,24 @@ Json schemas() {
       "quality_error": {"type": "object", "allOf": [{"$ref": "#/components/schemas/QualityError"}], "nullable": true},
       "quality_overridden": {"type": "array", "items": {"type": "string"}},
       "fit": {"$ref": "#/components/schemas/AppliedFit"},
-      "lat": {"type": "number"},
-      "lon": {"type": "number"},
-      "altitude_m": {"type": "number"},
-      "start": {"type": "string", "description": "The first step, UTC."},
-      "step": {"type": "string"},
-      "step_s": {"type": "integer"},
-      "steps": {"type": "integer"},
-      "tz": {"type": "string", "nullable": true},
       "planes": {"type": "array", "items": {"type": "object", "required": ["tilt_deg", "surface_azimuth_deg", "suffix"], "additionalProperties": false, "properties": {"tilt_deg": {"type": "number"}, "surface_azimuth_deg": {"type": "number"}, "suffix": {"type": "string"}}}},
       "integrated_range_nm": {"type": "array", "minItems": 2, "maxItems": 2, "items": {"type": "number"}},
       "ground_reflection": {"$ref": "#/components/schemas/GroundReflection"},
+      "broadband": {
+        "type": "object",
+        "nullable": true,
+        "description": "How the broadband columns were computed (as GET /v1/irradiance, at each step's sun and date: the Earth-Sun distance of Spencer 1971); null when the model cannot go broadband.",
+        "required": ["range_nm", "precipitable_water_cm", "ozone_atm_cm", "method"],
+        "additionalProperties": false,
+        "properties": {
+          "range_nm": {"type": "array", "minItems": 2, "maxItems": 2, "items": {"type": "number"}},
+          "precipitable_water_cm": {"type": "number"},
+          "ozone_atm_cm": {"type": "number"},
+          "method": {"type": "string"}
+        }
+      },
+      "broadband_unavailable": {"type": "string", "description": "Why the model's answer cannot be extended to 300..4000 nm: ghi, dni, dhi and the poa_* columns are then null in every row."},
+      "broadband_integration": {"type": "string", "nullable": true, "enum": ["per_step", "table"], "description": "per_step: the broadband integrals of SPCTRAL2 computed at each step's sun, as GET /v1/irradiance; table: interpolated (linearly) in a table over the sun zenith every 0.5 degrees built for the request when it has more daytime steps than the table has nodes (181). null when the model cannot go broadband."},
       "sky_diffuse_on_planes": {"type": "string", "enum": ["per_step", "table"], "description": "per_step: the model's sky irradiance on each tilted plane at each step; table: interpolated (bilinear) in a table of the model's own values over the sun zenith (every 2 degrees) and its azimuth relative to the plane (every 10 degrees), built for the request when it has more daytime steps than the table has nodes (874)."},
       "columns": {"type": "array", "items": {"type": "string"}},
       "rows": {"type": "array", "items": {"type": "array", "items": {"description": "A cell: a time (text), night (boolean), a number, or null for a value the model could not answer."}}},
@@ -265,7 +319,7 @@ Json schemas() {
   },
   "IrradianceSeriesCsv": {
     "type": "string",
-    "description": "A header line with the columns of IrradianceSeries, then one line per step; null values are empty."
+    "description": "A header line with the columns of IrradianceSeries, then one line per step; null values are empty (the broadband columns of a model that cannot go broadband: the header Clearsky-Broadband-Unavailable says why)."
   },
   "SkyPatches": {
     "type": "object",
@@ -344,6 +398,20 @@ Json schemas() {
     "description": "format=png: an 8-bit RGBA PNG (sRGB chunk), streamed (chunked) row by row as it is computed. R, G and B are the rgb image exposed, tone-mapped and sRGB-encoded; A is 255 where the model answered and 0 where it did not. tEXt chunks give the model, projection, sun angles, exposure and tone curve."
   }
 })json");
+  // The place and instants of a time series (api/request/time_steps.h), the same members in the
+  // irradiance series and the sky matrix.
+  const Json series_head = parse(R"json({
+      "lat": {"type": "number"},
+      "lon": {"type": "number"},
+      "altitude_m": {"type": "number"},
+      "start": {"type": "string", "description": "The first step, UTC."},
+      "step": {"type": "string"},
+      "step_s": {"type": "integer"},
+      "steps": {"type": "integer"},
+      "tz": {"type": "string", "nullable": true}
+  })json");
+  for (const char* name : {"IrradianceSeries", "SkyPatchMatrix"})
+    s[name]["properties"].update(series_head);
   const Json sky = sky_body_properties();
   const auto batch = [&](const char* description, const Json& specific) {
     Json body = {{"type", "object"},
@@ -607,11 +675,16 @@ Json operations() {
       {"name": "planes", "in": "query", "required": false, "description": "Planes besides the horizontal: tilt:azimuth pairs in degrees separated by commas (tilt in [0, 180] from horizontal, azimuth of the normal clockwise from North), at most 16.", "schema": {"type": "string"}, "example": "30:180,90:180,90:90"},
       {"name": "ground_reflection", "in": "query", "required": false, "description": "include: the isotropic ground's reflection on the planes (poa_ground_diffuse); exclude: 0.", "schema": {"type": "string", "enum": ["include", "exclude"], "default": "include"}},
       {"name": "ground_albedo", "in": "query", "required": false, "description": "The ground's albedo; absent: the model's ground albedo spectrum.", "schema": {"type": "number", "minimum": 0, "maximum": 1}},
+      {"name": "precipitable_water_cm", "in": "query", "required": false, "description": "Precipitable water of the vertical column, cm: the water vapour absorption of the broadband columns (default: ASTM G-173's reference atmosphere).", "schema": {"type": "number", "minimum": 0, "maximum": 10, "default": 1.42}},
+      {"name": "ozone_atm_cm", "in": "query", "required": false, "description": "Ozone column, atm-cm (1 atm-cm = 1000 DU): the ozone absorption of the broadband columns (default: ASTM G-173's reference atmosphere).", "schema": {"type": "number", "minimum": 0, "maximum": 1, "default": 0.34}},
       {"name": "format", "in": "query", "required": false, "description": "json, or csv (a header line, then one line per step).", "schema": {"type": "string", "enum": ["json", "csv"], "default": "json"}}
     ],
     "responses": {
       "200": {
         "description": "The series.",
+        "headers": {
+          "Clearsky-Broadband-Unavailable": {"description": "format=csv with a model that cannot go broadband: why its ghi, dni, dhi and poa_* columns are empty.", "schema": {"type": "string"}}
+        },
         "content": {
           "application/json": {"schema": {"$ref": "#/components/schemas/IrradianceSeries"}},
           "text/csv": {"schema": {"$ref": "#/components/schemas/IrradianceSeriesCsv"}}
@@ -663,7 +736,7 @@ Json operations() {
     "operationId": "getSkyPatches",
     "tags": ["sky"],
     "summary": "A sky vector over Tregenza or Reinhart patches",
-    "description": "The model's sky averaged over each patch of Radiance's Tregenza (145 + ground) or Reinhart (MF 1 to 6) subdivision, in the order of reinhart.cal and gendaymtx, for multiplication with daylight coefficients (rfluxmtx, dctimestep; docs/building-energy.md). The sun is its own source (sun=separate) or folded into the patch holding it (sun=patch). JSON, or CSV with one row per patch.",
+    "description": "The model's sky averaged over each patch of Radiance's Tregenza (145 + ground) or Reinhart (MF 1 to 6) subdivision, in the order of reinhart.cal and gendaymtx, for multiplication with daylight coefficients (rfluxmtx, dctimestep; docs/building-energy.md). The sun is its own source (sun=separate) or folded into the patch holding it (sun=patch). JSON, or CSV with one row per patch. With start, end and step (and lat, lon), a sky matrix: one vector per step, one column per step, night steps explicit (zeros, night true), as JSON, CSV or Radiance's matrix format.",
     "parameters": [
       {"name": "scheme", "in": "query", "required": false, "description": "tregenza (145 patches and the ground) or reinhart (with mf).", "schema": {"type": "string", "enum": ["tregenza", "reinhart"], "default": "tregenza"}},
       {"name": "mf", "in": "query", "required": false, "description": "scheme=reinhart only: Reinhart's subdivision of each Tregenza patch into mf x mf.", "schema": {"type": "integer", "minimum": 1, "maximum": 6, "default": 1}},
@@ -671,14 +744,19 @@ Json operations() {
       {"name": "output", "in": "query", "required": false, "description": "spectral: W/(m2.sr.nm) per wavelength; rgb: Radiance's RGB, W/(m2.sr); luminance: cd/m2.", "schema": {"type": "string", "enum": ["spectral", "rgb", "luminance"], "default": "spectral"}},
       {"name": "wavelengths", "in": "query", "required": false, "description": "output=spectral only: as GET /v1/radiance; at most 1,000,000 values per vector (patches x wavelengths; above: 413).", "schema": {"type": "string"}},
       {"name": "ground_reflectance", "in": "query", "required": false, "description": "Reflectance of the Lambertian ground of patch 0 (gendaymtx's -g).", "schema": {"type": "number", "minimum": 0, "maximum": 1, "default": 0.2}},
-      {"name": "format", "in": "query", "required": false, "description": "json, or csv: patch,altitude_deg,azimuth_deg,solid_angle_sr and the values, one row per patch from 0, then a row named sun when sun=separate and the sun is up.", "schema": {"type": "string", "enum": ["json", "csv"], "default": "json"}}
+      {"name": "format", "in": "query", "required": false, "description": "json, or csv: patch,altitude_deg,azimuth_deg,solid_angle_sr and the values, one row per patch from 0, then a row named sun when sun=separate and the sun is up; radiance (with start only): Radiance's matrix format.", "schema": {"type": "string", "enum": ["json", "csv", "radiance"], "default": "json"}},
+      {"name": "start", "in": "query", "required": false, "description": "A sky matrix instead of one vector: its first instant, ISO 8601 with an offset or Z, or a local time in tz (then lat and lon instead of time or the sun's angles, as GET /v1/irradiance/series). At most 4,000,000 values (steps x patches x components; above: 413 naming step).", "schema": {"type": "string"}, "example": "2024-01-01T00:00:00"},
+      {"name": "end", "in": "query", "required": false, "description": "With start: the last instant (included when a whole number of steps from start).", "schema": {"type": "string"}},
+      {"name": "step", "in": "query", "required": false, "description": "With start: ISO 8601 duration between steps (PT10M, PT1H, P1D).", "schema": {"type": "string", "default": "PT1H"}},
+      {"name": "tz", "in": "query", "required": false, "description": "With start: IANA time zone of start and end without offset and of times[].time_local.", "schema": {"type": "string"}}
     ],
     "responses": {
       "200": {
-        "description": "The sky vector.",
+        "description": "The sky vector, or with start the sky matrix.",
         "content": {
-          "application/json": {"schema": {"$ref": "#/components/schemas/SkyPatches"}},
-          "text/csv": {"schema": {"$ref": "#/components/schemas/SkyPatchesCsv"}}
+          "application/json": {"schema": {"$ref": "#/components/schemas/SkyPatchesAnswer"}},
+          "text/csv": {"schema": {"$ref": "#/components/schemas/SkyPatchesCsv"}},
+          "text/plain": {"schema": {"$ref": "#/components/schemas/SkyPatchMatrixText"}}
         }
       }
     }

@@ -68,4 +68,12 @@ std::size_t SkyPatchScheme::patch_of(double altitude_rad, double azimuth_rad) co
   return first + static_cast<std::size_t>(c) + 1;
 }
 
+PatchGeometry patch_geometry(const SkyPatchScheme& scheme, std::size_t k) {
+  constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
+  if (k == 0) return {-90.0, 0.0, 2.0 * std::numbers::pi};
+  const SkyPatch& patch = scheme.sky_patches()[k - 1];
+  return {patch.centre_altitude_rad * kDegreesPerRadian,
+          patch.centre_azimuth_rad * kDegreesPerRadian, patch.solid_angle_sr};
+}
+
 }  // namespace clearsky::api

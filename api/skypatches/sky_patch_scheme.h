@@ -61,4 +61,11 @@ class SkyPatchScheme {
   std::vector<std::size_t> band_first_;  // index into patches_ of each band's first patch
 };
 
+// Radiance's patch k (0 the ground) as an answer gives it: its centre's altitude and azimuth
+// (degrees; the ground's centre is the nadir) and its solid angle (sr; 2 pi for the ground).
+struct PatchGeometry {
+  double altitude_deg = 0, azimuth_deg = 0, solid_angle_sr = 0;
+};
+PatchGeometry patch_geometry(const SkyPatchScheme& scheme, std::size_t k);
+
 }  // namespace clearsky::api

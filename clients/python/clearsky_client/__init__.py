@@ -14,14 +14,14 @@ from .errors import ClearskyError
 from .exr_image import SkydomeImage, read_skydome
 from .retry import RetryNotice, RetryPolicy
 from .sky_results import (Irradiance, IrradianceComponent, IrradianceSeries, ModelInfo,
-                          ModelParameter, Radiance, Rgb, SkydomeFile, Sun, SunUsed)
+                          ModelParameter, Radiance, Rgb, SkydomeFile, SkyMatrix, Sun, SunUsed)
 
 __version__ = "0.1.0"
 
 __all__ = [
     "Client", "ClearskyError", "RetryPolicy", "RetryNotice", "Page", "Sun", "SunUsed",
     "ModelInfo", "ModelParameter", "Radiance", "Rgb", "Irradiance", "IrradianceComponent",
-    "IrradianceSeries",
+    "IrradianceSeries", "SkyMatrix",
     "SkydomeFile", "SkydomeImage", "read_skydome", "DatasetSummary", "Dataset", "Import",
     "EvaluationTicket", "EvaluationSummary", "Evaluation", "Fit", "Job",
 ]

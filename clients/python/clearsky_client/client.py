@@ -17,7 +17,7 @@ from .retry import RetryPolicy
 from .sky_query import (FitReference, Number, ParameterValue, Time, View, Wavelengths,
                         as_query, format_time, format_value, sky_parameters, views_body)
 from .sky_results import (Irradiance, IrradianceSeries, ModelInfo, Radiance, Rgb, SkydomeFile,
-                          Sun)
+                          SkyMatrix, Sun)
 from .transport import Answer, Transport
 from .upload_progress import Progress, ProgressFile
 
@@ -335,6 +335,36 @@ class Client:
             if value is not None:
                 query[name] = value
         return self._get("/v1/skypatches", query).json()
+
+    def sky_matrix(self, model: str, lat: Union[Number, str], lon: Union[Number, str],
+                   start: Time, end: Time, *, step: Optional[str] = None,
+                   tz: Optional[str] = None, scheme: Optional[str] = None,
+                   mf: Optional[int] = None, sun: Optional[str] = None,
+                   output: Optional[str] = None, ground_reflectance: Optional[Number] = None,
+                   **parameters: ParameterValue) -> SkyMatrix:
+        """GET /v1/skypatches with start: a sky matrix for daylight coefficients
+        (docs/building-energy.md "Sky matrices"), one sky vector per step from start to end
+        (as irradiance_series), in Radiance's patch order: ``matrix`` is a numpy array of
+        patches x steps (x components for rgb and spectral), ``night`` flags the night
+        columns (zeros). output: rgb (Radiance's), luminance or spectral; sun: patch (the sun
+        in its patch, the three-phase convention) or separate (the sky alone, the suns in
+        ``raw["times"]``).
+
+        Example:
+            >>> day = client.sky_matrix("preetham", 48.85, 2.35, "2024-06-21T00:00:00Z",
+            ...                         "2024-06-21T23:00:00Z", output="rgb", sun="patch")
+            >>> day.matrix.shape
+            (146, 24, 3)
+        """
+        query: Dict[str, ParameterValue] = {"model": model, "lat": lat, "lon": lon,
+                                            "start": format_time(start), "end": format_time(end)}
+        for name, value in (("step", step), ("tz", tz), ("scheme", scheme), ("mf", mf),
+                            ("sun", sun), ("output", output),
+                            ("ground_reflectance", ground_reflectance)):
+            if value is not None:
+                query[name] = value
+        query.update(parameters)
+        return SkyMatrix.from_json(self._get("/v1/skypatches", query).json())
 
     # --- datasets and imports ------------------------------------------------------------------
 

@@ -257,9 +257,11 @@ class Irradiance:
 @dataclass(frozen=True)
 class IrradianceSeries:
     """GET /v1/irradiance/series: one numpy array per column (``columns``, pvlib's names:
-    ``ghi``, ``dni``, ``dhi``, ``poa_global_30_180``, ...; times as ISO 8601 strings, ``night``
-    as booleans, a value the model could not answer as NaN), and the answer's other members
-    in ``raw`` (without its rows)."""
+    ``ghi``, ``dni``, ``dhi``, ``poa_global_30_180``, ... broadband, 300..4000 nm, and the
+    model's own range as ``model_range_ghi``, ...; times as ISO 8601 strings, ``night`` as
+    booleans, a value the model could not answer as NaN), and the answer's other members in
+    ``raw`` (without its rows). A model that cannot go broadband has NaN broadband columns and
+    says why in ``broadband_unavailable``."""
 
     columns: Dict[str, np.ndarray]
     planes: List[Dict[str, Any]]
@@ -271,6 +273,11 @@ class IrradianceSeries:
 
     def __len__(self) -> int:
         return int(self.raw["steps"])
+
+    @property
+    def broadband_unavailable(self) -> Optional[str]:
+        """Why ghi, dni, dhi and poa_* are NaN, or None when they are broadband figures."""
+        return self.raw.get("broadband_unavailable")
 
     @classmethod
     def from_json(cls, j: Dict[str, Any]) -> "IrradianceSeries":
@@ -288,6 +295,35 @@ class IrradianceSeries:
                                            dtype=np.float64)
         raw = {key: value for key, value in j.items() if key != "rows"}
         return cls(columns, j["planes"], j["unanswered_steps"], raw)
+
+
+@dataclass(frozen=True)
+class SkyMatrix:
+    """GET /v1/skypatches with start: ``matrix`` (patches x steps for luminance, patches x
+    steps x components for rgb and spectral; Radiance's patch order, patch 0 the ground),
+    ``time_utc`` and ``night`` per step (column), the patches' centre ``altitude_deg``,
+    ``azimuth_deg`` and ``solid_angle_sr``, and the answer's other members in ``raw`` (without
+    the matrix)."""
+
+    matrix: np.ndarray
+    time_utc: np.ndarray
+    night: np.ndarray
+    altitude_deg: np.ndarray
+    azimuth_deg: np.ndarray
+    solid_angle_sr: np.ndarray
+    raw: Dict[str, Any] = field(repr=False)
+
+    @classmethod
+    def from_json(cls, j: Dict[str, Any]) -> "SkyMatrix":
+        times = j["times"]
+        patches = j["patches"]
+        raw = {key: value for key, value in j.items() if key != "matrix"}
+        return cls(np.asarray(j["matrix"], dtype=np.float64),
+                   np.asarray([t["time_utc"] for t in times], dtype=object),
+                   np.asarray([t["night"] for t in times], dtype=bool),
+                   np.asarray([p["altitude_deg"] for p in patches], dtype=np.float64),
+                   np.asarray([p["azimuth_deg"] for p in patches], dtype=np.float64),
+                   np.asarray([p["solid_angle_sr"] for p in patches], dtype=np.float64), raw)
 
 
 @dataclass(frozen=True)

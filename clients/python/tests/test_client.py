@@ -222,13 +222,20 @@ class ClientAgainstWriter(unittest.TestCase):
         self.assertEqual(len(day), 23)
         self.assertEqual(day["time_local"][3], "2024-03-31T04:00:00+02:00")
         self.assertTrue(day["night"][0])
-        self.assertEqual(day["ghi"][0], 0.0)
+        # Preetham cannot go broadband: ghi, dni, dhi and poa_* are NaN (null) in every row,
+        # with the reason; its own figures are the model_range_* columns.
+        self.assertTrue(np.isnan(day["ghi"]).all())
+        self.assertTrue(np.isnan(day["poa_global_30_180"]).all())
+        self.assertIn("turbidity", day.broadband_unavailable)
+        self.assertEqual(day["model_range_ghi"][0], 0.0)
         up = ~day["night"]
-        self.assertGreater(day["ghi"][up].min(), 0.0)
-        np.testing.assert_allclose(day["poa_ground_diffuse_90_90"][up], 0.2 * day["ghi"][up] / 2,
-                                   rtol=1e-12)
-        np.testing.assert_allclose(day["poa_global_30_180"],
-                                   day["poa_direct_30_180"] + day["poa_diffuse_30_180"],
+        ghi = day["model_range_ghi"]
+        self.assertGreater(ghi[up].min(), 0.0)
+        np.testing.assert_allclose(day["model_range_poa_ground_diffuse_90_90"][up],
+                                   0.2 * ghi[up] / 2, rtol=1e-12)
+        np.testing.assert_allclose(day["model_range_poa_global_30_180"],
+                                   day["model_range_poa_direct_30_180"]
+                                   + day["model_range_poa_diffuse_30_180"],
                                    rtol=1e-12, atol=1e-9)
         self.assertEqual(day.unanswered_steps, 0)
         self.assertRefused(lambda: self.client.irradiance_series(
@@ -245,6 +252,25 @@ class ClientAgainstWriter(unittest.TestCase):
         self.assertEqual(len(reinhart["patches"]), 578)
         self.assertRefused(lambda: self.client.sky_patches("preetham", scheme="klems", **SUN),
                            400, "invalid_parameter", "scheme")
+
+    def test_sky_matrix(self) -> None:
+        # A day hourly in Paris: one Tregenza column per hour, the night ones flagged and zero,
+        # a daytime one the sky vector of its instant.
+        day = self.client.sky_matrix("preetham", 48.85, 2.35, "2024-06-21T00:00:00Z",
+                                     "2024-06-21T23:00:00Z", output="rgb", sun="patch")
+        self.assertEqual(day.matrix.shape, (146, 24, 3))
+        self.assertEqual(day.time_utc[12], "2024-06-21T12:00:00Z")
+        self.assertTrue(day.night[0])
+        self.assertEqual(np.abs(day.matrix[:, day.night]).max(), 0.0)
+        self.assertGreater(day.matrix[:, ~day.night].min(initial=1.0), -1e-30)
+        noon = self.client.sky_patches("preetham", lat=48.85, lon=2.35,
+                                       time="2024-06-21T12:00:00Z", output="rgb", sun="patch")
+        np.testing.assert_allclose(day.matrix[:, 12],
+                                   [p["value"] for p in noon["patches"]], rtol=1e-6)
+        self.assertAlmostEqual(day.solid_angle_sr[1:].sum(), 2 * np.pi, places=9)
+        self.assertRefused(lambda: self.client.sky_matrix(
+            "preetham", 48.85, 2.35, "2024-01-01T00:00:00Z", "2024-12-31T23:00:00Z",
+            scheme="reinhart", mf=2, output="rgb"), 413, "too_large", "step")
 
     def test_rgb_single_and_batch(self) -> None:
         one = self.client.rgb("preetham", 45, 0, **SUN)

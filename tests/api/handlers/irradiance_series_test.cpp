@@ -66,14 +66,15 @@ TEST_F(IrradianceSeries, OneRowPerStepWithNightRowsAndPlanes) {
   ASSERT_EQ(j["rows"].size(), 24u);
   EXPECT_EQ(j["steps"], 24);
   EXPECT_EQ(j["unanswered_steps"], 0);
-  EXPECT_EQ(j["columns"].size(), 8u + 2 * 6);
-  const std::size_t night = column(j, "night"), ghi = column(j, "ghi"),
-                    ground = column(j, "poa_ground_diffuse_90_180"),
-                    global = column(j, "poa_global_30_180"),
-                    direct = column(j, "poa_direct_30_180"),
-                    diffuse = column(j, "poa_diffuse_30_180"),
-                    sky = column(j, "poa_sky_diffuse_30_180"),
-                    ground30 = column(j, "poa_ground_diffuse_30_180");
+  EXPECT_EQ(j["columns"].size(), 11u + 2 * 11);
+  // The analytic sky cannot go broadband: its own figures are the model_range_* columns.
+  const std::size_t night = column(j, "night"), ghi = column(j, "model_range_ghi"),
+                    ground = column(j, "model_range_poa_ground_diffuse_90_180"),
+                    global = column(j, "model_range_poa_global_30_180"),
+                    direct = column(j, "model_range_poa_direct_30_180"),
+                    diffuse = column(j, "model_range_poa_diffuse_30_180"),
+                    sky = column(j, "model_range_poa_sky_diffuse_30_180"),
+                    ground30 = column(j, "model_range_poa_ground_diffuse_30_180");
   std::size_t nights = 0;
   for (const auto& row : j["rows"]) {
     if (row[night].get<bool>()) {
@@ -126,13 +127,16 @@ TEST_F(IrradianceSeries, CsvHasTheColumnsAndOneLinePerStep) {
   std::string header, line;
   std::getline(lines, header);
   EXPECT_EQ(header,
-            "time_utc,night,solar_zenith,solar_azimuth,ghi,dni,dhi,illuminance,poa_global_90_90,"
-            "poa_direct_90_90,poa_diffuse_90_90,poa_sky_diffuse_90_90,poa_ground_diffuse_90_90,"
-            "poa_illuminance_90_90");
+            "time_utc,night,solar_zenith,solar_azimuth,ghi,dni,dhi,illuminance,model_range_ghi,"
+            "model_range_dni,model_range_dhi,poa_global_90_90,poa_direct_90_90,poa_diffuse_90_90,"
+            "poa_sky_diffuse_90_90,poa_ground_diffuse_90_90,poa_illuminance_90_90,"
+            "model_range_poa_global_90_90,model_range_poa_direct_90_90,"
+            "model_range_poa_diffuse_90_90,model_range_poa_sky_diffuse_90_90,"
+            "model_range_poa_ground_diffuse_90_90");
   std::size_t rows = 0;
   while (std::getline(lines, line)) {
     ++rows;
-    EXPECT_EQ(std::count(line.begin(), line.end(), ','), 13) << line;
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), 21) << line;
     EXPECT_NE(line.find(",false,"), std::string::npos) << line;
   }
   EXPECT_EQ(rows, 5u);

@@ -67,11 +67,9 @@ TEST(BroadbandIrradiance, ContinuesSpctral2IntoItsOwnBroadbandFigures) {
     dni += e.direct_normal_w_m2_nm;
     dhi += e.diffuse_horizontal_w_m2_nm;
   }
-  EXPECT_NEAR(
-      broadband_direct_normal_w_m2({model.grid, model.indices, model.direct_normal}, c) / dni, 1.0,
-      0.002);
-  EXPECT_NEAR(broadband_diffuse_w_m2({model.grid, model.indices, model.diffuse}, c) / dhi, 1.0,
-              0.01);
+  const BroadbandExtension extension(model.grid, model.indices, c);
+  EXPECT_NEAR(extension.direct_normal_w_m2(model.direct_normal) / dni, 1.0, 0.002);
+  EXPECT_NEAR(extension.diffuse_w_m2(model.diffuse) / dhi, 1.0, 0.01);
   // Most of the broadband direct beam lies outside the visible range.
   double visible = 0.0;
   for (double v : model.direct_normal) visible += v;
@@ -82,7 +80,7 @@ TEST(BroadbandIrradiance, DirectNormalFallsWithWaterAndOzoneAndRisesWithAltitude
   BroadbandConditions c = conditions();
   const Spctral2Model model(c);
   const auto dni = [&](const BroadbandConditions& k) {
-    return broadband_direct_normal_w_m2({model.grid, model.indices, model.direct_normal}, k);
+    return BroadbandExtension(model.grid, model.indices, k).direct_normal_w_m2(model.direct_normal);
   };
   const double reference = dni(c);
   BroadbandConditions wet = c;
@@ -108,12 +106,12 @@ TEST(BroadbandIrradiance, DirectNormalFallsWithWaterAndOzoneAndRisesWithAltitude
 TEST(BroadbandIrradiance, DiffuseOutsideTheRangeFollowsTheModelsLevel) {
   const BroadbandConditions c = conditions();
   const Spctral2Model model(c);
-  const double reference = broadband_diffuse_w_m2({model.grid, model.indices, model.diffuse}, c);
+  const BroadbandExtension extension(model.grid, model.indices, c);
+  const double reference = extension.diffuse_w_m2(model.diffuse);
   // A model whose sky is twice as bright has twice the broadband diffuse: the extension is
   // scaled to the model at its range ends.
   Spectrum doubled = model.diffuse * 2.0;
-  EXPECT_NEAR(broadband_diffuse_w_m2({model.grid, model.indices, doubled}, c) / reference, 2.0,
-              1e-9);
+  EXPECT_NEAR(extension.diffuse_w_m2(doubled) / reference, 2.0, 1e-9);
 }
 
 TEST(BroadbandIrradiance, NamesTheModelsThatCannotGoBroadband) {

@@ -35,7 +35,16 @@ TEST_F(IrradianceSeriesHttp, JsonAcrossTheAutumnChangeWithNightRows) {
   for (const auto& row : j["rows"]) {
     if (!row[2].get<bool>()) continue;
     ++nights;
-    for (std::size_t k = 5; k < row.size(); ++k) EXPECT_EQ(row[k].get<double>(), 0.0);
+    // The test sky cannot go broadband: null broadband columns, zero model-range ones.
+    for (std::size_t k = 5; k < row.size(); ++k) {
+      const std::string name = j["columns"][k];
+      if (name.rfind("model_range_", 0) == 0 || name.rfind("poa_illuminance", 0) == 0 ||
+          name == "illuminance") {
+        EXPECT_EQ(row[k].get<double>(), 0.0) << name;
+      } else {
+        EXPECT_TRUE(row[k].is_null()) << name;
+      }
+    }
   }
   EXPECT_GE(nights, 12u);
 }
@@ -50,7 +59,10 @@ TEST_F(IrradianceSeriesHttp, CsvOneLinePerStep) {
   std::istringstream lines(r->body);
   std::string line;
   std::getline(lines, line);
-  EXPECT_EQ(line, "time_utc,night,solar_zenith,solar_azimuth,ghi,dni,dhi,illuminance");
+  EXPECT_EQ(line,
+            "time_utc,night,solar_zenith,solar_azimuth,ghi,dni,dhi,illuminance,model_range_ghi,"
+            "model_range_dni,model_range_dhi");
+  EXPECT_FALSE(r->get_header_value("Clearsky-Broadband-Unavailable").empty());
   std::size_t rows = 0;
   while (std::getline(lines, line)) ++rows;
   EXPECT_EQ(rows, 24u * 6 + 1);

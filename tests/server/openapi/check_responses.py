@@ -348,6 +348,13 @@ def run(checker, workdir):
     c.call("getSkyPatches", 400, query=c.query("getSkyPatches", *sun, scheme="reinhart", mf=7))
     c.call("getSkyPatches", 422, query=c.query("getSkyPatches", "model", "sun_azimuth",
                                                sun_zenith=100))
+    # A sky matrix (start): a day hourly as JSON (separate suns), CSV and Radiance's format.
+    matrix = "model=hosek&lat=48.85&lon=2.35&start=2024-06-21T00:00:00Z&end=2024-06-21T23:00:00Z"
+    c.call("getSkyPatches", 200, query=matrix + "&output=rgb&tz=Europe/Paris")
+    c.call("getSkyPatches", 200, query=matrix + "&output=luminance&sun=patch&format=csv")
+    c.call("getSkyPatches", 200, query=matrix + "&output=rgb&sun=patch&format=radiance")
+    c.call("getSkyPatches", 413, query=matrix.replace("2024-06-21T23", "2024-12-31T23") +
+           "&output=rgb&scheme=reinhart&mf=2")
 
     # Datasets and imports: a synthetic capture imported from a folder on the server.
     folder = synthetic_kider.write_capture(os.path.join(workdir, "capture"))
