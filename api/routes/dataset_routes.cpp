@@ -65,10 +65,11 @@ ApiResponse delete_dataset_route(const ApiContext& context, const ApiRequest& re
   return ordered_json_response(delete_dataset(db, request.path_parameter("name")));
 }
 
-// The body is the archive; or no body and path=SERVER_PATH (an archive or folder under one of
-// the operator's import roots, api/datasets/import_roots.h). Checked here (parameters, name,
-// format, path, size), then imported on the ImportPool: 202 with the import's state and its
-// Location.
+// The body is the archive or a file of the open sky-radiance format (its format from format=
+// or the media type, api/datasets/import_format.h); or no body and path=SERVER_PATH (an archive
+// or folder under one of the operator's import roots, api/datasets/import_roots.h). Checked
+// here (parameters, name, format, path, size, and an upload's content), then imported on the
+// ImportPool: 202 with the import's state and its Location.
 ApiResponse import_dataset_route(const ApiContext& context, const ApiRequest& request) {
   const DataServices& data = data_services(context);
   Parameters p = query_parameters(request);
