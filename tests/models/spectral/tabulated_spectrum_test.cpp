@@ -42,6 +42,16 @@ TEST(TabulatedSpectrum, InterpolatesOverWavelengthsWhoseSpanOverflows) {
   EXPECT_DOUBLE_EQ(wide.at(0.0, OutOfRange::error), 3.0);
 }
 
+// Subnormal wavelengths (a forged blob; fuzz/corpus/sample_blob/subnormal-span): the smallest
+// positive double halves to 0, so the span must be their own difference.
+TEST(TabulatedSpectrum, InterpolatesOverSubnormalWavelengths) {
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  const TabulatedSpectrum narrow({0.0, tiny, 4.0 * tiny}, {1.0, 3.0, 5.0});
+  EXPECT_EQ(narrow.at(0.0, OutOfRange::error), 1.0);
+  EXPECT_EQ(narrow.at(tiny, OutOfRange::error), 3.0);
+  EXPECT_EQ(narrow.at(4.0 * tiny, OutOfRange::error), 5.0);
+}
+
 TEST(TabulatedSpectrum, OutOfRangePolicyIsExplicit) {
   EXPECT_DOUBLE_EQ(kRamp.at(300.0, OutOfRange::hold_end_values), 1.0);
   EXPECT_DOUBLE_EQ(kRamp.at(700.0, OutOfRange::hold_end_values), 2.0);
