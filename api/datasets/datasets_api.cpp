@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "api/datasets/import_format.h"
+#include "api/datasets/sky_radiance_import.h"
 #include "api/encode/iso8601_time.h"
 #include "api/error/api_error.h"
 #include "models/core/numeric.h"
@@ -104,8 +106,10 @@ nlohmann::ordered_json delete_dataset(storage::Database& db, const std::string& 
 }
 
 void check_import_format(const std::string& format) {
-  if (format != "kider")
-    throw invalid_parameter("format", "'" + format + "' is not an import format (known: kider)");
+  if (format != kKiderImportFormat && !is_sky_radiance_format(format))
+    throw invalid_parameter("format", "'" + format +
+                                          "' is not an import format (known: kider, "
+                                          "sky-radiance-csv, sky-radiance-json)");
 }
 
 void check_dataset_name(const std::string& name) {
@@ -128,6 +132,19 @@ nlohmann::ordered_json import_dataset(
     const std::function<void(const storage::ImportProgress&)>& progress) {
   check_import_format(format);
   check_dataset_name(name);
+  const std::string shown_as =
+      source.shown_as.empty() ? source.archive_or_folder.string() : source.shown_as;
+  if (is_sky_radiance_format(format)) {
+    try {
+      return import_report_json(import_sky_radiance(db, name, source.archive_or_folder, format,
+                                                    source.limits, shown_as, progress));
+    } catch (const storage::ImportConflict& e) {
+      throw ApiError(409, "conflict", "", e.what());
+    } catch (const storage::SqliteError& e) {
+      if (e.disk_full()) throw insufficient_storage("writing the database");
+      throw;
+    }
+  }
   storage::KiderImportRequest request;
   request.dataset_name = name;
   request.paths = {source.archive_or_folder};
@@ -135,6 +152,7 @@ nlohmann::ordered_json import_dataset(
   request.limits = source.limits;
   if (!source.shown_as.empty()) request.path_names = {source.shown_as};
   request.progress = progress;
+  request.options = source.site_clock;
   storage::ImportReport report;
   try {
     report = storage::import_kider(db, request);

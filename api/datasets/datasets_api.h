@@ -51,8 +51,12 @@ struct ImportSource {
   std::filesystem::path confine_to;
   storage::ImportByteLimits limits;
   std::string shown_as;
+  // The site and clock of an archive's captures (import_site_clock.h).
+  storage::KiderImportOptions site_clock = {};
 };
-// Imports the source into the named dataset. format must be "kider". progress is called as
+// Imports the source into the named dataset. format is kider (an archive or folder) or
+// sky-radiance-csv / sky-radiance-json (one file of the open format, sky_radiance_import.h;
+// 400 invalid_body naming the member). progress is called as
 // storage::KiderImportRequest::progress (kider_importer.h). Refusals: 400 invalid_archive,
 // 400 invalid_parameter (name), 409 conflict, 413 too_large naming max_entry_bytes or
 // max_import_bytes, 507 insufficient_storage (SQLITE_FULL).
@@ -62,7 +66,7 @@ nlohmann::ordered_json import_dataset(
     const std::function<void(const storage::ImportProgress&)>& progress = {});
 // The import report as JSON (the API's and `clearsky import --json`'s).
 nlohmann::ordered_json import_report_json(const storage::ImportReport& report);
-// Checks the format before an import is queued (400 naming "format").
+// Checks the format before an import is queued (400 naming "format"; import_format.h).
 void check_import_format(const std::string& format);
 // Checks a new dataset's name (storage/repositories/dataset_name.h; 400 naming "name").
 void check_dataset_name(const std::string& name);

@@ -4,8 +4,8 @@
 // format=csv: one row per view and wavelength
 // (view_zenith_deg,view_azimuth_deg,wavelength_nm,radiance_w_m2_sr_nm).
 
-#include "api/fits/stored_fit_values.h"
 #include "api/encode/csv_number.h"
+#include "api/fits/stored_fit_values.h"
 #include "api/handlers/handlers.h"
 #include "api/handlers/sky_radiance_query.h"
 #include "api/http/answer_memory_reservation.h"

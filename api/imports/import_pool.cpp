@@ -16,12 +16,14 @@ ImportPool::~ImportPool() { workers_.stop(); }
 std::int64_t ImportPool::submit(storage::Database& db, const storage::NewImport& what,
                                 const std::filesystem::path& source,
                                 std::unique_ptr<UploadSpool> spool,
-                                const std::filesystem::path& confine_to) {
+                                const std::filesystem::path& confine_to,
+                                const storage::KiderImportOptions& site_clock) {
   WorkerPool::Reservation place = workers_.reserve();
   // The row is written holding a place but not the pool's lock: the database may wait for an
   // import's commit.
   const std::int64_t id = storage::ImportRepository(db).create(what);
-  auto task = std::make_shared<Task>(Task{id, what, source, std::move(spool), confine_to});
+  auto task =
+      std::make_shared<Task>(Task{id, what, source, std::move(spool), confine_to, site_clock});
   WorkerTask work;
   work.started = [this, task] {
     std::lock_guard lock(mutex_);
@@ -83,10 +85,11 @@ void ImportPool::run(storage::Database& db, Task& task) {
   std::string error;
   nlohmann::ordered_json report;
   try {
-    report = import_dataset(db, task.what.dataset, task.what.format,
-                            {task.source, task.confine_to, options_.limits,
-                             task.what.source == "path" ? task.what.path : std::string("upload")},
-                            record);
+    report = import_dataset(
+        db, task.what.dataset, task.what.format,
+        {task.source, task.confine_to, options_.limits,
+         task.what.source == "path" ? task.what.path : std::string("upload"), task.site_clock},
+        record);
   } catch (const ApiError& e) {
     error_code = e.code();
     error = e.what();

@@ -22,6 +22,7 @@
 #include "api/datasets/upload_spool.h"
 #include "api/work/worker_pool.h"
 #include "storage/importers/import_byte_budget.h"
+#include "storage/importers/kider_format.h"
 #include "storage/repositories/import_repository.h"
 #include "storage/sqlite/database.h"
 
@@ -51,13 +52,17 @@ class ImportPool {
   // Records the import (queued) through db, the caller's connection, and queues it; returns
   // its id. source is the archive or folder to read: the finished spool's file for an upload
   // (the pool then owns the spool) or a server-side path, canonical and read confined to
-  // confine_to, the import root it resolved in (api/datasets/import_roots.h). Throws ApiError
+  // confine_to, the import root it resolved in (api/datasets/import_roots.h); site_clock the
+  // site and clock of an archive's captures (api/datasets/import_site_clock.h). Throws ApiError
   // 503 (busy) when the queue is full, before anything is recorded.
   std::int64_t submit(storage::Database& db, const storage::NewImport& what,
                       const std::filesystem::path& source, std::unique_ptr<UploadSpool> spool = {},
-                      const std::filesystem::path& confine_to = {});
+                      const std::filesystem::path& confine_to = {},
+                      const storage::KiderImportOptions& site_clock = {});
   // The progress of an import running in this pool; nullopt when it is not running here.
   std::optional<storage::ImportProgress> live_progress(std::int64_t id) const;
+  // The bytes each import may read.
+  const storage::ImportByteLimits& limits() const { return options_.limits; }
   // Blocks until nothing is queued or running.
   void wait_idle();
 
@@ -68,6 +73,7 @@ class ImportPool {
     std::filesystem::path source;
     std::unique_ptr<UploadSpool> spool;
     std::filesystem::path confine_to;
+    storage::KiderImportOptions site_clock;
   };
   void run(storage::Database& db, Task& task);
   // The task is over, recorded or not: its upload removed, its live progress dropped.

@@ -15,7 +15,7 @@ Json schemas() {
     "additionalProperties": false,
     "properties": {
       "name": {"type": "string"},
-      "format": {"type": "string", "description": "The measurement format, e.g. kider2014."},
+      "format": {"type": "string", "description": "The measurement format: kider2014 (Kider et al. 2014 archives) or sky-radiance (the open format, docs/measurement-formats.md)."},
       "created": {"type": "string", "format": "date-time"},
       "captures": {"type": "integer", "minimum": 0},
       "samples": {"type": "integer", "minimum": 0}
@@ -135,7 +135,7 @@ Json schemas() {
     "properties": {
       "id": {"type": "integer", "minimum": 1},
       "dataset": {"type": "string"},
-      "format": {"type": "string", "enum": ["kider"]},
+      "format": {"type": "string", "enum": ["kider", "sky-radiance-csv", "sky-radiance-json"]},
       "source": {"type": "string", "enum": ["upload", "path"]},
       "path": {"type": "string", "nullable": true, "description": "With source=path."},
       "upload_bytes": {"type": "integer", "nullable": true, "description": "With source=upload."},
@@ -164,6 +164,38 @@ Json schemas() {
     "type": "string",
     "format": "binary",
     "description": "A .7z, zip or tar archive of Kider .asd.rad.txt files, or of the published .7z captures."
+  },
+  "SkyRadianceCsv": {
+    "type": "string",
+    "description": "The open sky-radiance format as CSV (docs/measurement-formats.md): a header naming the columns time, latitude, longitude, elevation_m, view_zenith, view_azimuth, wavelength_nm, radiance (any order), then one row per measured value: time ISO 8601 with a UTC offset or Z; latitude and longitude in degrees (North and East positive); elevation_m in m; view_zenith in degrees from the vertical; view_azimuth in degrees clockwise from North; wavelength_nm; radiance in W/(m2.sr.nm). Rows of one instant are one capture, rows of one view direction in it one spectrum.",
+    "example": "time,latitude,longitude,elevation_m,view_zenith,view_azimuth,wavelength_nm,radiance\n2024-06-21T10:00:00+02:00,48.8566,2.3522,35,20,0,360,0.128637\n"
+  },
+  "SkyRadianceJson": {
+    "type": "object",
+    "description": "The open sky-radiance format as JSON (docs/measurement-formats.md): the file's site, or each sample's own (not both); the members of a sample as the CSV's columns.",
+    "required": ["samples"],
+    "additionalProperties": false,
+    "properties": {
+      "site": {"$ref": "#/components/schemas/Place"},
+      "samples": {
+        "type": "array",
+        "items": {
+          "type": "object",
+          "required": ["time", "view_zenith", "view_azimuth", "wavelength_nm", "radiance"],
+          "additionalProperties": false,
+          "properties": {
+            "time": {"type": "string", "format": "date-time", "description": "ISO 8601 with a UTC offset or Z."},
+            "latitude": {"type": "number", "minimum": -90, "maximum": 90},
+            "longitude": {"type": "number", "minimum": -180, "maximum": 180},
+            "elevation_m": {"type": "number", "minimum": -500, "maximum": 9000},
+            "view_zenith": {"type": "number", "minimum": 0, "maximum": 180, "description": "Degrees from the local vertical."},
+            "view_azimuth": {"type": "number", "minimum": 0, "exclusiveMaximum": true, "maximum": 360, "description": "Degrees clockwise from North."},
+            "wavelength_nm": {"type": "number", "exclusiveMinimum": true, "minimum": 0, "maximum": 1000000},
+            "radiance": {"type": "number", "minimum": 0, "description": "W/(m2.sr.nm)."}
+          }
+        }
+      }
+    }
   }
 })json");
 }
@@ -198,16 +230,24 @@ Json operations() {
     "operationId": "importDataset",
     "tags": ["datasets", "imports"],
     "summary": "Import captures into a dataset",
-    "description": "Imports Kider et al. 2014 captures as a background job: the body is an archive (streamed to disk under --max-upload-bytes, default 1 GiB), or no body and path= names an archive or folder under one of the server's import roots (--import-root; none by default). The route checks the parameters, name, format and path, then answers 202 with the import's state; follow Location. The import reads at most --max-entry-bytes (default 16 MiB) from one archive entry or file and --max-import-bytes (default 256 MiB) in all, counted as it reads: beyond, it fails with code too_large naming the limit. The import is one transaction: a failure leaves nothing behind.",
+    "description": "Imports measured skies as a background job (docs/measurement-formats.md): Kider et al. 2014 captures, or a file of the open sky-radiance format (CSV or JSON: format=, or the body's media type text/csv or application/json). An upload is checked whole before it is accepted: the open format's every value (400 invalid_body naming the column or member, the message giving the row), an archive's format (400 invalid_archive naming body). For Kider archives, the body is an archive (streamed to disk under --max-upload-bytes, default 1 GiB), or no body and path= names an archive or folder under one of the server's import roots (--import-root; none by default). The route checks the parameters, name, format and path, then answers 202 with the import's state; follow Location. The import reads at most --max-entry-bytes (default 16 MiB) from one archive entry or file and --max-import-bytes (default 256 MiB) in all, counted as it reads: beyond, it fails with code too_large naming the limit. The import is one transaction: a failure leaves nothing behind.",
     "parameters": [
       {"name": "name", "in": "query", "required": true, "description": "The dataset to import into (created when absent): 1 to 128 characters of A-Z a-z 0-9 . _ -, the first a letter or a digit.", "schema": {"type": "string", "pattern": "^[A-Za-z0-9][A-Za-z0-9._-]{0,127}$"}, "example": "synthetic"},
-      {"name": "format", "in": "query", "required": false, "description": "The measurement format.", "schema": {"type": "string", "enum": ["kider"], "default": "kider"}},
+      {"name": "format", "in": "query", "required": false, "description": "The measurement format; absent: from the body's media type (text/csv: sky-radiance-csv, application/json: sky-radiance-json), else kider.", "schema": {"type": "string", "enum": ["kider", "sky-radiance-csv", "sky-radiance-json"]}},
+      {"name": "lat", "in": "query", "required": false, "description": "kider only: the site's latitude, North positive, decimal or DMS (default 42.443449, Cornell).", "schema": {"type": "string"}, "example": "42.443449"},
+      {"name": "lon", "in": "query", "required": false, "description": "kider only: the site's longitude, East positive (default -76.481962).", "schema": {"type": "string"}, "example": "-76.481962"},
+      {"name": "elevation", "in": "query", "required": false, "description": "kider only: the site's elevation above sea level, m (default 250).", "schema": {"type": "number", "minimum": -500, "maximum": 9000}},
+      {"name": "utc_offset", "in": "query", "required": false, "description": "kider only: the UTC offset of the file names' local time, Z, +hh:mm, +hhmm or +hh, at most 14 hours (default -04:00).", "schema": {"type": "string"}, "example": "-04:00"},
       {"name": "path", "in": "query", "required": false, "description": "An archive or folder on the server, instead of a body: relative to an import root (tried in turn), or absolute inside one; links may not lead out of the root.", "schema": {"type": "string"}}
     ],
     "requestBody": {
       "required": false,
       "description": "The archive; absent (Content-Length: 0) with path=.",
-      "content": {"application/octet-stream": {"schema": {"$ref": "#/components/schemas/ArchiveUpload"}}}
+      "content": {
+        "application/octet-stream": {"schema": {"$ref": "#/components/schemas/ArchiveUpload"}},
+        "text/csv": {"schema": {"$ref": "#/components/schemas/SkyRadianceCsv"}},
+        "application/json": {"schema": {"$ref": "#/components/schemas/SkyRadianceJson"}}
+      }
     },
     "responses": {
       "202": {
@@ -218,9 +258,10 @@ Json operations() {
           "example": {"id": 1, "dataset": "synthetic", "format": "kider", "source": "path", "path": "/tmp/oa/synth", "upload_bytes": null, "status": "running", "progress": {"phase": "reading", "bytes_read": 1073533, "bytes_total": 4830932, "entries_read": 18, "entries_total": 81, "files_read": 18, "captures_added": 0, "samples_added": 0}, "timings": {"created": "2026-11-23T19:42:13.347Z", "started": "2026-11-23T19:42:13.348Z", "finished": null}, "report": null, "error": null, "location": "/v1/imports/1"}
         }}
       },
-      "400": {"description": "A missing or unknown parameter, a dataset name outside the rule (parameter name), an unknown format, no body and no path, or a body and a path."},
+      "400": {"description": "A missing or unknown parameter, a dataset name outside the rule (parameter name), an unknown format, no body and no path, or a body and a path; a site or clock parameter or path= with the open format; an upload of the open format with malformed content (code invalid_body naming the column or member, the message giving the row); a body sent as a Kider archive that is no archive (code invalid_archive, parameter body)."},
+      "415": {"description": "The body's media type is none of an import's, or contradicts format= (code unsupported_media_type, parameter Content-Type)."},
       "404": {"description": "path= names nothing that can be imported (code path_not_importable, parameter path): the same answer whether the path is missing, outside the import roots, leads out of them through a link or is a device, fifo or socket."},
-      "413": {"description": "The upload is above --max-upload-bytes (code too_large, parameter body)."},
+      "413": {"description": "The upload is above --max-upload-bytes (code too_large, parameter body), or a file of the open format above --max-entry-bytes (parameter max_entry_bytes)."},
       "507": {"description": "The server's disk is full: the upload cannot be spooled or the import cannot be recorded (code insufficient_storage, parameter disk)."},
       "503": {"description": "Too many imports are queued (--import-queue; code busy), or the server runs no import workers."}
     }

@@ -120,6 +120,25 @@ class Iso8601Reader {
   const std::string& parameter_;
 };
 
+}  // namespace
+
+int parse_utc_offset_minutes(std::string_view text, const std::string& parameter) {
+  std::cmatch m;
+  if (!std::regex_match(text.data(), text.data() + text.size(), m, utc_offset_pattern()))
+    throw invalid_parameter(parameter, "not a UTC offset: " + quoted(text) +
+                                           "; expected Z, +hh:mm, +hhmm or +hh such as -04:00");
+  if (!m[1].matched) return 0;
+  const int hours = std::stoi(m.str(2));
+  const int minutes = m[3].matched ? std::stoi(m.str(3)) : 0;
+  if (minutes > 59)
+    throw invalid_parameter(parameter, "UTC offset minutes out of 00-59 in " + quoted(text));
+  if (hours * 60 + minutes > kMaxUtcOffsetMin)
+    throw invalid_parameter(parameter, "UTC offset beyond 14 hours in " + quoted(text));
+  return (m.str(1) == "-" ? -1 : 1) * (hours * 60 + minutes);
+}
+
+namespace {
+
 // The zone of the system's tz database; a name it does not hold is the client's error, a
 // missing database the server's.
 const date::time_zone& locate_zone(std::string_view zone, const std::string& zone_parameter) {

@@ -23,6 +23,10 @@ struct Iso8601Time {
 
 Iso8601Time parse_iso8601_time(std::string_view text, const std::string& parameter = "time");
 
+// A UTC offset alone, as it ends a time above: Z, +hh:mm, +hhmm or +hh (and with '-'), at most
+// 14 hours; the offset in minutes (local time minus UTC, e.g. -240 for "-04:00").
+int parse_utc_offset_minutes(std::string_view text, const std::string& parameter = "utc_offset");
+
 // A local time without offset, YYYY-MM-DDThh:mm[:ss[.fff]], in the IANA time zone `zone`
 // (e.g. "Europe/Paris"): the instant, with the zone's UTC offset at that instant (daylight
 // saving time included). A local time that the zone skips (the hour lost when clocks go

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "models/evaluation/concentric_sky_interpolant.h"
 #include "models/evaluation/sample_repair.h"
 #include "models/solar/solar_position.h"
 
@@ -35,7 +36,12 @@ void prepare_capture(MeasuredCapture& capture, const CapturePreparation& prepara
   if (preparation.repair_defective_samples) repair_defective_samples(capture);
   if (std::isnan(capture.sun_zenith_computed_deg) || std::isnan(capture.sun_azimuth_computed_deg))
     compute_sun_position(capture, preparation);
-  if (preparation.estimate_sun_azimuth && std::isnan(capture.sun_azimuth_estimated_deg)) {
+  if (preparation.estimate_sun_azimuth && std::isnan(capture.sun_azimuth_estimated_deg) &&
+      !is_concentric_layout(capture.samples)) {
+    capture.processing_steps.emplace_back(
+        "sun azimuth not estimated: the samples are not the 81-direction layout the mirror "
+        "symmetry needs; the computed azimuth is used");
+  } else if (preparation.estimate_sun_azimuth && std::isnan(capture.sun_azimuth_estimated_deg)) {
     const SunAzimuthEstimate estimate =
         estimate_sun_azimuth(capture, capture.sun_azimuth_computed_deg, preparation.search);
     capture.sun_azimuth_estimated_deg = estimate.azimuth_deg;

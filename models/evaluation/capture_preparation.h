@@ -5,7 +5,10 @@
 //     (models/solar/solar_position.h). The study used the PSA algorithm with parallax and no
 //     refraction; SPA agrees to a few thousandths of a degree. Refraction is off by default,
 //     as in the study;
-//  3. the sun azimuth estimated from the sky's mirror symmetry (sun_azimuth_estimate.h).
+//  3. the sun azimuth estimated from the sky's mirror symmetry (sun_azimuth_estimate.h), for
+//     captures of the 81-direction layout it needs (Kider's); other captures (the open format
+//     of docs/measurement-formats.md, any directions) keep the computed azimuth, and the step
+//     says so.
 #pragma once
 
 #include "models/evaluation/measured_sky.h"

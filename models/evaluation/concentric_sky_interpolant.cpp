@@ -44,4 +44,13 @@ std::array<std::vector<std::size_t>, kConcentricRingCount> arrange_concentric_ri
   return rings;
 }
 
+bool is_concentric_layout(std::span<const MeasuredSample> samples) {
+  try {
+    arrange_concentric_rings(samples);
+    return true;
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
+}
+
 }  // namespace clearsky

@@ -44,6 +44,10 @@ inline std::size_t concentric_ring_size(int ring) {
 std::array<std::vector<std::size_t>, kConcentricRingCount> arrange_concentric_rings(
     std::span<const MeasuredSample> samples);
 
+// Whether the samples are the 81 directions of the layout (arrange_concentric_rings accepts
+// them).
+bool is_concentric_layout(std::span<const MeasuredSample> samples);
+
 // T: double or Spectrum (needs T + T, T - T, T * double).
 template <typename T>
 class ConcentricSkyInterpolant {

@@ -30,9 +30,16 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The sun azimuth given to the model: the estimated one when asked and the capture has one
+// (capture_preparation.h estimates it for the 81-direction layout only), else the computed one.
+double sun_azimuth_of(const MeasuredCapture& capture, const EvaluationOptions& options) {
+  return options.use_estimated_sun_azimuth && std::isfinite(capture.sun_azimuth_estimated_deg)
+             ? capture.sun_azimuth_estimated_deg
+             : capture.sun_azimuth_computed_deg;
+}
+
 void check_prepared(const MeasuredCapture& capture, const EvaluationOptions& options) {
-  const double azimuth = options.use_estimated_sun_azimuth ? capture.sun_azimuth_estimated_deg
-                                                           : capture.sun_azimuth_computed_deg;
+  const double azimuth = sun_azimuth_of(capture, options);
   if (!std::isfinite(capture.sun_zenith_computed_deg) || !std::isfinite(azimuth))
     throw std::invalid_argument("capture " + capture.label +
                                 " has no sun position (prepare it with prepare_capture first)");
@@ -84,8 +91,7 @@ CaptureEvaluation evaluate_capture(const SkyModel& model, const SkyModel* fit_cl
   result.time_iso = local_time_iso8601(capture);
   result.unix_time_utc_s = capture.unix_time_utc_s;
   result.sun_zenith_deg = capture.sun_zenith_computed_deg;
-  result.sun_azimuth_deg = options.use_estimated_sun_azimuth ? capture.sun_azimuth_estimated_deg
-                                                             : capture.sun_azimuth_computed_deg;
+  result.sun_azimuth_deg = sun_azimuth_of(capture, options);
   result.samples_measured = capture.samples.size();
   if (compared.empty()) {
     exclude_all(result, capture, SampleStatus::wavelength_out_of_range);
@@ -171,6 +177,14 @@ CaptureEvaluation evaluate_capture(const SkyModel& model, const SkyModel* fit_cl
       add_sample(result.excluded, radiance.status[s], capture.samples[s].index);
       continue;
     }
+    // A measured spectrum that does not reach every compared wavelength (the open format's
+    // spectra may cover any range) is left out, as a wavelength the model cannot answer is.
+    const TabulatedSpectrum& measured_spectrum = capture.samples[s].radiance;
+    if (measured_spectrum.min_nm() > grid[compared.front()] ||
+        measured_spectrum.max_nm() < grid[compared.back()]) {
+      add_sample(result.excluded, SampleStatus::wavelength_out_of_range, capture.samples[s].index);
+      continue;
+    }
     const auto values = radiance.spectrum(s);
     const std::size_t row = result.sample_errors.size();
     result.sample_errors.resize(row + compared.size());
@@ -223,9 +237,20 @@ EvaluationResult evaluate_sky_model(const SkyModel& model,
   const WavelengthGrid& grid = model.wavelengths();
   std::vector<std::size_t> compared;
   EvaluationResult result;
+  // The wavelengths some measured spectrum reaches: the compared range is at most theirs (all
+  // of it for Kider's 350..2500 nm spectra), the samples that reach less are left out.
+  double measured_min_nm = std::numeric_limits<double>::infinity();
+  double measured_max_nm = -std::numeric_limits<double>::infinity();
+  for (const MeasuredCapture& capture : captures) {
+    for (const MeasuredSample& s : capture.samples) {
+      measured_min_nm = std::min(measured_min_nm, s.radiance.min_nm());
+      measured_max_nm = std::max(measured_max_nm, s.radiance.max_nm());
+    }
+  }
   for (std::size_t i = 0; i < grid.size(); ++i) {
     if (grid[i] >= options.min_wavelength_nm - 1e-9 &&
-        grid[i] <= options.max_wavelength_nm + 1e-9 && model.answers_wavelength(i)) {
+        grid[i] <= options.max_wavelength_nm + 1e-9 && model.answers_wavelength(i) &&
+        grid[i] >= measured_min_nm && grid[i] <= measured_max_nm) {
       compared.push_back(i);
       result.wavelengths_nm.push_back(grid[i]);
     }

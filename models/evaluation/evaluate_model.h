@@ -21,6 +21,11 @@
 // (the model's own clamp_negative_fit, fit_domain.h); what has no nearest point (a NaN angle, a
 // wavelength outside the model's range) is still excluded. A model producing NaN, infinity or a
 // negative value (numerical_failure) is a bug, not a refusal: the evaluation fails.
+// Measured spectra of any range (the open format, docs/measurement-formats.md): the compared
+// wavelengths are at most those some measured spectrum of the captures reaches, and a sample
+// whose spectrum does not reach every compared wavelength is excluded (wavelength_out_of_range)
+// like a sample the model cannot answer. The sun azimuth is the estimated one where the capture
+// has one, else the computed one (capture_preparation.h).
 // Captures must be prepared first (capture_preparation.h): repaired and with sun positions.
 #pragma once
 

@@ -56,7 +56,10 @@ double TabulatedSpectrum::at(double wavelength_nm, OutOfRange policy) const {
   const std::size_t i1 =
       std::min<std::size_t>(static_cast<std::size_t>(it - nm_.begin()), nm_.size() - 1);
   const std::size_t i0 = i1 - 1;
-  const double t = (wavelength_nm - nm_[i0]) / (nm_[i1] - nm_[i0]);
+  // Halved before the differences, so that wavelengths of opposite sign near the largest
+  // double do not overflow the span to infinity (t would then be 0 at the upper node); for any
+  // two finite doubles the halves' difference is finite, and the halving is exact.
+  const double t = (0.5 * wavelength_nm - 0.5 * nm_[i0]) / (0.5 * nm_[i1] - 0.5 * nm_[i0]);
   // The convex combination, not v0 + t (v1 - v0): the difference of two finite values of
   // opposite sign near the largest double overflows, and 0 * inf would be NaN at a node.
   return (1.0 - t) * v_[i0] + t * v_[i1];

@@ -1,13 +1,21 @@
-// `clearsky import kider PATH... [--name NAME] [--db PATH] [--json]`: imports Kider et al.
-// 2014 captures (.7z archives, archives of them, or folders) into a dataset, in one
+// `clearsky import kider PATH... [--name NAME] [--db PATH] [--json] [--lat DEG] [--lon DEG]
+// [--elevation M] [--utc-offset +hh:mm]`: imports Kider et al. 2014 captures (.7z archives, archives of them, or folders) into a dataset, in one
 // transaction, synchronously: the importer the server's import jobs run (storage/importers/),
 // with its progress printed to stderr (at most twice a second, and at each phase) unless
 // --json, whose report is the API's (api/datasets/datasets_api.h).
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <iostream>
+#include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "api/datasets/datasets_api.h"
+#include "api/datasets/import_format.h"
+#include "api/datasets/import_site_clock.h"
+#include "api/datasets/sky_radiance_import.h"
+#include "api/error/api_error.h"
 #include "server/cli/commands.h"
 #include "server/cli/database_option.h"
 #include "storage/importers/kider_importer.h"
@@ -33,6 +41,50 @@ void print_progress(const storage::ImportProgress& p) {
             << p.samples_added << " samples) added\n";
 }
 
+// `clearsky import sky-radiance FILE... [--name NAME] [--db PATH] [--json]`: files of the open
+// format (docs/measurement-formats.md), CSV or JSON by their extension, in one transaction each.
+void add_sky_radiance_import(CLI::App& import) {
+  auto* command = import.add_subcommand(
+      "sky-radiance", "Files of the open sky-radiance format (.csv or .json), checked whole");
+  struct Options {
+    std::vector<std::string> files;
+    std::string name;
+    std::string db = kDefaultDatabasePath;
+    bool json = false;
+  };
+  auto options = std::make_shared<Options>();
+  command->add_option("files", options->files, "CSV (.csv) or JSON (.json) files")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("--name", options->name, "Dataset name")->required();
+  add_database_option(*command, options->db);
+  command->add_flag("--json", options->json, "Print the import reports as JSON");
+  command->callback([options] {
+    api::check_dataset_name(options->name);
+    storage::Database db = open_cli_database(options->db);
+    for (const std::string& file : options->files) {
+      const std::filesystem::path path(file);
+      const std::string extension = path.extension().string();
+      if (extension != ".csv" && extension != ".json")
+        throw CLI::ValidationError("files", file + ": neither .csv nor .json");
+      const std::string_view format =
+          extension == ".csv" ? api::kSkyRadianceCsvFormat : api::kSkyRadianceJsonFormat;
+      // The operator's own files: no import limits beyond the machine's.
+      storage::ImportByteLimits limits;
+      limits.max_entry_bytes = limits.max_import_bytes = std::numeric_limits<std::int64_t>::max();
+      const storage::ImportReport report =
+          api::import_sky_radiance(db, options->name, path, format, limits, file);
+      if (options->json) {
+        std::cout << api::import_report_json(report).dump(2) << '\n';
+        continue;
+      }
+      std::cout << "dataset " << report.dataset << ": " << file << ": " << report.added.size()
+                << " captures added (" << report.samples_added << " samples), "
+                << report.unchanged.size() << " already present\n";
+    }
+  });
+}
+
 }  // namespace
 
 void add_import_command(CLI::App& app) {
@@ -46,6 +98,8 @@ void add_import_command(CLI::App& app) {
     std::string name = "kider2014";
     std::string db = kDefaultDatabasePath;
     bool json = false;
+    // The site and clock of the archives (api/datasets/import_site_clock.h), as given.
+    std::map<std::string, std::string> site_clock;
   };
   auto options = std::make_shared<Options>();
   kider->add_option("paths", options->paths, "Archives (.7z, tar, zip) or folders")
@@ -61,11 +115,34 @@ void add_import_command(CLI::App& app) {
           },
           "NAME"));
   add_database_option(*kider, options->db);
+  for (const auto& [name, what] :
+       {std::pair<std::string, std::string>{"lat",
+                                            "Site latitude, North positive (default: "
+                                            "the published captures' site, Cornell)"},
+        {"lon", "Site longitude, East positive (default: Cornell)"},
+        {"elevation", "Site elevation above sea level, m (default: 250)"},
+        {"utc-offset", "UTC offset of the file names' local time (default: -04:00)"}}) {
+    const std::string parameter = name == "utc-offset" ? "utc_offset" : name;
+    kider->add_option_function<std::string>(
+        "--" + name,
+        [options, parameter](const std::string& value) { options->site_clock[parameter] = value; },
+        what);
+  }
   kider->add_flag("--json", options->json, "Print the import report as JSON (no progress lines)");
+  add_sky_radiance_import(*import);
   kider->callback([options] {
     storage::Database db = open_cli_database(options->db);
     storage::KiderImportRequest request;
     request.dataset_name = options->name;
+    api::Parameters site_clock("clearsky import kider");
+    for (const auto& [name, value] : options->site_clock) site_clock.add(name, value);
+    try {
+      request.options = api::parse_import_site_clock(site_clock);
+    } catch (const api::ApiError& e) {
+      std::string option = "--" + e.parameter();
+      std::replace(option.begin(), option.end(), '_', '-');
+      throw CLI::ValidationError(option, e.reason());
+    }
     for (const auto& p : options->paths) request.paths.emplace_back(p);
     if (!options->json) {
       using Clock = std::chrono::steady_clock;

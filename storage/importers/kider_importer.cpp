@@ -5,26 +5,12 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "models/core/content_hash.h"
 #include "models/core/parallel.h"
-#include "models/evaluation/capture_preparation.h"
-#include "storage/importers/import_conflict.h"
 #include "storage/importers/kider_reader.h"
-#include "storage/repositories/capture_repository.h"
 #include "storage/repositories/dataset_name.h"
-#include "storage/repositories/dataset_repository.h"
 
 namespace clearsky::storage {
 namespace {
-
-std::uint64_t hash_bytes(std::uint64_t h, const void* data, std::size_t size) {
-  return fnv1a_64(std::string_view(static_cast<const char*>(data), size), h);
-}
-
-template <typename T>
-std::uint64_t hash_value(std::uint64_t h, const T& value) {
-  return hash_bytes(h, &value, sizeof value);
-}
 
 // The progress of several sources read in parallel, summed and passed on one call at a time.
 class ProgressSum {
@@ -64,27 +50,6 @@ class ProgressSum {
 
 }  // namespace
 
-std::string capture_content_hash(const MeasuredCapture& capture) {
-  std::uint64_t h = fnv1a_64(capture.label);
-  h = hash_value(h, capture.unix_time_utc_s);
-  h = hash_value(h, capture.utc_offset_minutes);
-  h = hash_value(h, capture.site.latitude_deg);
-  h = hash_value(h, capture.site.longitude_deg);
-  h = hash_value(h, capture.site.elevation_m);
-  for (const MeasuredSample& s : capture.samples) {
-    h = hash_value(h, s.index);
-    h = hash_value(h, s.view.zenith_rad);
-    h = hash_value(h, s.view.azimuth_rad);
-    h = hash_value(h, s.quality_flags);
-    const auto& nm = s.radiance.wavelengths_nm();
-    const auto& values = s.radiance.values();
-    h = hash_value(h, nm.size());
-    h = hash_bytes(h, nm.data(), nm.size() * sizeof(double));
-    h = hash_bytes(h, values.data(), values.size() * sizeof(double));
-  }
-  return hex64(h);
-}
-
 ImportReport import_kider(Database& db, const KiderImportRequest& request) {
   const auto start = std::chrono::steady_clock::now();
   if (request.paths.empty() && request.archives_in_memory.empty())
@@ -96,12 +61,8 @@ ImportReport import_kider(Database& db, const KiderImportRequest& request) {
   ImportByteBudget budget(request.limits);
 
   // Read and decode everything first: a bad file is reported before any write.
-  struct Decoded {
-    std::string source;
-    std::vector<MeasuredCapture> captures;
-  };
   const std::size_t path_count = request.paths.size();
-  std::vector<Decoded> decoded(path_count + request.archives_in_memory.size());
+  std::vector<DecodedCaptures> decoded(path_count + request.archives_in_memory.size());
   ProgressSum reading(decoded.size(), request.progress);
   parallel_for(decoded.size(), [&](std::size_t i) {
     if (i < path_count) {
@@ -122,46 +83,16 @@ ImportReport import_kider(Database& db, const KiderImportRequest& request) {
     }
   });
   std::size_t capture_count = 0;
-  for (const Decoded& d : decoded) capture_count += d.captures.size();
+  for (const DecodedCaptures& d : decoded) capture_count += d.captures.size();
   if (capture_count == 0)
     throw std::runtime_error(decoded.front().source + ": no Kider capture found");
 
-  ImportProgress progress = reading.last();
-  progress.phase = "writing";
-  if (request.progress) request.progress(progress);
-
-  ImportReport report;
-  report.dataset = request.dataset_name;
-  Transaction transaction(db);
-  DatasetRepository datasets(db);
-  CaptureRepository captures(db);
-  const std::int64_t dataset_id = datasets.find_or_create(request.dataset_name, "kider2014");
-  int written = 0;
-  for (Decoded& d : decoded) {
-    for (MeasuredCapture& capture : d.captures) {
-      const std::string hash = capture_content_hash(capture);
-      if (captures.find_by_hash(dataset_id, hash)) {
-        report.unchanged.push_back(capture.label);
-        continue;
-      }
-      if (const auto existing = captures.find_by_label(dataset_id, capture.label))
-        throw ImportConflict(d.source + ": capture " + capture.label + " is already in dataset '" +
-                             request.dataset_name + "' with different content (hash " +
-                             existing->second + ", new " + hash + ")");
-      compute_sun_position(capture);
-      captures.insert(dataset_id, capture, hash, d.source);
-      report.added.push_back(capture.label);
-      report.samples_added += static_cast<std::int64_t>(capture.samples.size());
-      ++written;
-      if (request.after_capture_written) request.after_capture_written(written);
-      progress.captures_added = written;
-      progress.samples_added = report.samples_added;
-      if (request.progress) request.progress(progress);
-    }
-  }
-  transaction.commit();
-  progress.phase = "committed";
-  if (request.progress) request.progress(progress);
+  CaptureWrite write;
+  write.dataset_name = request.dataset_name;
+  write.dataset_format = std::string(kKiderDatasetFormat);
+  write.after_capture_written = request.after_capture_written;
+  write.progress = request.progress;
+  ImportReport report = write_captures(db, decoded, write, reading.last());
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }

@@ -1,12 +1,10 @@
 // Import of Kider et al. 2014 captures (archives or folders) into a dataset, all in one
-// transaction: every path is read and decoded before the database is touched, and a failure
-// at any point (malformed file, truncated archive, conflict, crash) leaves the database as it
-// was. A capture already present with the same content (hash of its decoded samples, time
-// and site) is left unchanged, so re-importing is a no-op; the same label with other content
-// is a conflict. Spectra are stored as measured: sample 0 keeps its kSampleKnownDefective
-// flag and is repaired by evaluations, not here. The computed sun position (SPA, no
-// refraction, as the study) is stored with each capture. Progress (reading, then writing) is
-// reported through an optional callback: the API's import jobs and the CLI share this code.
+// transaction: every path is read and decoded before the database is touched, then written by
+// capture_writer.h, so that a failure at any point (malformed file, truncated archive,
+// conflict, crash) leaves the database as it was; re-importing the same content is a no-op.
+// Spectra are stored as measured: sample 0 keeps its kSampleKnownDefective flag and is repaired
+// by evaluations, not here. Progress (reading, then writing) is reported through an optional
+// callback: the API's import jobs and the CLI share this code.
 #pragma once
 
 #include <cstdint>
@@ -14,26 +12,18 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "storage/importers/capture_writer.h"
 #include "storage/importers/import_byte_budget.h"
 #include "storage/importers/kider_format.h"
 #include "storage/sqlite/database.h"
 
 namespace clearsky::storage {
 
-// How far an import has come: the sums over its archives and folders (kider_reader.h), then
-// the captures written. Totals are -1 while unknown.
-struct ImportProgress {
-  std::string phase = "reading";  // reading, writing, committed
-  std::int64_t bytes_read = 0;
-  std::int64_t bytes_total = -1;
-  std::int64_t entries_read = 0;
-  std::int64_t entries_total = -1;
-  std::int64_t files_read = 0;
-  std::int64_t captures_added = 0;
-  std::int64_t samples_added = 0;
-};
+// The format of the datasets Kider archives are imported into.
+constexpr std::string_view kKiderDatasetFormat = "kider2014";
 
 struct KiderImportRequest {
   std::string dataset_name = "kider2014";    // storage/repositories/dataset_name.h
@@ -61,14 +51,6 @@ struct KiderImportRequest {
   std::function<void(const ImportProgress&)> progress;
 };
 
-struct ImportReport {
-  std::string dataset;
-  std::vector<std::string> added;      // capture labels
-  std::vector<std::string> unchanged;  // already present with the same content
-  std::int64_t samples_added = 0;
-  double seconds = 0;
-};
-
 // Throws std::runtime_error naming the source when nothing holds a Kider capture (before any
 // write, so not even the dataset is created), InvalidDatasetName for a name outside the rule,
 // ImportLimitExceeded past a byte limit.
@@ -78,9 +60,5 @@ class InvalidDatasetName : public std::invalid_argument {
 };
 
 ImportReport import_kider(Database& db, const KiderImportRequest& request);
-
-// 16 hex digits identifying a capture's content: label, time, site and every sample's index,
-// direction, flags, wavelengths and values.
-std::string capture_content_hash(const MeasuredCapture& capture);
 
 }  // namespace clearsky::storage

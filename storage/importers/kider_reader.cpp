@@ -89,7 +89,16 @@ ArchivePointer new_reader() {
   ArchivePointer reader(archive_read_new());
   if (!reader) throw std::runtime_error("libarchive: out of memory");
   archive_read_support_filter_all(reader.get());
-  archive_read_support_format_all(reader.get());
+  // Archive formats only. Not format_all: its text formats would take any text for an archive
+  // (raw, empty), and mtree, a manifest naming files, makes libarchive open those files on
+  // the server's own disk.
+  archive_read_support_format_7zip(reader.get());
+  archive_read_support_format_zip(reader.get());
+  archive_read_support_format_tar(reader.get());
+  archive_read_support_format_gnutar(reader.get());
+  archive_read_support_format_cpio(reader.get());
+  archive_read_support_format_rar(reader.get());
+  archive_read_support_format_rar5(reader.get());
   return reader;
 }
 
@@ -323,6 +332,18 @@ std::vector<KiderRawFile> read_kider_raw_files(const std::filesystem::path& path
   if (files.empty())
     throw std::runtime_error(shown(rules, path) + ": no Kider .asd.rad.txt files found");
   return files;
+}
+
+void check_readable_archive(const std::filesystem::path& file, const std::string& shown_as) {
+  const FileDescriptor fd = open_regular_file(file, false, shown_as);
+  if (!fd.is_open()) throw std::runtime_error(shown_as + ": not a regular file");
+  ArchivePointer reader = new_reader();
+  archive_entry* entry = nullptr;
+  const bool opened = archive_read_open_fd(reader.get(), fd.get(), 1 << 16) == ARCHIVE_OK;
+  const int first = opened ? archive_read_next_header(reader.get(), &entry) : ARCHIVE_FATAL;
+  if (first != ARCHIVE_OK && first != ARCHIVE_WARN && first != ARCHIVE_EOF)
+    throw std::runtime_error(
+        shown_as + " is not an archive (7z, zip, tar, cpio or rar): " + error_text(reader.get()));
 }
 
 std::vector<MeasuredCapture> decode_kider_files(const std::vector<KiderRawFile>& files,

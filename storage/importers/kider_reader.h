@@ -77,6 +77,12 @@ std::vector<KiderRawFile> read_kider_archive_bytes(std::string_view bytes, const
                                                    const KiderReadObserver& observer = {},
                                                    ImportByteBudget* budget = nullptr);
 
+// Whether a file is an archive this reader opens (7z, zip, tar, cpio, rar, compressed or
+// not), from its first entry's header, before an import of it is accepted (an upload that is
+// not one is refused up front). Throws std::runtime_error naming the file as shown_as, with
+// libarchive's reason, otherwise.
+void check_readable_archive(const std::filesystem::path& file, const std::string& shown_as);
+
 // Decodes raw files (as read_kider_raw_files returns them) into captures; source_prefix names
 // their container in messages.
 std::vector<MeasuredCapture> decode_kider_files(const std::vector<KiderRawFile>& files,

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -53,6 +54,23 @@ inline void write_zero_filled_zip(
   }
   archive_write_close(writer);
   archive_write_free(writer);
+}
+
+// The bytes of such a zip (through a file in dir), for uploads whose content only has to be an
+// archive (the import route checks that before it accepts one).
+inline std::string zero_filled_zip_bytes(
+    const std::filesystem::path& dir,
+    const std::vector<std::pair<std::string, std::int64_t>>& entries) {
+  const std::filesystem::path path = dir / "zero_filled.zip";
+  write_zero_filled_zip(path, entries);
+  std::string bytes(std::filesystem::file_size(path), '\0');
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (file == nullptr) throw std::runtime_error("cannot read " + path.string());
+  const std::size_t read = std::fread(bytes.data(), 1, bytes.size(), file);
+  std::fclose(file);
+  if (read != bytes.size()) throw std::runtime_error("cannot read " + path.string());
+  std::filesystem::remove(path);
+  return bytes;
 }
 
 // A file name the Kider reader takes for a radiance file (kider_format.h), for index i.

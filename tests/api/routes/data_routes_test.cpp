@@ -14,6 +14,7 @@
 #include "tests/support/synchronous_provider.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/test_sky_model.h"
+#include "tests/support/zero_filled_zip.h"
 
 namespace clearsky::api {
 namespace {
@@ -145,7 +146,10 @@ TEST_F(DataRouteHandlers, CreationsAnswerWithTheirLocation) {
 }
 
 TEST_F(DataRouteHandlers, UploadsAreReadThroughTheBodyReader) {
-  StringBodyReader small(std::string(600, 'x'), 64);
+  // An archive (the route checks that before it accepts an upload), padded to 600 bytes.
+  std::string archive = clearsky::testing::zero_filled_zip_bytes(dir.path, {{"a.txt", 16}});
+  archive.resize(600, 'x');
+  StringBodyReader small(archive, 64);
   const ApiResponse accepted = call("POST", "/v1/datasets?name=d", "", &small);
   ASSERT_EQ(accepted.status, 202) << accepted.body;
   EXPECT_EQ(json_of(accepted)["upload_bytes"], 600);

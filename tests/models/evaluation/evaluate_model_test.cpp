@@ -120,10 +120,57 @@ TEST(EvaluateModel, UsesTheEstimatedSunAzimuthAndTheComputedZenith) {
   EXPECT_EQ(estimated.captures[0].time_iso, "2013-05-27T09:30:00-04:00");
 }
 
+// A capture without an estimated sun azimuth (one of another layout than Kider's, the open
+// format's) is given the computed one.
+TEST(EvaluateModel, WithoutAnEstimateTheComputedSunAzimuthIsUsed) {
+  MeasuredCapture capture = testing::synthetic_capture(sky, 35.0, 140.0);
+  capture.sun_azimuth_estimated_deg = kNotComputed;
+  const FunctionModel model(sky);
+  const EvaluationResult r = evaluate_sky_model(model, std::vector<MeasuredCapture>{capture});
+  EXPECT_DOUBLE_EQ(r.captures[0].sun_azimuth_deg, 140.0);
+  EXPECT_TRUE(r.captures[0].answered());
+}
+
+// Spectra of any range: the compared wavelengths are at most those the measurements reach, and
+// a sample that does not reach them all is excluded as wavelength_out_of_range, and counted.
+TEST(EvaluateModel, SpectraThatDoNotReachTheComparedWavelengthsAreExcluded) {
+  MeasuredCapture capture = testing::synthetic_capture(sky);
+  const auto cut = [](const TabulatedSpectrum& s, double from_nm, double to_nm) {
+    std::vector<double> nm, values;
+    for (std::size_t i = 0; i < s.wavelengths_nm().size(); ++i) {
+      if (s.wavelengths_nm()[i] < from_nm || s.wavelengths_nm()[i] > to_nm) continue;
+      nm.push_back(s.wavelengths_nm()[i]);
+      values.push_back(s.values()[i]);
+    }
+    return TabulatedSpectrum(std::move(nm), std::move(values));
+  };
+  // Every spectrum over 400..700 nm, sample 7's over 500..600 nm only.
+  for (MeasuredSample& sample : capture.samples) sample.radiance = cut(sample.radiance, 400, 700);
+  capture.samples[7].radiance = cut(capture.samples[7].radiance, 500, 600);
+  const FunctionModel model(sky);
+  const EvaluationResult r = evaluate_sky_model(model, std::vector<MeasuredCapture>{capture});
+  // The grid wavelengths 360 + 11.75 i within 400..700 nm: i = 4 (407) to 28 (689).
+  ASSERT_EQ(r.wavelengths_nm.size(), 25u);
+  EXPECT_DOUBLE_EQ(r.wavelengths_nm.front(), 407.0);
+  EXPECT_DOUBLE_EQ(r.wavelengths_nm.back(), 689.0);
+  EXPECT_NEAR(r.rmse, 0.0, 1e-9);
+  EXPECT_EQ(r.samples_compared, 80u);
+  EXPECT_EQ(r.samples_excluded, 1u);
+  ASSERT_EQ(r.captures[0].excluded.size(), 1u);
+  EXPECT_EQ(r.captures[0].excluded[0],
+            (OutOfDomainSamples{SampleStatus::wavelength_out_of_range, {7}}));
+  // No measured wavelength in the compared range: every sample excluded, the capture unanswered.
+  for (MeasuredSample& sample : capture.samples) sample.radiance = cut(sample.radiance, 502, 503);
+  const EvaluationResult none = evaluate_sky_model(model, std::vector<MeasuredCapture>{capture});
+  EXPECT_EQ(none.captures_unanswered, 1u);
+  EXPECT_EQ(none.samples_excluded, 81u);
+}
+
 TEST(EvaluateModel, RefusesUnpreparedCaptures) {
   const FunctionModel model(sky);
   MeasuredCapture no_sun = testing::synthetic_capture(sky);
   no_sun.sun_azimuth_estimated_deg = kNotComputed;
+  no_sun.sun_azimuth_computed_deg = kNotComputed;
   EXPECT_THROW(evaluate_sky_model(model, std::vector<MeasuredCapture>{no_sun}),
                std::invalid_argument);
   MeasuredCapture defective = testing::synthetic_capture(sky);

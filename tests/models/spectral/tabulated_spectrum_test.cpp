@@ -31,6 +31,17 @@ TEST(TabulatedSpectrum, InterpolatesValuesWhoseDifferenceOverflows) {
   EXPECT_DOUBLE_EQ(between, 0.25 * big);
 }
 
+// Wavelengths near the largest double of opposite signs (a forged blob; fuzz/corpus/sample_blob/
+// overflowing-span): their span overflows, and the interpolation must still give each node's
+// value at the node and the midpoint's value halfway.
+TEST(TabulatedSpectrum, InterpolatesOverWavelengthsWhoseSpanOverflows) {
+  const double big = std::numeric_limits<double>::max();
+  const TabulatedSpectrum wide({-0.75 * big, 0.75 * big}, {2.0, 4.0});
+  EXPECT_EQ(wide.at(-0.75 * big, OutOfRange::error), 2.0);
+  EXPECT_EQ(wide.at(0.75 * big, OutOfRange::error), 4.0);
+  EXPECT_DOUBLE_EQ(wide.at(0.0, OutOfRange::error), 3.0);
+}
+
 TEST(TabulatedSpectrum, OutOfRangePolicyIsExplicit) {
   EXPECT_DOUBLE_EQ(kRamp.at(300.0, OutOfRange::hold_end_values), 1.0);
   EXPECT_DOUBLE_EQ(kRamp.at(700.0, OutOfRange::hold_end_values), 2.0);

@@ -1,5 +1,6 @@
 // End-to-end tests of the data commands of the clearsky executable (server/cli/): `import
-// kider` (with its progress lines), `datasets --json` and `evaluate`, run as a user would, on
+// kider` (with its progress lines, at a site and clock given), `import sky-radiance`,
+// `datasets --json` and `evaluate`, run as a user would, on
 // a temporary database.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -8,11 +9,17 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "models/evaluation/capture_preparation.h"
 #include "models/registry.h"
+#include "storage/repositories/capture_repository.h"
+#include "storage/repositories/dataset_repository.h"
+#include "storage/schema/migrations.h"
 #include "tests/support/shared_data.h"
+#include "tests/support/synthetic_kider_zip.h"
 #include "tests/support/temp_dir.h"
 
 namespace clearsky {
@@ -123,6 +130,69 @@ TEST(DataCommands, EvaluatePrintsTheContractJson) {
   EXPECT_GT(m.at("rmse").get<double>(), 0.0);
   EXPECT_EQ(m.at("captures").at(0).at("time"), "2013-05-27T11:45:00-04:00");
   EXPECT_NEAR(m.at("captures").at(0).at("sun_azimuth").get<double>(), 122.265, 0.2);
+}
+
+// `import kider --lat --lon --elevation --utc-offset`: the captures are stored at the site and on
+// the clock given, their sun from those (docs/measurement-formats.md); an offset out of range is
+// a usage error naming the option.
+TEST(DataCommands, ImportKiderAtTheSiteAndClockGiven) {
+  TempDb t;
+  const std::string zip = (t.dir / "capture.zip").string();
+  clearsky::testing::write_synthetic_kider_zip(zip);
+  const Result imported = run("import kider " + zip + " --name far --db " + t.db +
+                              " --lat 48.8566 --lon 2.3522 --elevation 35 --utc-offset +02:00");
+  ASSERT_EQ(imported.exit_code, 0) << imported.output;
+  storage::Database db = storage::open_database(t.db);
+  const auto dataset = storage::DatasetRepository(db).find("far");
+  ASSERT_TRUE(dataset);
+  const std::vector<storage::StoredCapture> stored =
+      storage::CaptureRepository(db).load(dataset->id);
+  ASSERT_EQ(stored.size(), 1u);
+  MeasuredCapture expected;
+  expected.site = {48.8566, 2.3522, 35};
+  expected.utc_offset_minutes = 120;
+  // 2013-05-27 12:00 local at UTC+02:00 is 10:00 UTC.
+  expected.unix_time_utc_s = 1369648800.0;
+  compute_sun_position(expected);
+  const MeasuredCapture& capture = stored[0].capture;
+  EXPECT_EQ(capture.utc_offset_minutes, 120);
+  EXPECT_DOUBLE_EQ(capture.unix_time_utc_s, expected.unix_time_utc_s);
+  EXPECT_DOUBLE_EQ(capture.site.latitude_deg, 48.8566);
+  EXPECT_DOUBLE_EQ(capture.site.elevation_m, 35);
+  EXPECT_DOUBLE_EQ(capture.sun_zenith_computed_deg, expected.sun_zenith_computed_deg);
+  EXPECT_DOUBLE_EQ(capture.sun_azimuth_computed_deg, expected.sun_azimuth_computed_deg);
+
+  const Result refused =
+      run("import kider " + zip + " --name x --db " + t.db + " --utc-offset +15:00");
+  EXPECT_NE(refused.exit_code, 0);
+  EXPECT_NE(refused.output.find("--utc-offset"), std::string::npos) << refused.output;
+}
+
+// `import sky-radiance FILE.csv|FILE.json`: imported whole, or refused naming the column and row.
+TEST(DataCommands, ImportSkyRadianceFiles) {
+  TempDb t;
+  const std::string header =
+      "time,latitude,longitude,elevation_m,view_zenith,view_azimuth,wavelength_nm,radiance\n";
+  const auto write = [&](const std::string& name, const std::string& text) {
+    const std::filesystem::path path = t.dir / name;
+    std::ofstream(path) << text;
+    return path.string();
+  };
+  const Result imported =
+      run("import sky-radiance " +
+          write("sky.csv", header + "2024-06-21T10:00:00+02:00,48.85,2.35,35,30,90,550,0.05\n") +
+          " --name open --json --db " + t.db);
+  ASSERT_EQ(imported.exit_code, 0) << imported.output;
+  EXPECT_EQ(nlohmann::json::parse(imported.output).at("samples_added"), 1);
+  const Result refused =
+      run("import sky-radiance " +
+          write("bad.csv", header + "2024-06-21T10:00:00+02:00,48.85,2.35,35,30,90,550,-1\n") +
+          " --name open --db " + t.db);
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_NE(refused.output.find("row 1 (line 2), radiance"), std::string::npos) << refused.output;
+  EXPECT_NE(run("import sky-radiance " + write("sky.txt", header) + " --name open --db " + t.db)
+                .exit_code,
+            0);
 }
 
 }  // namespace

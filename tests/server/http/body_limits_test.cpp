@@ -8,6 +8,7 @@
 
 #include "tests/server/http/data_server_fixture.h"
 #include "tests/server/http/raw_request.h"
+#include "tests/support/zero_filled_zip.h"
 
 namespace clearsky::server {
 namespace {
@@ -81,10 +82,12 @@ TEST_F(BodyLimits, BodiesNoRouteReadsAreRefusedAboveThePayloadLimit) {
 
 TEST_F(BodyLimits, UploadsHaveTheirOwnLimit) {
   auto c = client("t0ken");
-  // Above the payload limit, below the upload limit: accepted, then imported (it is not an
-  // archive, so the import fails; nothing stays behind).
-  const auto accepted =
-      c.Post("/v1/datasets?name=big", std::string(1u << 20, 'x'), "application/octet-stream");
+  // Above the payload limit, below the upload limit: accepted (it starts as a zip), then
+  // imported (it holds no Kider file and ends in junk, so the import fails; nothing stays
+  // behind).
+  std::string archive = clearsky::testing::zero_filled_zip_bytes(dir.path, {{"a.txt", 16}});
+  archive.resize(1u << 20, 'x');
+  const auto accepted = c.Post("/v1/datasets?name=big", archive, "application/octet-stream");
   ASSERT_TRUE(accepted);
   ASSERT_EQ(accepted->status, 202) << accepted->body;
   const auto state = finished_import(accepted);

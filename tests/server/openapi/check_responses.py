@@ -372,6 +372,18 @@ def run(checker, workdir):
     c.call("listImports", 200)
     c.call("listImports", 200, query="status=succeeded")
     c.call("listImports", 400, query="status=sideways")
+    # The open sky-radiance format (docs/measurement-formats.md): an upload accepted, a malformed
+    # one, a media type no import reads, and a CSV sent as a Kider archive.
+    csv = (b"time,latitude,longitude,elevation_m,view_zenith,view_azimuth,wavelength_nm,radiance\n"
+           b"2024-06-21T10:00:00+02:00,48.8566,2.3522,35,20,0,360,0.128637\n")
+    c.call("importDataset", 202, query="name=open", body=csv, token=TOKEN,
+           headers={"Content-Type": "text/csv"})
+    c.call("importDataset", 400, query="name=open", body=csv.replace(b"0.128637", b"x"),
+           token=TOKEN, headers={"Content-Type": "text/csv"})
+    c.call("importDataset", 415, query="name=open", body=csv, token=TOKEN,
+           headers={"Content-Type": "image/png"})
+    c.call("importDataset", 400, query="name=open", body=csv, token=TOKEN,
+           headers={"Content-Type": "application/octet-stream"})
     c.call("listDatasets", 200)
     c.call("listDatasets", 400, query="verbose=1")
     dataset = {"name": c.example("getDataset", "name")}

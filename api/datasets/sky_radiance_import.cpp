@@ -1,0 +1,57 @@
+// Import of the open sky-radiance format (sky_radiance_import.h).
+#include "api/datasets/sky_radiance_import.h"
+
+#include <chrono>
+#include <fstream>
+
+#include "api/datasets/import_format.h"
+#include "api/datasets/sky_radiance_csv.h"
+#include "api/datasets/sky_radiance_json.h"
+#include "api/error/api_error.h"
+
+namespace clearsky::api {
+
+std::vector<MeasuredCapture> read_sky_radiance_file(const std::filesystem::path& file,
+                                                    std::string_view format,
+                                                    const storage::ImportByteLimits& limits,
+                                                    const std::string& shown_as) {
+  const bool json = format == kSkyRadianceJsonFormat;
+  const std::int64_t limit = limits.max_entry_bytes;
+  const std::string limit_name = "max_entry_bytes";
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(file, error);
+  if (error) throw std::runtime_error(shown_as + ": cannot be read");
+  if (size > static_cast<std::uintmax_t>(limit))
+    throw ApiError(413, "too_large", limit_name,
+                   shown_as + ": " + std::to_string(size) + " bytes, above " + limit_name + " (" +
+                       std::to_string(limit) + " bytes)");
+  std::string text(size, '\0');
+  std::ifstream in(file, std::ios::binary);
+  if (!in.read(text.data(), static_cast<std::streamsize>(size)))
+    throw std::runtime_error(shown_as + ": cannot be read");
+  return json ? parse_sky_radiance_json(text) : parse_sky_radiance_csv(text);
+}
+
+storage::ImportReport import_sky_radiance(
+    storage::Database& db, const std::string& dataset, const std::filesystem::path& file,
+    std::string_view format, const storage::ImportByteLimits& limits, const std::string& shown_as,
+    const std::function<void(const storage::ImportProgress&)>& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<storage::DecodedCaptures> decoded(1);
+  decoded[0].source = shown_as;
+  decoded[0].captures = read_sky_radiance_file(file, format, limits, shown_as);
+  storage::ImportProgress read;
+  std::error_code error;
+  read.bytes_read = static_cast<std::int64_t>(std::filesystem::file_size(file, error));
+  read.bytes_total = read.bytes_read;
+  read.entries_read = read.entries_total = read.files_read = 1;
+  storage::CaptureWrite write;
+  write.dataset_name = dataset;
+  write.dataset_format = std::string(kSkyRadianceDatasetFormat);
+  write.progress = progress;
+  storage::ImportReport report = storage::write_captures(db, decoded, write, read);
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace clearsky::api
