@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "models/atmosphere/phase_functions.h"
 #include "models/core/fast_exp.h"
@@ -14,21 +16,65 @@
 
 namespace clearsky::nishita96 {
 
+namespace {
+
+// Weight of the grazing layout for a direction at angle a from the zenith: 0 beyond
+// kGrazingBlendEndDeg from the horizontal, 1 below kGrazingBlendStartDeg, a smoothstep of the
+// elevation in between (continuous, with a continuous derivative, so that the blend adds no
+// kink to the radiance as a function of the sun zenith). The fixed horizontals keep the
+// study's horizontal layout (weight 0).
+double grazing_weight_of(double angle_rad, bool horizontal) {
+  if (horizontal) return 0.0;
+  const double elevation_deg =
+      radians_to_degrees(std::asin(std::min(1.0, std::abs(std::cos(angle_rad)))));
+  if (elevation_deg >= kGrazingBlendEndDeg) return 0.0;
+  if (elevation_deg <= kGrazingBlendStartDeg) return 1.0;
+  const double s =
+      (kGrazingBlendEndDeg - elevation_deg) / (kGrazingBlendEndDeg - kGrazingBlendStartDeg);
+  return s * s * (3.0 - 2.0 * s);
+}
+
+}  // namespace
+
 SamplingTable::SamplingTable(double angle_rad, double earth_radius_m, double top_radius_m,
-                             int nodes, std::size_t wavelengths)
+                             int nodes, std::size_t wavelengths, bool fixed_horizontal)
     : angle_rad_(angle_rad),
       earth_radius_m_(earth_radius_m),
       top_radius_m_(top_radius_m),
       half_width_m_(std::sqrt(top_radius_m * top_radius_m - earth_radius_m * earth_radius_m)),
       // The study tests the exact angles of the horizontal directions (+-90 degrees).
-      horizontal_(angle_rad == 0.5 * kPi || angle_rad == -0.5 * kPi),
+      horizontal_(fixed_horizontal && (angle_rad == 0.5 * kPi || angle_rad == -0.5 * kPi)),
       axis_against_height_(angle_rad > -0.5 * kPi && angle_rad <= 0.5 * kPi),
       tan_angle_(std::tan(angle_rad)),
       nodes_(nodes),
       stored_rows_(nodes / 2 + 1),
       wavelengths_(wavelengths),
-      values_(static_cast<std::size_t>(nodes) * (nodes / 2 + 1) * nodes * wavelengths, 0.0f) {
+      grazing_weight_(grazing_weight_of(angle_rad, horizontal_)) {
   if (nodes < 3 || nodes % 2 == 0) throw InvalidInput("table_nodes", "must be odd and >= 3");
+  const std::size_t size = static_cast<std::size_t>(nodes) * stored_rows_ * nodes * wavelengths;
+  if (has_sheared()) values_.assign(size, 0.0f);
+  if (has_grazing()) {
+    grazing_values_.assign(size / nodes * grazing_across_nodes(), 0.0f);
+    // d = -s: the light arriving from s travels along -s, and the columns are integrated in
+    // the direction the light travels. n: d turned by 90 degrees in the sun's vertical plane,
+    // upwards (s is near the horizontal, so sin(a) is far from 0).
+    const double sign = std::sin(angle_rad) > 0.0 ? 1.0 : -1.0;
+    grazing_axis_ = {-std::sin(angle_rad), 0.0, -std::cos(angle_rad)};
+    grazing_normal_ = {-sign * std::cos(angle_rad), 0.0, sign * std::sin(angle_rad)};
+    // The box covers the rectangle x in [-D, D], z in [R, R_top] of the sun's vertical plane,
+    // which holds every point the views sample (|p| <= R_top, z >= R).
+    o_min_ = t_min_ = std::numeric_limits<double>::infinity();
+    o_max_ = t_max_ = -std::numeric_limits<double>::infinity();
+    for (const double x : {-half_width_m_, half_width_m_}) {
+      for (const double z : {earth_radius_m, top_radius_m}) {
+        const Vec3 corner{x, 0.0, z};
+        o_min_ = std::min(o_min_, dot(corner, grazing_normal_));
+        o_max_ = std::max(o_max_, dot(corner, grazing_normal_));
+        t_min_ = std::min(t_min_, dot(corner, grazing_axis_));
+        t_max_ = std::max(t_max_, dot(corner, grazing_axis_));
+      }
+    }
+  }
 }
 
 Vec3 SamplingTable::node_position(int i, int j, int k) const {
@@ -43,6 +89,18 @@ Vec3 SamplingTable::node_position(int i, int j, int k) const {
   const double height = along * thickness;
   return {(2.0 * u - 1.0) * half_width_m_ + tan_angle_ * height, (2.0 * v - 1.0) * half_width_m_,
           earth_radius_m_ + height};
+}
+
+Vec3 SamplingTable::grazing_node_position(int i, int j, int k) const {
+  const double scale = 1.0 / (nodes_ - 1);
+  const double o = o_min_ + (i / (grazing_across_nodes() - 1.0)) * (o_max_ - o_min_);
+  const double t = t_min_ + (k * scale) * (t_max_ - t_min_);
+  return o * grazing_normal_ + t * grazing_axis_ +
+         Vec3{0.0, (2.0 * (j * scale) - 1.0) * half_width_m_, 0.0};
+}
+
+std::span<float> SamplingTable::grazing_node(int i, int j, int k) {
+  return {grazing_values_.data() + index(i, j - nodes_ / 2, k), wavelengths_};
 }
 
 std::span<float> SamplingTable::node(int i, int j, int k) {
@@ -68,6 +126,24 @@ __attribute__((target_clones("avx2", "default"))) void trilinear(const float* co
 }  // namespace
 
 void SamplingTable::lookup(Vec3 p, std::span<float> out) const {
+  if (grazing_weight_ == 0.0) {
+    lookup_sheared(p, out);
+    return;
+  }
+  if (grazing_weight_ == 1.0) {
+    lookup_grazing(p, out);
+    return;
+  }
+  // The blend band: both layouts, weighted (see grazing_weight_of).
+  thread_local std::vector<float> sheared;
+  sheared.resize(out.size());
+  lookup_sheared(p, sheared);
+  lookup_grazing(p, out);
+  const auto g = static_cast<float>(grazing_weight_);
+  for (std::size_t l = 0; l < out.size(); ++l) out[l] = g * out[l] + (1.0f - g) * sheared[l];
+}
+
+void SamplingTable::lookup_sheared(Vec3 p, std::span<float> out) const {
   const double thickness = top_radius_m_ - earth_radius_m_;
   double u, w;
   // |y|: the stored half, by symmetry about the sun's vertical plane.
@@ -82,17 +158,29 @@ void SamplingTable::lookup(Vec3 p, std::span<float> out) const {
     const double along = height / thickness;
     w = axis_against_height_ ? 1.0 - along : along;
   }
-  const double last = nodes_ - 1;
-  const auto split = [last](double coordinate, int& index0, double& fraction) {
+  interpolate(values_, nodes_, u, v, w, out);
+}
+
+void SamplingTable::lookup_grazing(Vec3 p, std::span<float> out) const {
+  const double v = 0.5 * (std::abs(p.y) / half_width_m_ + 1.0);
+  const double u = (dot(p, grazing_normal_) - o_min_) / (o_max_ - o_min_);
+  const double w = (dot(p, grazing_axis_) - t_min_) / (t_max_ - t_min_);
+  interpolate(grazing_values_, grazing_across_nodes(), u, v, w, out);
+}
+
+void SamplingTable::interpolate(const std::vector<float>& values, int u_nodes, double u, double v,
+                                double w, std::span<float> out) const {
+  const auto split = [](double coordinate, double last, int& index0, double& fraction) {
     const double c = std::clamp(coordinate * last, 0.0, last);
     index0 = std::min(static_cast<int>(c), static_cast<int>(last) - 1);
     fraction = c - index0;
   };
+  const double last = nodes_ - 1;
   int i0, j0, k0;
   double fu, fv, fw;
-  split(u, i0, fu);
-  split(v, j0, fv);
-  split(w, k0, fw);
+  split(u, u_nodes - 1.0, i0, fu);
+  split(v, last, j0, fv);
+  split(w, last, k0, fw);
   const int jj0 = j0 - nodes_ / 2;  // >= 0 since v >= 0.5
   const float* corners[8];
   float weights[8];
@@ -102,7 +190,7 @@ void SamplingTable::lookup(Vec3 p, std::span<float> out) const {
       for (int dk = 0; dk < 2; ++dk, ++c) {
         weights[c] =
             static_cast<float>((di ? fu : 1.0 - fu) * (dj ? fv : 1.0 - fv) * (dk ? fw : 1.0 - fw));
-        corners[c] = values_.data() + index(i0 + di, std::max(jj0 + dj, 0), k0 + dk);
+        corners[c] = values.data() + index(i0 + di, std::max(jj0 + dj, 0), k0 + dk);
       }
     }
   }
@@ -239,6 +327,126 @@ void build_column(const ColumnContext& c, SamplingTable& table, int i, int j) {
   }
 }
 
+// Integrates the light travelling along d over [t0, t1] of the line p0 + t d, starting with
+// `value` (the radiance arriving at t0: 0 from space, the sunlit ground's otherwise), writes
+// the nodes k with k step in (t0, t1] (k = 0 .. nodes - 1), and leaves the radiance at t1 in
+// `value`. The trapezoid rule between consecutive samples, as build_column.
+void integrate_segment(const ColumnContext& c, SamplingTable& table, int i, int j, Vec3 p0, Vec3 d,
+                       double step, double t0, double t1, std::vector<double>& value) {
+  const auto& a = c.atmosphere;
+  const std::size_t n = a.grid.size();
+  const double earth = a.parameters.earth_radius_m;
+  const double hr = a.parameters.rayleigh_scale_height_m;
+  const double hm = a.parameters.mie_scale_height_m;
+  const double nu = dot(-1.0 * d, c.sun);
+  const double rayleigh_phase_value = rayleigh_phase(nu);
+  const double mie_phase_value = cornette_shanks_phase(nu, a.parameters.mie_phase_g);
+  // The radiance is kept as background (attenuated start value) plus the two scattering
+  // integrals, as in build_column.
+  std::vector<double> previous_sun(n), sun_t(n), segment(n), rayleigh_integral(n, 0.0),
+      mie_integral(n, 0.0), background(value);
+  const auto height_at = [&](double t) { return std::max(length(p0 + t * d) - earth, 0.0); };
+  double previous_t = t0;
+  double previous_rayleigh = std::exp(-height_at(t0) / hr);
+  double previous_mie = std::exp(-height_at(t0) / hm);
+  sun_transmittance_at(c, p0 + t0 * d, previous_sun);
+  const auto radiance = [&](std::size_t w) {
+    return rayleigh_integral[w] * a.rayleigh_scattering_per_m[w] * rayleigh_phase_value +
+           mie_integral[w] * a.mie_scattering_per_m[w] * mie_phase_value + background[w];
+  };
+  const int last = table.nodes() - 1;
+  int k = std::max(static_cast<int>(std::floor(t0 / step)) + 1, 0);
+  while (previous_t < t1) {
+    const bool at_node = k <= last && k * step < t1;
+    const double t = at_node ? k * step : t1;
+    const double height = height_at(t);
+    const double rayleigh = std::exp(-height / hr);
+    const double mie = std::exp(-height / hm);
+    const double half = 0.5 * (t - previous_t);
+    transmittance_from_lengths(n, a.rayleigh_scattering_per_m.data(), a.mie_extinction_per_m.data(),
+                               (rayleigh + previous_rayleigh) * half, (mie + previous_mie) * half,
+                               segment.data());
+    sun_transmittance_at(c, p0 + t * d, sun_t);
+    for (std::size_t w = 0; w < n; ++w) {
+      rayleigh_integral[w] =
+          (sun_t[w] * rayleigh + previous_sun[w] * segment[w] * previous_rayleigh) * half +
+          segment[w] * rayleigh_integral[w];
+      mie_integral[w] = (sun_t[w] * mie + previous_sun[w] * segment[w] * previous_mie) * half +
+                        segment[w] * mie_integral[w];
+      background[w] *= segment[w];
+    }
+    if (at_node && k >= 0) {
+      auto out = table.grazing_node(i, j, k);
+      for (std::size_t w = 0; w < n; ++w) out[w] = static_cast<float>(radiance(w));
+    }
+    previous_rayleigh = rayleigh;
+    previous_mie = mie;
+    previous_t = t;
+    std::swap(previous_sun, sun_t);
+    if (at_node) ++k;
+    if (!at_node && t >= t1) break;
+  }
+  for (std::size_t w = 0; w < n; ++w) value[w] = radiance(w);
+}
+
+// One column of the grazing layout (nishita96_tables.h): the whole line p0 + t d, whose nodes
+// may lie in space, in the atmosphere on either side of the Earth, or inside the Earth. The
+// radiance arriving from -d: 0 before the line enters the atmosphere; integrated from there to
+// the top's exit or to the ground; inside the Earth (nodes only the lookups next to the ground
+// weigh) blended linearly along the chord from the light reaching the ground to the sunlit
+// ground's at the exit, so that the nodes' values stay continuous as the layout turns with the
+// sun; integrated again from the exit; beyond the atmosphere, the value at its exit (the light
+// travels on unchanged).
+void build_grazing_column(const ColumnContext& c, SamplingTable& table, int i, int j) {
+  const auto& a = c.atmosphere;
+  const std::size_t n = a.grid.size();
+  const double earth = a.parameters.earth_radius_m;
+  const double top = a.parameters.top_radius_m;
+  const Vec3 p0 = table.grazing_node_position(i, j, 0);
+  const Vec3 p1 = table.grazing_node_position(i, j, 1);
+  const double step = length(p1 - p0);
+  const Vec3 d = (1.0 / step) * (p1 - p0);
+  const int last = table.nodes() - 1;
+  const double b = dot(p0, d);
+  const double cc = dot(p0, p0);
+  const double top_disc = b * b - cc + top * top;
+  if (top_disc <= 0.0) return;  // the line misses the atmosphere: zeros
+  const double top_in = -b - std::sqrt(top_disc);
+  const double top_out = -b + std::sqrt(top_disc);
+  const auto fill = [&](double from_t, double to_t, const auto& value_at) {
+    for (int k = std::max(static_cast<int>(std::floor(from_t / step)) + 1, 0);
+         k <= last && k * step <= to_t; ++k) {
+      auto out = table.grazing_node(i, j, k);
+      for (std::size_t w = 0; w < n; ++w) out[w] = static_cast<float>(value_at(k * step, w));
+    }
+  };
+  std::vector<double> value(n, 0.0);
+  const double earth_disc = b * b - cc + earth * earth;
+  double end = top_out;
+  if (earth_disc > 0.0) {
+    const double earth_in = -b - std::sqrt(earth_disc);
+    const double earth_out = -b + std::sqrt(earth_disc);
+    integrate_segment(c, table, i, j, p0, d, step, top_in, earth_in, value);
+    const std::vector<double> reaching = value;
+    // The sunlit Lambertian ground at the exit, albedo / pi (as build_column).
+    const Vec3 exit = p0 + earth_out * d;
+    std::vector<double> sun_t(n);
+    sun_transmittance_at(c, exit, sun_t);
+    const double cos_sun = std::max(0.0, dot(normalize(exit), c.sun));
+    for (std::size_t w = 0; w < n; ++w) value[w] = sun_t[w] * a.ground_albedo[w] / kPi * cos_sun;
+    const double chord = earth_out - earth_in;
+    fill(earth_in, earth_out, [&](double t, std::size_t w) {
+      const double f = chord > 0.0 ? (t - earth_in) / chord : 1.0;
+      return (1.0 - f) * reaching[w] + f * value[w];
+    });
+    integrate_segment(c, table, i, j, p0, d, step, earth_out, top_out, value);
+  } else {
+    integrate_segment(c, table, i, j, p0, d, step, top_in, top_out, value);
+  }
+  fill(end, std::numeric_limits<double>::infinity(),
+       [&](double, std::size_t w) { return value[w]; });
+}
+
 }  // namespace
 
 std::shared_ptr<const SunTables> build_sun_tables(const Nishita93Tables& optical_lengths,
@@ -248,23 +456,38 @@ std::shared_ptr<const SunTables> build_sun_tables(const Nishita93Tables& optical
                                                   const PrecomputeContext& context) {
   const auto angles = sampling_angles_rad(sun_zenith_rad);
   std::vector<SamplingTable> tables;
-  for (double a : angles) {
-    tables.emplace_back(a, atmosphere.parameters.earth_radius_m, atmosphere.parameters.top_radius_m,
-                        nodes, atmosphere.grid.size());
+  for (std::size_t k = 0; k < angles.size(); ++k) {
+    // Tables 2 and 3 are the fixed horizontals (sampling_angles_rad).
+    tables.emplace_back(angles[k], atmosphere.parameters.earth_radius_m,
+                        atmosphere.parameters.top_radius_m, nodes, atmosphere.grid.size(),
+                        k == 2 || k == 3);
   }
   const ColumnContext c{
       optical_lengths, atmosphere, direction_of_angle(sun_zenith_rad),
       0.5 * (atmosphere.parameters.top_radius_m - atmosphere.parameters.earth_radius_m)};
   const int rows = nodes / 2 + 1;
-  const std::size_t columns_per_table = static_cast<std::size_t>(nodes) * rows;
+  // The grazing layout has more columns across (kGrazingAcrossRefinement); the sheared one
+  // skips the indices beyond its nodes.
+  const int across = tables.front().grazing_across_nodes();
+  const std::size_t columns_per_table = static_cast<std::size_t>(across) * rows;
+  // The layouts to build: (table, grazing); both for a direction in the blend band.
+  std::vector<std::pair<int, bool>> layouts;
+  for (int t = 0; t < kSamplingDirections; ++t) {
+    if (tables[static_cast<std::size_t>(t)].has_sheared()) layouts.emplace_back(t, false);
+    if (tables[static_cast<std::size_t>(t)].has_grazing()) layouts.emplace_back(t, true);
+  }
   parallel_for(
-      kSamplingDirections * columns_per_table,
+      layouts.size() * columns_per_table,
       [&](std::size_t x) {
         context.check_cancelled();
-        const int t = static_cast<int>(x / columns_per_table);
+        const auto [t, grazing] = layouts[x / columns_per_table];
         const int i = static_cast<int>(x % columns_per_table) / rows;
         const int j = nodes / 2 + static_cast<int>(x % columns_per_table) % rows;
-        build_column(c, tables[static_cast<std::size_t>(t)], i, j);
+        if (grazing) {
+          build_grazing_column(c, tables[static_cast<std::size_t>(t)], i, j);
+        } else if (i < nodes) {
+          build_column(c, tables[static_cast<std::size_t>(t)], i, j);
+        }
       },
       context.threads, 8);
   context.report(1.0, "sampling tables");
