@@ -157,8 +157,8 @@ bool non_negative_member(std::string_view key) {
 // The members a sky answer may leave null, each only with the member that says why
 // (docs/http-api.md): the broadband figures when the answer names why the model cannot go
 // broadband (broadband_unavailable), and the quality level's error when the request overrode
-// one of the level's options (quality_overridden). Any other null could be a value that was
-// not computed.
+// one of the level's options (quality_overridden), and the sunrise and sunset of a polar day
+// or night (day). Any other null could be a value that was not computed.
 std::set<std::string> explained_null_members(const nlohmann::json& body) {
   std::set<std::string> out;
   if (!body.is_object()) return out;
@@ -170,6 +170,12 @@ std::set<std::string> explained_null_members(const nlohmann::json& body) {
   }
   const auto overridden = body.find("quality_overridden");
   if (overridden != body.end() && !overridden->empty()) out.insert("quality_error");
+  // /v1/sun: no sunrise or sunset on a polar day or night, which "day" names.
+  const auto day = body.find("day");
+  if (day != body.end() && day->is_string() && day->get<std::string>() != "normal") {
+    out.insert("sunrise");
+    out.insert("sunset");
+  }
   return out;
 }
 
