@@ -68,7 +68,8 @@ ApiResponse sky_matrix_response(const ApiContext& context, const ModelOnGrid& m,
                                 const RequestQuality& quality, std::shared_ptr<TimeSteps> times,
                                 const Viewpoint& viewpoint, int mf, const std::string& scheme_name,
                                 const std::string& sun_handling, const std::string& output,
-                                double ground_reflectance, const std::string& format) {
+                                double ground_reflectance, const std::string& format,
+                                const std::optional<AppliedFit>& fit) {
   const SkyModel& model = *m.model;
   const ModelDescriptor& d = model.descriptor();
   auto scheme = std::make_shared<const SkyPatchScheme>(mf);
@@ -98,6 +99,7 @@ ApiResponse sky_matrix_response(const ApiContext& context, const ModelOnGrid& m,
   ApiResponse response;
   response.model_id = d.id;
   add_quality_headers(response.headers, quality, m.served_quality);
+  add_fit_headers(response.headers, fit);
   response.held_until_sent = reservation;
   auto suffixes = component_suffixes(output, m.wavelengths_nm);
   if (format == "csv" || format == "radiance") {
@@ -136,6 +138,7 @@ ApiResponse sky_matrix_response(const ApiContext& context, const ModelOnGrid& m,
     head["gamut_mapping"] = "negative components clipped to 0";
   }
   add_quality_members(head, quality, m.served_quality);
+  add_fit_member(head, fit);
   response.content_type = "application/json";
   response.stream = [matrix, times, scheme, suffixes, head, reservation](const ByteSink& sink) {
     return write_sky_matrix_json({*matrix, *times, *scheme, suffixes}, head, sink);
@@ -197,10 +200,8 @@ ApiResponse skypatches(const ApiContext& context, const ApiRequest& request) {
   const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config),
                                              wavelengths, request.requester(), &quality);
   if (times) {
-    ApiResponse matrix = sky_matrix_response(context, m, quality, times, viewpoint, mf, scheme_name,
-                                             sun_handling, output, ground_reflectance, format);
-    add_fit_headers(matrix.headers, sky.fit);
-    return matrix;
+    return sky_matrix_response(context, m, quality, times, viewpoint, mf, scheme_name, sun_handling,
+                               output, ground_reflectance, format, sky.fit);
   }
   const SunSpec& sun = *single_sun;
   const SkyModel& model = *m.model;

@@ -139,6 +139,7 @@ Json schemas() {
       "quality_setting": {"type": "object", "additionalProperties": {"type": "number"}},
       "quality_error": {"type": "object", "allOf": [{"$ref": "#/components/schemas/QualityError"}], "nullable": true},
       "quality_overridden": {"type": "array", "items": {"type": "string"}},
+      "fit": {"$ref": "#/components/schemas/AppliedFit"},
       "scheme": {"type": "string", "enum": ["tregenza", "reinhart"]},
       "mf": {"type": "integer", "minimum": 1, "maximum": 6},
       "patch_count": {"type": "integer"},

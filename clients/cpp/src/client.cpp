@@ -146,6 +146,8 @@ IrradianceSeriesResult Client::irradiance_series(const IrradianceSeriesRequest& 
   query.add("altitude", request.altitude_m);
   query.add("ground_reflection", request.ground_reflection);
   query.add("ground_albedo", request.ground_albedo);
+  query.add("quality", request.quality);
+  query.add("fit", request.fit);
   for (const auto& [name, value] : request.parameters)
     query.add(name, detail::parameter_text(value));
   return detail::irradiance_series_of(
@@ -155,14 +157,26 @@ IrradianceSeriesResult Client::irradiance_series(const IrradianceSeriesRequest& 
 SkyPatchesResult Client::sky_patches(const SkyPatchesRequest& request) const {
   QueryText query;
   detail::add_sky_query(query, request);
-  query.add("scheme", request.scheme);
-  if (request.mf) query.add("mf", static_cast<std::int64_t>(*request.mf));
-  query.add("sun", request.sun_handling);
-  query.add("output", request.output);
-  query.add("ground_reflectance", request.ground_reflectance);
-  if (!request.wavelengths_nm.empty())
-    query.add("wavelengths", detail::number_list_text(request.wavelengths_nm));
+  detail::add_sky_patch_options(query, request);
   return detail::sky_patches_of(json_of(transport_->get(query.target("/v1/skypatches"))));
+}
+
+SkyMatrixResult Client::sky_matrix(const SkyMatrixRequest& request) const {
+  QueryText query;
+  query.add("model", request.model);
+  query.add("lat", request.latitude);
+  query.add("lon", request.longitude);
+  query.add("start", request.start);
+  query.add("end", request.end);
+  query.add("tz", request.tz);
+  query.add("step", request.step);
+  query.add("altitude", request.altitude_m);
+  query.add("quality", request.quality);
+  query.add("fit", request.fit);
+  detail::add_sky_patch_options(query, request);
+  for (const auto& [name, value] : request.parameters)
+    query.add(name, detail::parameter_text(value));
+  return detail::sky_matrix_of(json_of(transport_->get(query.target("/v1/skypatches"))));
 }
 
 RgbResult Client::rgb(const RgbRequest& request) const {

@@ -78,7 +78,18 @@ void add_sky_query(QueryText& query, const SkyQuery& sky) {
   }
   query.add("altitude", sky.altitude_m);
   query.add("quality", sky.quality);
+  query.add("fit", sky.fit);
   for (const auto& [name, value] : sky.parameters) query.add(name, parameter_text(value));
+}
+
+void add_sky_patch_options(QueryText& query, const SkyPatchOptions& options) {
+  query.add("scheme", options.scheme);
+  if (options.mf) query.add("mf", static_cast<std::int64_t>(*options.mf));
+  query.add("sun", options.sun_handling);
+  query.add("output", options.output);
+  query.add("ground_reflectance", options.ground_reflectance);
+  if (!options.wavelengths_nm.empty())
+    query.add("wavelengths", number_list_text(options.wavelengths_nm));
 }
 
 }  // namespace clearsky::client::detail

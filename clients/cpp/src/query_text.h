@@ -41,7 +41,10 @@ class QueryText {
   std::vector<std::pair<std::string, std::string>> pairs_;
 };
 
-// The model, the sun (given or by place and time), the altitude and the model's parameters.
+// The model, the sun (given or by place and time), the altitude, the quality, the fit and the
+// model's parameters.
 void add_sky_query(QueryText& query, const SkyQuery& sky);
+// The patch scheme, the sun's handling, the output and its wavelengths of GET /v1/skypatches.
+void add_sky_patch_options(QueryText& query, const SkyPatchOptions& options);
 
 }  // namespace clearsky::client::detail

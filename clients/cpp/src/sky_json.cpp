@@ -29,7 +29,21 @@ nlohmann::json sky_query_json(const SkyQuery& sky) {
   }
   if (sky.altitude_m) body["altitude"] = *sky.altitude_m;
   if (sky.quality) body["quality"] = *sky.quality;
+  if (sky.fit) body["fit"] = *sky.fit;
   return body;
+}
+
+// The answer's `fit` member, absent when no stored fit was used.
+std::optional<AppliedFit> applied_fit_of(const nlohmann::json& json) {
+  const auto fit = optional_member<nlohmann::json>(json, "fit");
+  if (!fit) return std::nullopt;
+  AppliedFit applied;
+  applied.id = member<std::int64_t>(*fit, "id");
+  applied.model = member<std::string>(*fit, "model");
+  applied.model_version = member<std::string>(*fit, "model_version");
+  applied.dataset = member<std::string>(*fit, "dataset");
+  applied.parameters = member<std::map<std::string, double>>(*fit, "parameters");
+  return applied;
 }
 
 nlohmann::json views_json(const std::vector<ViewDirection>& views) {
@@ -180,6 +194,7 @@ RadianceResult radiance_of(const nlohmann::json& json) {
       throw Error(0, "invalid_answer", "a sample's radiance does not match wavelengths_nm");
     result.samples.push_back(std::move(sample));
   }
+  result.fit = applied_fit_of(json);
   return result;
 }
 
@@ -203,6 +218,7 @@ IrradianceResult irradiance_of(const nlohmann::json& json) {
   result.ground_diffuse = component_of(json, "ground_diffuse");
   result.global = component_of(json, "global");
   result.broadband_unavailable = optional_member<std::string>(json, "broadband_unavailable");
+  result.fit = applied_fit_of(json);
   return result;
 }
 
@@ -233,6 +249,7 @@ IrradianceSeriesResult irradiance_series_of(const nlohmann::json& json) {
       }
     }
   }
+  result.fit = applied_fit_of(json);
   return result;
 }
 
@@ -261,6 +278,7 @@ RgbResult rgb_of(const nlohmann::json& json) {
     sample.luminance_cd_m2 = member<double>(s, "luminance_cd_m2");
     result.samples.push_back(std::move(sample));
   }
+  result.fit = applied_fit_of(json);
   return result;
 }
 
@@ -293,6 +311,66 @@ SkyPatchesResult sky_patches_of(const nlohmann::json& json) {
         SkyPatch{-1, member<double>(*sun, "altitude_deg"), member<double>(*sun, "azimuth_deg"),
                  member<double>(*sun, "solid_angle_sr"), patch_value_of(*sun)};
   }
+  out.fit = applied_fit_of(json);
+  return out;
+}
+
+SkyMatrixResult sky_matrix_of(const nlohmann::json& json) {
+  SkyMatrixResult out;
+  out.model = member<std::string>(json, "model");
+  out.model_version = member<std::string>(json, "model_version");
+  out.quality = optional_member<std::string>(json, "quality").value_or("");
+  out.served_quality = optional_member<std::string>(json, "served_quality").value_or("");
+  out.scheme = member<std::string>(json, "scheme");
+  out.mf = member<int>(json, "mf");
+  out.output = member<std::string>(json, "output");
+  out.unit = member<std::string>(json, "unit");
+  if (const auto wavelengths = optional_member<std::vector<double>>(json, "wavelengths_nm"))
+    out.wavelengths_nm = *wavelengths;
+  out.components =
+      out.output == "luminance" ? 1 : (out.output == "rgb" ? 3 : out.wavelengths_nm.size());
+  for (const nlohmann::json& p : member<nlohmann::json>(json, "patches")) {
+    out.patches.push_back({member<int>(p, "patch"),
+                           member<double>(p, "altitude_deg"),
+                           member<double>(p, "azimuth_deg"),
+                           member<double>(p, "solid_angle_sr"),
+                           {}});
+  }
+  for (const nlohmann::json& t : member<nlohmann::json>(json, "times")) {
+    SkyMatrixStep step;
+    step.time_utc = member<std::string>(t, "time_utc");
+    step.time_local = optional_member<std::string>(t, "time_local");
+    step.night = member<bool>(t, "night");
+    step.answered = member<bool>(t, "answered");
+    step.sun_zenith_deg = member<double>(t, "sun_zenith_deg");
+    step.sun_azimuth_deg = member<double>(t, "sun_azimuth_deg");
+    if (const auto sun = optional_member<nlohmann::json>(t, "sun_source"))
+      step.sun_value = patch_value_of(*sun);
+    out.steps.push_back(std::move(step));
+  }
+  // One row per patch, one entry per step: a number (one component) or an array.
+  const nlohmann::json rows = member<nlohmann::json>(json, "matrix");
+  if (!rows.is_array() || rows.size() != out.patches.size())
+    throw Error(0, "invalid_answer", "the matrix does not have one row per patch");
+  out.values.reserve(out.patches.size() * out.steps.size() * out.components);
+  for (const nlohmann::json& row : rows) {
+    if (!row.is_array() || row.size() != out.steps.size())
+      throw Error(0, "invalid_answer", "a row of the matrix does not have one value per step");
+    for (const nlohmann::json& cell : row) {
+      std::vector<double> value;
+      try {
+        value = cell.is_number() ? std::vector<double>{cell.get<double>()}
+                                 : cell.get<std::vector<double>>();
+      } catch (const nlohmann::json::exception& e) {
+        throw Error(0, "invalid_answer", std::string("a value of the matrix: ") + e.what());
+      }
+      if (value.size() != out.components)
+        throw Error(0, "invalid_answer", "a value of the matrix does not have its components");
+      out.values.insert(out.values.end(), value.begin(), value.end());
+    }
+  }
+  out.unanswered_steps = member<std::int64_t>(json, "unanswered_steps");
+  out.fit = applied_fit_of(json);
   return out;
 }
 

@@ -23,6 +23,7 @@ RadianceResult radiance_of(const nlohmann::json& json);
 IrradianceResult irradiance_of(const nlohmann::json& json);
 IrradianceSeriesResult irradiance_series_of(const nlohmann::json& json);
 SkyPatchesResult sky_patches_of(const nlohmann::json& json);
+SkyMatrixResult sky_matrix_of(const nlohmann::json& json);
 RgbResult rgb_of(const nlohmann::json& json);
 
 }  // namespace clearsky::client::detail

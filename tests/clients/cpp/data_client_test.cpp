@@ -243,6 +243,35 @@ TEST_F(DataClient, FitLifecycle) {
   EXPECT_LE(*done.rmse_after, *done.rmse_before);
   EXPECT_TRUE(done.finished.has_value());
   EXPECT_EQ(client.fit(queued.id).values, done.values);
+  // The fit in use: a sky query with fit=ID answers as the fitted turbidity given explicitly,
+  // and says which fit; fit=latest is the same fit here.
+  RadianceRequest by_fit;
+  by_fit.model = "preetham";
+  by_fit.sun = SunAngles{30, 135};
+  by_fit.view = ViewDirection{45, 0};
+  by_fit.wavelengths_nm = {450, 550};
+  by_fit.fit = std::to_string(queued.id);
+  RadianceRequest given = by_fit;
+  given.fit.reset();
+  given.parameters["turbidity"] = done.values.at("turbidity");
+  const RadianceResult fitted = client.radiance(by_fit);
+  ASSERT_TRUE(fitted.fit.has_value());
+  EXPECT_EQ(fitted.fit->id, queued.id);
+  EXPECT_EQ(fitted.fit->dataset, "noon");
+  EXPECT_EQ(fitted.fit->parameters, done.values);
+  EXPECT_EQ(fitted.samples[0].radiance_w_m2_sr_nm,
+            client.radiance(given).samples[0].radiance_w_m2_sr_nm);
+  SkyMatrixRequest matrix;
+  matrix.model = "preetham";
+  matrix.latitude = "42.444";
+  matrix.longitude = "-76.5";
+  matrix.start = "2013-05-27T11:00:00-04:00";
+  matrix.end = "2013-05-27T12:00:00-04:00";
+  matrix.output = "luminance";
+  matrix.fit = "latest";
+  const SkyMatrixResult day = client.sky_matrix(matrix);
+  ASSERT_TRUE(day.fit.has_value());
+  EXPECT_EQ(day.fit->id, queued.id);
   const Page<Fit> listed = client.fits();
   ASSERT_EQ(listed.items.size(), 1u);
   EXPECT_EQ(listed.items[0].id, queued.id);

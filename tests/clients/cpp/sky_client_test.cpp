@@ -361,5 +361,55 @@ TEST_F(SkyClient, SkyPatchesInRadiancesOrder) {
   }
 }
 
+// GET /v1/skypatches with start: one column per hourly step, night columns zero, the values
+// patch-major with their components; the step's sun as its own source by day.
+TEST_F(SkyClient, SkyMatrixHasOneColumnPerStep) {
+  SkyMatrixRequest request;
+  request.model = "preetham";
+  request.latitude = "42.444";
+  request.longitude = "-76.5";
+  request.start = "2013-05-27T03:00:00-04:00";
+  request.end = "2013-05-27T12:00:00-04:00";
+  request.output = "rgb";
+  const SkyMatrixResult matrix = client().sky_matrix(request);
+  EXPECT_EQ(matrix.model, "preetham");
+  EXPECT_EQ(matrix.output, "rgb");
+  ASSERT_EQ(matrix.components, 3u);
+  ASSERT_EQ(matrix.patches.size(), 146u);
+  ASSERT_EQ(matrix.steps.size(), 10u);  // 03:00 to 12:00 hourly
+  ASSERT_EQ(matrix.values.size(), 146u * 10u * 3u);
+  EXPECT_FALSE(matrix.fit.has_value());
+  EXPECT_TRUE(matrix.steps.front().night);  // 03:00 EDT in May: the sun is down
+  EXPECT_FALSE(matrix.steps.back().night);
+  EXPECT_EQ(matrix.steps.back().time_utc, "2013-05-27T16:00:00Z");
+  EXPECT_TRUE(matrix.steps.back().sun_value.has_value());
+  for (std::size_t c = 0; c < 3; ++c) {
+    EXPECT_EQ(matrix.value(10, 0, c), 0.0);  // night: a column of zeros
+    EXPECT_GT(matrix.value(10, 9, c), 0.0);  // noon: the sky is lit
+  }
+  // The noon column is the sky vector of that instant.
+  SkyPatchesRequest noon;
+  noon.model = "preetham";
+  noon.place_time.emplace();
+  noon.place_time->latitude = "42.444";
+  noon.place_time->longitude = "-76.5";
+  noon.place_time->time = "2013-05-27T12:00:00-04:00";
+  noon.output = "rgb";
+  const SkyPatchesResult vector = client().sky_patches(noon);
+  ASSERT_EQ(vector.patches.size(), 146u);
+  for (std::size_t c = 0; c < 3; ++c)
+    EXPECT_NEAR(matrix.value(10, 9, c), vector.patches[10].value[c],
+                1e-6 * vector.patches[10].value[c]);
+
+  request.step = "PT0S";
+  try {
+    client().sky_matrix(request);
+    FAIL() << "a zero step was answered";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), 400);
+    EXPECT_EQ(e.parameter(), "step");
+  }
+}
+
 }  // namespace
 }  // namespace clearsky::client

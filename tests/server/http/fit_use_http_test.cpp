@@ -128,6 +128,9 @@ TEST_F(FitUseOverHttp, EverySkyEndpointTakesTheFitInTheQueryOrTheBody) {
         "/v1/irradiance?model=preetham&fit=" + id() + kSky,
         "/v1/skypatches?model=preetham&output=luminance&fit=" + id() + kSky,
         "/v1/irradiance/series?model=preetham&fit=" + id() +
+            "&lat=42.44&lon=-76.5&start=2013-05-27T10:00:00-04:00&end=2013-05-27T12:00:00-04:00",
+        // A sky matrix (one vector per step) carries the fit as the single vector does.
+        "/v1/skypatches?model=preetham&output=luminance&fit=" + id() +
             "&lat=42.44&lon=-76.5&start=2013-05-27T10:00:00-04:00&end=2013-05-27T12:00:00-04:00"}) {
     const auto r = c.Get(target);
     ASSERT_TRUE(r) << target;

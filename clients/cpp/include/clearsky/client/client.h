@@ -80,6 +80,8 @@ class Client {
   SkydomeDownload skydome_to_file(const SkydomeRequest& request,
                                   const std::filesystem::path& file) const;
   SkyPatchesResult sky_patches(const SkyPatchesRequest& request) const;
+  // A sky matrix: one sky vector per step (docs/building-energy.md "Sky matrices").
+  SkyMatrixResult sky_matrix(const SkyMatrixRequest& request) const;
 
   // Datasets (writes need the token).
   Page<DatasetSummary> datasets(const PageRequest& page = {}) const;

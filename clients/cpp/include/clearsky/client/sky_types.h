@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -50,6 +51,18 @@ struct SkyQuery {
   Parameters parameters;
   // "draft", "standard" or "reference" (docs/quality-levels.md); absent: the server's level.
   std::optional<std::string> quality;
+  // A stored fit whose values set the parameters it fitted (docs/fits.md "Using a fit"): its
+  // id ("12"), "latest" (the model's newest succeeded fit) or "latest:DATASET".
+  std::optional<std::string> fit;
+};
+
+// The stored fit an answer was computed with (the answer's `fit` member).
+struct AppliedFit {
+  std::int64_t id = 0;
+  std::string model;
+  std::string model_version;
+  std::string dataset;
+  std::map<std::string, double> parameters;  // the fitted values it set
 };
 
 // A viewing direction.
@@ -143,6 +156,7 @@ struct RadianceResult {
   std::optional<double> bin_width_nm;
   std::vector<double> wavelengths_nm;
   std::vector<RadianceSample> samples;  // in the order of the request's views
+  std::optional<AppliedFit> fit;        // with SkyQuery::fit
 };
 
 // GET /v1/irradiance on a plane.
@@ -184,6 +198,7 @@ struct IrradianceResult {
   std::optional<IrradianceComponent> direct_normal, direct, diffuse, ground_diffuse, global;
   // Why there are no broadband figures (empty when there are).
   std::optional<std::string> broadband_unavailable;
+  std::optional<AppliedFit> fit;  // with SkyQuery::fit
 };
 
 // GET /v1/irradiance/series: a place from start to end every step, on the horizontal and on
@@ -204,7 +219,9 @@ struct IrradianceSeriesRequest {
   std::optional<double> altitude_m;
   std::optional<std::string> ground_reflection;  // "include" (default) or "exclude"
   std::optional<double> ground_albedo;
-  Parameters parameters;  // the model's
+  Parameters parameters;               // the model's
+  std::optional<std::string> quality;  // as SkyQuery's
+  std::optional<std::string> fit;      // as SkyQuery's
 };
 // One column per name of `columns` (pvlib's: ghi, dni, dhi, poa_global_30_180, ...): the
 // times as text, night as 0/1 in `values`, a value the model could not answer as NaN.
@@ -217,6 +234,7 @@ struct IrradianceSeriesResult {
   // Every numeric column by name (solar_zenith, ghi, poa_global_30_180, ...).
   std::map<std::string, std::vector<double>> values;
   std::int64_t unanswered_steps = 0;
+  std::optional<AppliedFit> fit;
 };
 
 // GET /v1/rgb (one view) and POST /v1/rgb (a batch): linear sRGB, radiometric
@@ -248,6 +266,7 @@ struct RgbResult {
   std::optional<std::array<double, 2>> integrated_range_nm;  // method=spectral
   std::optional<std::string> warning;
   std::vector<RgbSample> samples;
+  std::optional<AppliedFit> fit;  // with SkyQuery::fit
 };
 
 // GET /v1/skydome: an OpenEXR image, streamed.
@@ -264,9 +283,8 @@ struct SkydomeDownload {
   std::uint64_t bytes = 0;   // written to the stream or file
 };
 
-// GET /v1/skypatches: the sky vector of Radiance's daylight-coefficient tools
-// (docs/building-energy.md "Sky-patch vectors"), in Radiance's patch order.
-struct SkyPatchesRequest : SkyQuery {
+// The patches of GET /v1/skypatches, for one vector and for a matrix alike.
+struct SkyPatchOptions {
   std::optional<std::string> scheme;         // "tregenza" (default) or "reinhart"
   std::optional<int> mf;                     // Reinhart subdivision, 1..6
   std::optional<std::string> sun_handling;   // the query's sun: "separate" (default) or "patch"
@@ -274,6 +292,10 @@ struct SkyPatchesRequest : SkyQuery {
   std::optional<double> ground_reflectance;  // the ground patch's Lambertian reflectance
   std::vector<double> wavelengths_nm;        // spectral output; empty: the model's grid
 };
+
+// GET /v1/skypatches: the sky vector of Radiance's daylight-coefficient tools
+// (docs/building-energy.md "Sky-patch vectors"), in Radiance's patch order.
+struct SkyPatchesRequest : SkyQuery, SkyPatchOptions {};
 // One patch (patch 0 is the ground) or the separate sun: its value is the radiance averaged
 // over its solid angle, W/(m2.sr.nm) per wavelength (spectral), Radiance's RGB (3 values) or
 // the luminance in cd/m2 (1 value).
@@ -292,6 +314,56 @@ struct SkyPatchesResult {
   std::vector<double> wavelengths_nm;  // spectral output
   std::vector<SkyPatch> patches;
   std::optional<SkyPatch> sun_source;  // with sun_handling "separate" and the sun up
+  std::optional<AppliedFit> fit;
+};
+
+// GET /v1/skypatches with start: a sky matrix (docs/building-energy.md "Sky matrices"), one sky
+// vector per step from start to end at a place, the instants as IrradianceSeriesRequest's.
+struct SkyMatrixRequest : SkyPatchOptions {
+  std::string model;
+  std::string latitude;   // degrees North, decimal or DMS
+  std::string longitude;  // degrees East, decimal or DMS
+  std::string start;      // ISO 8601 with an offset or Z, or a local time in tz
+  std::string end;
+  std::optional<std::string> tz;    // IANA zone
+  std::optional<std::string> step;  // ISO 8601 duration, "PT1H" (default)
+  std::optional<double> altitude_m;
+  Parameters parameters;  // the model's
+  std::optional<std::string> quality;
+  std::optional<std::string> fit;
+};
+// One step (a column of the matrix).
+struct SkyMatrixStep {
+  std::string time_utc;
+  std::optional<std::string> time_local;  // with tz
+  bool night = false;                     // a column of zeros
+  bool answered = true;                   // false: the model could not answer this sun
+  double sun_zenith_deg = 0;
+  double sun_azimuth_deg = 0;
+  // With sun_handling "separate" and the sun up: the sun as its own source.
+  std::optional<std::vector<double>> sun_value;
+};
+struct SkyMatrixResult {
+  std::string model;
+  std::string model_version;
+  std::string quality, served_quality;
+  std::string scheme;
+  int mf = 1;
+  std::string output;
+  std::string unit;
+  std::vector<double> wavelengths_nm;  // spectral output
+  std::vector<SkyPatch> patches;       // their geometry (value empty), patch 0 the ground
+  std::vector<SkyMatrixStep> steps;
+  std::size_t components = 1;  // 1 (luminance), 3 (rgb) or the wavelengths (spectral)
+  // Patch-major: the value of (patch, step, component) is
+  // values[(patch * steps.size() + step) * components + component].
+  std::vector<double> values;
+  std::int64_t unanswered_steps = 0;
+  std::optional<AppliedFit> fit;
+
+  double value(std::size_t patch, std::size_t step, std::size_t component = 0) const {
+    return values.at((patch * steps.size() + step) * components + component);
+  }
 };
 
 }  // namespace clearsky::client
