@@ -35,7 +35,7 @@ Json schemas() {
     "required": ["against", "p95_relative", "max_relative"],
     "additionalProperties": false,
     "properties": {
-      "against": {"type": "string", "enum": ["reference"]},
+      "against": {"type": "string", "enum": ["reference", "finer_setting"], "description": "reference: the model's reference level; finer_setting: the reference level's own figures, its difference to a finer setting it was checked against (docs/quality-levels.md)."},
       "p95_relative": {"type": "number", "minimum": 0, "nullable": true, "description": "95th percentile of |L - L_ref| / L_ref."},
       "max_relative": {"type": "number", "minimum": 0, "nullable": true, "description": "Its maximum."}
     }

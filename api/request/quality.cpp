@@ -10,11 +10,14 @@ namespace clearsky::api {
 namespace {
 
 // The figures of the level that answered, for its own setting: none when the request changed
-// one of its options.
+// one of its options. A reference with figures of its own was checked against a finer setting
+// (docs/quality-levels.md); one without is the model's own converged setting, 0 against itself.
 nlohmann::json error_json(const RequestQuality& quality, QualityLevel served) {
   if (!quality.overridden.empty()) return nullptr;
   const QualitySetting& row = quality_setting(quality.model_id, served);
-  nlohmann::json out = {{"against", "reference"}};
+  const bool checked_reference =
+      served == QualityLevel::reference && row.max_relative_error.value_or(0.0) > 0.0;
+  nlohmann::json out = {{"against", checked_reference ? "finer_setting" : "reference"}};
   out["p95_relative"] = row.p95_relative_error ? finite(*row.p95_relative_error) : nullptr;
   out["max_relative"] = row.max_relative_error ? finite(*row.max_relative_error) : nullptr;
   return out;

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "tests/server/http/hostile_clients.h"
 #include "tests/server/http/watched_serve_process.h"
 
 namespace clearsky::server {
@@ -31,9 +32,22 @@ std::string level_status(const nlohmann::json& ready, const char* model, const c
 }
 
 TEST(QualityServe, DraftAnswersAndStandardIsTheAnswerWithoutQuality) {
-  WatchedServeProcess server({"--models", "oneal", "--prebuild-three", "false"});
+  // The requests' three wavelengths are configurations of their own, built on first use: a
+  // long build wait lets a loaded machine build them (O'Neal's draft is 64 ray samples) instead
+  // of answering 503.
+  WatchedServeProcess server(
+      {"--models", "oneal", "--prebuild-three", "false", "--build-wait-ms", "120000"});
   ASSERT_GT(server.port(), 0) << server.log();
+  // The start builds (the draft, then the standard) are awaited, not raced, so that no standard
+  // answer below comes from the draft.
+  ASSERT_TRUE(testing::ready(server.port(), std::chrono::seconds(300))) << server.log();
   auto c = server.client(120);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(300);
+  while ((level_status(readiness(c), "oneal", "draft") != "ready" ||
+          level_status(readiness(c), "oneal", "standard") != "ready") &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
   const std::string base = "/v1/radiance?model=oneal" + kView + "&wavelengths=450,550,650";
   const auto draft = c.Get(base + "&quality=draft");
   ASSERT_TRUE(draft);
@@ -41,7 +55,7 @@ TEST(QualityServe, DraftAnswersAndStandardIsTheAnswerWithoutQuality) {
   const auto d = nlohmann::json::parse(draft->body);
   EXPECT_EQ(d["quality"], "draft");
   EXPECT_EQ(d["served_quality"], "draft");
-  EXPECT_EQ(d["quality_setting"]["samples"], 2.0);
+  EXPECT_EQ(d["quality_setting"]["samples"], 64.0);
   EXPECT_TRUE(d["quality_error"]["p95_relative"].is_number());
   EXPECT_EQ(draft->get_header_value("Clearsky-Quality"), "draft");
   EXPECT_EQ(draft->get_header_value("Clearsky-Served-Quality"), "draft");
