@@ -1,6 +1,8 @@
 // GET/POST /v1/rgb: linear sRGB (IEC 61966-2-1 primaries, D65 white, no transfer curve) and
 // luminance (cd/m2) per view. method=spectral (default): the model on the paper's 40-bin grid,
-// integrated against the CIE 1931 matching functions (models/colour). method=three: the
+// integrated against the CIE 1931 matching functions (models/colour); at quality=draft on the
+// short colour grid of api/colour/colour_wavelengths.h instead, whose answer states the
+// wavelengths and the measured colour error (docs/quality-levels.md). method=three: the
 // paper's 3-wavelength method (section "Spectrum sampling"): the model built on the points
 // 440, 550, 680 nm and c = k_c L(lambda_c) (models/colour/three_wavelength_rgb.h).
 // RGB values are radiometric (XYZ with Y in W/(m2.sr)); luminance is 683 Y. Negative
@@ -10,6 +12,7 @@
 #include <limits>
 #include <string>
 
+#include "api/colour/colour_wavelengths.h"
 #include "api/colour/srgb_gamut.h"
 #include "api/colour/xyz_weights.h"
 #include "api/fits/stored_fit_values.h"
@@ -54,6 +57,11 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
     wavelengths = three.grid().nanometres();
     config.wavelengths = three.grid();
   }
+  // The level's colour grid when it is not the model's own (docs/quality-levels.md "Colour
+  // wavelengths").
+  const std::optional<std::vector<double>> colour_nm =
+      method == "spectral" ? colour_wavelengths_nm(quality.level) : std::nullopt;
+  if (colour_nm) wavelengths = colour_nm;
   const ModelOnGrid m = model_on_wavelengths(context.models, factory, std::move(config),
                                              wavelengths, request.requester(), &quality);
   // The answer is built whole: its bytes are reserved before the sky is computed and held
@@ -64,7 +72,8 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
 
   nlohmann::json samples = nlohmann::json::array();
   std::size_t clipped_samples = 0;
-  const XyzWeights xyz(m.model->wavelengths());
+  const XyzWeights xyz = colour_nm ? XyzWeights::interpolating(m.model->wavelengths())
+                                   : XyzWeights(m.model->wavelengths());
   for (std::size_t v = 0; v < batch.size(); ++v) {
     const auto spectrum = batch.spectrum(v);
     LinearSrgb c;
@@ -94,7 +103,21 @@ ApiResponse rgb(const ApiContext& context, const ApiRequest& request) {
                          {"gamut_mapping", "negative components clipped to 0"},
                          {"gamut_clipped_samples", clipped_samples},
                          {"samples", std::move(samples)}};
-  if (method == "spectral") {
+  if (colour_nm) {
+    // The spectrum between the colour grid's wavelengths is interpolated and held beyond them
+    // over the whole table of the matching functions (XyzWeights::interpolating).
+    const auto& nm = m.model->wavelengths().nanometres();
+    body["integrated_range_nm"] = {360.0, 830.0};
+    body["colour_wavelengths_nm"] = nm;
+    const std::optional<ColourError> error =
+        quality.overridden.empty() ? draft_colour_error(factory.descriptor->id) : std::nullopt;
+    body["colour_error"] = error ? nlohmann::json{{"against", "40 wavelengths"},
+                                                  {"measure", "CIE Delta E 2000 over the skydome"},
+                                                  {"median", error->median},
+                                                  {"p95", error->p95},
+                                                  {"max", error->max}}
+                                 : nlohmann::json(nullptr);
+  } else if (method == "spectral") {
     // A model with a narrower range than the grid (Hosek: 320..720 nm) contributes nothing
     // beyond it; say so instead of presenting a partial integral as the full CIE colour.
     const WavelengthGrid& grid = m.model->wavelengths();

@@ -207,6 +207,8 @@ Json schemas() {
       "gamut_clipped_samples": {"type": "integer", "minimum": 0, "description": "How many samples have gamut_clipped true."},
       "integrated_range_nm": {"type": "array", "minItems": 2, "maxItems": 2, "items": {"type": "number"}, "description": "method=spectral: the wavelengths the CIE integral covers."},
       "warning": {"type": "string", "description": "When the model answers only part of the grid (e.g. Hosek up to 720 nm): the missing light counts as zero."},
+      "colour_wavelengths_nm": {"type": "array", "items": {"type": "number"}, "description": "quality=draft, method=spectral only: the wavelengths the colour was computed on (docs/quality-levels.md \"Colour wavelengths\")."},
+      "colour_error": {"type": "object", "nullable": true, "properties": {"against": {"type": "string"}, "measure": {"type": "string"}, "median": {"type": "number"}, "p95": {"type": "number"}, "max": {"type": "number"}}, "description": "quality=draft, method=spectral only: the draft colour's measured CIE Delta E 2000 against 40 wavelengths over the skydome; null when the request overrode one of the level's options."},
       "samples": {"type": "array", "items": {"$ref": "#/components/schemas/RgbSample"}}
     }
   },

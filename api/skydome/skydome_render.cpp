@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "api/colour/colour_wavelengths.h"
 #include "api/colour/display_tone_mapping.h"
 #include "api/colour/srgb_gamut.h"
 #include "api/colour/xyz_weights.h"
@@ -48,6 +49,8 @@ struct SkydomeRender::Settings {
   ToneCurve tone_curve = ToneCurve::aces;
   std::string projection_name;
   std::unique_ptr<XyzWeights> xyz;
+  // The level's colour grid when it is not the model's own (api/colour/colour_wavelengths.h).
+  std::optional<std::vector<double>> colour_wavelengths_nm;
   SkydomeOptions options;
   // The model's direct normal irradiance, W/(m2.nm) on its grid, when it has one for this sun
   // above the horizon (the header's sun attributes; the disc).
@@ -399,6 +402,10 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
   if (s->method == "three") {
     wavelengths = three_wavelength_method().grid().nanometres();
     config.wavelengths = three_wavelength_method().grid();
+  } else if (s->channels != "spectral") {
+    // Colour only: the level's colour grid (docs/quality-levels.md "Colour wavelengths").
+    s->colour_wavelengths_nm = colour_wavelengths_nm(s->quality.level);
+    if (s->colour_wavelengths_nm) wavelengths = s->colour_wavelengths_nm;
   }
   const Projection projection = s->projection_name == "fisheye"   ? Projection::fisheye
                                 : s->projection_name == "latlong" ? Projection::latlong
@@ -414,7 +421,9 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
   zenith.azimuth_deg.push_back(0.0);
   checked_sky_radiance(context.models, s->m.model, s->sun, s->viewpoint, zenith);
   s->sun_state = prepare_sun(context.models, s->m.model, s->sun);
-  s->xyz = std::make_unique<XyzWeights>(s->m.model->wavelengths());
+  s->xyz = s->colour_wavelengths_nm
+               ? std::make_unique<XyzWeights>(XyzWeights::interpolating(s->m.model->wavelengths()))
+               : std::make_unique<XyzWeights>(s->m.model->wavelengths());
   const SkyModel& model = *s->m.model;
   // The sun's light, for the disc and the header: only while some of the disc is above the
   // horizon (the ground hides the rest).
@@ -532,6 +541,20 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
   if (s.channels == "rgb") {
     Imf::addChromaticities(header, Imf::Chromaticities());  // Rec. 709 primaries = sRGB, D65
     header.insert("clearskyColourMethod", Imf::StringAttribute(s.method));
+  }
+  if (s.colour_wavelengths_nm) {
+    // A draft colour: the wavelengths it was computed on and its error against the
+    // 40-wavelength colour (docs/quality-levels.md "Colour wavelengths"). Standard and
+    // reference colours are on the model's grid, and their files are unchanged.
+    header.insert(
+        "clearskyColourWavelengthsNm",
+        Imf::StringAttribute(wavelength_list_text(s.m.model->wavelengths().nanometres())));
+    header.insert(
+        "clearskyColourError",
+        Imf::StringAttribute(colour_error_text(
+            s.quality.overridden.empty() ? draft_colour_error(s.model_id) : std::nullopt)));
+  }
+  if (s.channels == "rgb") {
     header.insert("clearskyGamutMapping", Imf::StringAttribute(kGamutMapping));
     const bool photometric = s.options.units == PixelUnits::photometric;
     header.insert("clearskyUnits",

@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include "api/colour/colour_wavelengths.h"
+#include "api/colour/xyz_weights.h"
 #include "models/colour/three_wavelength_rgb.h"
 #include "models/core/numeric.h"
 #include "tests/support/place_time_cases.h"
@@ -279,6 +281,33 @@ TEST_F(Handlers, RgbSpectralAndThreeWavelengthAgreeOnLuminance) {
               method.k()[1] * TestSky::radiance(1.0, 550.0, view, sun_dir), 1e-12);
   // Both estimate the same luminance, within the method's approximation.
   EXPECT_NEAR(t["luminance_cd_m2"].get<double>() / s["luminance_cd_m2"].get<double>(), 1.0, 0.5);
+}
+
+// quality=draft computes the colour on the 9 colour wavelengths with the interpolating weights
+// and says so; standard stays the 40-wavelength colour without the new members
+// (docs/quality-levels.md "Colour wavelengths").
+TEST_F(Handlers, RgbDraftStatesItsColourWavelengths) {
+  const auto draft =
+      call(rgb, "GET", "/v1/rgb",
+           with({{"view_zenith", "20"}, {"view_azimuth", "90"}, {"quality", "draft"}}));
+  const auto standard =
+      call(rgb, "GET", "/v1/rgb",
+           with({{"view_zenith", "20"}, {"view_azimuth", "90"}, {"quality", "standard"}}));
+  ASSERT_EQ(draft.status, 200) << draft.body;
+  ASSERT_EQ(standard.status, 200) << standard.body;
+  const auto d = json_of(draft);
+  EXPECT_EQ(d["colour_wavelengths_nm"].get<std::vector<double>>(), kDraftColourWavelengthsNm);
+  EXPECT_TRUE(d["colour_error"].is_null());  // the test model has no measured figure
+  EXPECT_FALSE(json_of(standard).contains("colour_wavelengths_nm"));
+  const SkyDirection view{degrees_to_radians(20.0), degrees_to_radians(90.0)};
+  const SkyDirection sun_dir{degrees_to_radians(30.0), degrees_to_radians(120.0)};
+  const auto grid = WavelengthGrid::points(kDraftColourWavelengthsNm);
+  Spectrum l(grid.size());
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    l[i] = TestSky::radiance(1.0, grid[i], view, sun_dir);
+  const Xyz xyz = XyzWeights::interpolating(grid).xyz(l.values());
+  EXPECT_NEAR(d["samples"][0]["luminance_cd_m2"].get<double>(), kMaxLuminousEfficacy * xyz.y,
+              1e-9 * kMaxLuminousEfficacy * xyz.y);
 }
 
 TEST_F(Handlers, ModelsListsDescriptorAndState) {
