@@ -251,6 +251,20 @@ void sun_transmittance_at(const ColumnContext& c, Vec3 p, std::span<double> out)
                                out);
 }
 
+// The line of a column through its first two nodes: node k is at p0 + (k step) d. Both layouts
+// space a column's nodes evenly along a straight axis (nishita96_tables.h), so the two nodes
+// give the whole column.
+struct ColumnLine {
+  Vec3 p0;
+  Vec3 d;         // unit direction of the axis
+  double step_m;  // node spacing along d
+};
+
+ColumnLine column_line(Vec3 p0, Vec3 p1) {
+  const double step_m = length(p1 - p0);
+  return {p0, (1.0 / step_m) * (p1 - p0), step_m};
+}
+
 // One column of a table: nodes k = 0 .. nodes - 1 along the axis, from p0 in direction d
 // with spacing step; the radiance arriving at each node from -d.
 void build_column(const ColumnContext& c, SamplingTable& table, int i, int j) {
@@ -258,10 +272,8 @@ void build_column(const ColumnContext& c, SamplingTable& table, int i, int j) {
   const std::size_t n = a.grid.size();
   const double earth = a.parameters.earth_radius_m;
   const double top = a.parameters.top_radius_m;
-  const Vec3 p0 = table.node_position(i, j, 0);
-  const Vec3 p1 = table.node_position(i, j, 1);
-  const double step = length(p1 - p0);
-  const Vec3 d = (1.0 / step) * (p1 - p0);
+  const auto [p0, d, step] =
+      column_line(table.node_position(i, j, 0), table.node_position(i, j, 1));
   double start_t;
   double end_t;
   if (dot(p0, p0) >= top * top) {
@@ -402,10 +414,8 @@ void build_grazing_column(const ColumnContext& c, SamplingTable& table, int i, i
   const std::size_t n = a.grid.size();
   const double earth = a.parameters.earth_radius_m;
   const double top = a.parameters.top_radius_m;
-  const Vec3 p0 = table.grazing_node_position(i, j, 0);
-  const Vec3 p1 = table.grazing_node_position(i, j, 1);
-  const double step = length(p1 - p0);
-  const Vec3 d = (1.0 / step) * (p1 - p0);
+  const auto [p0, d, step] =
+      column_line(table.grazing_node_position(i, j, 0), table.grazing_node_position(i, j, 1));
   const int last = table.nodes() - 1;
   const double b = dot(p0, d);
   const double cc = dot(p0, p0);
