@@ -459,11 +459,8 @@ void build_grazing_column(const ColumnContext& c, SamplingTable& table, int i, i
 
 }  // namespace
 
-std::shared_ptr<const SunTables> build_sun_tables(const Nishita93Tables& optical_lengths,
-                                                  const AtmosphereSpectra& atmosphere,
-                                                  double sun_zenith_rad, int nodes,
-                                                  int phase_theta_cells,
-                                                  const PrecomputeContext& context) {
+std::vector<SamplingTable> empty_sampling_tables(const AtmosphereSpectra& atmosphere,
+                                                 double sun_zenith_rad, int nodes) {
   const auto angles = sampling_angles_rad(sun_zenith_rad);
   std::vector<SamplingTable> tables;
   for (std::size_t k = 0; k < angles.size(); ++k) {
@@ -472,6 +469,15 @@ std::shared_ptr<const SunTables> build_sun_tables(const Nishita93Tables& optical
                         atmosphere.parameters.top_radius_m, nodes, atmosphere.grid.size(),
                         k == 2 || k == 3);
   }
+  return tables;
+}
+
+std::shared_ptr<const SunTables> build_sun_tables(const Nishita93Tables& optical_lengths,
+                                                  const AtmosphereSpectra& atmosphere,
+                                                  double sun_zenith_rad, int nodes,
+                                                  int phase_theta_cells,
+                                                  const PrecomputeContext& context) {
+  std::vector<SamplingTable> tables = empty_sampling_tables(atmosphere, sun_zenith_rad, nodes);
   const ColumnContext c{
       optical_lengths, atmosphere, direction_of_angle(sun_zenith_rad),
       0.5 * (atmosphere.parameters.top_radius_m - atmosphere.parameters.earth_radius_m)};
