@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -117,6 +118,10 @@ struct ApiContext {
   // The quality level of a sky request that does not give `quality` (serve --quality;
   // docs/quality-levels.md).
   QualityLevel default_quality = QualityLevel::standard;
+  // Per model id, the background pass over the day's per-sun states: buckets built and their
+  // total (the server's DaySunStates, docs/tables-and-memory.md "The day's per-sun states"),
+  // shown by GET /readyz; empty: no pass.
+  std::function<std::map<std::string, std::pair<std::size_t, std::size_t>>()> day_sun_states = {};
 };
 
 // The request's parameters: the query for GET; for POST, the JSON body's scalar members (the

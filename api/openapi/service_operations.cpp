@@ -40,6 +40,15 @@ Area service_area() {
                 "progress": {"type": "number", "minimum": 0, "maximum": 1}
               }
             }
+          },
+          "day_sun_states": {
+            "type": "object",
+            "description": "Only for a model with per-sun states in sun buckets (Haber; Nishita96's draft) among the configurations built at start: the background pass over every bucket from zenith 0 to the model's dark threshold, lowest first, each stored in the disk table cache; readiness does not wait for it (docs/tables-and-memory.md).",
+            "required": ["built", "total"],
+            "properties": {
+              "built": {"type": "integer", "minimum": 0},
+              "total": {"type": "integer", "minimum": 0}
+            }
           }
         }
       }

@@ -22,7 +22,9 @@ ApiResponse healthz(const ApiContext&, const ApiRequest& request) {
 
 // 200 when the tables built at start are ready (each model's draft and standard, or serve
 // --prebuild's list; docs/quality-levels.md), else 503 with Retry-After; both with each model's
-// state (its default tables) and the state of each quality level built or asked for. A draining server (SIGTERM, docs/deploy.md "Graceful drain") is not
+// state (its default tables), the state of each quality level built or asked for, and the
+// background pass over its day's per-sun states (buckets built / total) where it has one. A
+// draining server (SIGTERM, docs/deploy.md "Graceful drain") is not
 // ready whatever its tables: load balancers stop sending it requests.
 ApiResponse readyz(const ApiContext& context, const ApiRequest& request) {
   no_parameters(request);
@@ -32,6 +34,9 @@ ApiResponse readyz(const ApiContext& context, const ApiRequest& request) {
                                    "takes no new ones"));
   nlohmann::json models = nlohmann::json::object();
   const bool ready = context.models.start_builds_ready();
+  const auto day_sun_states = context.day_sun_states
+                                  ? context.day_sun_states()
+                                  : std::map<std::string, std::pair<std::size_t, std::size_t>>{};
   for (const ModelFactory& f : context.models.factories()) {
     const ModelState state = context.models.default_state(f);
     nlohmann::json levels = nlohmann::json::object();
@@ -47,6 +52,11 @@ ApiResponse readyz(const ApiContext& context, const ApiRequest& request) {
     models[f.descriptor->id] = {{"status", to_string(state.status)},
                                 {"progress", finite(state.progress)},
                                 {"levels", std::move(levels)}};
+    // The day's per-sun states, built in the background; readiness does not wait for them.
+    if (const auto it = day_sun_states.find(f.descriptor->id); it != day_sun_states.end()) {
+      models[f.descriptor->id]["day_sun_states"] = {{"built", it->second.first},
+                                                    {"total", it->second.second}};
+    }
   }
   if (ready) return json_response(nlohmann::json{{"status", "ready"}, {"models", models}});
   ApiResponse response = error_response(ApiError(

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "models/core/fast_exp.h"
 #include "models/core/invalid_input.h"
 #include "models/nishita93/nishita93_functions.h"
+#include "models/nishita96/nishita96_sun_tables_blob.h"
 
 namespace clearsky {
 
@@ -83,7 +85,8 @@ ModelDescriptor make_descriptor() {
                .min_value = 0.0,
                .max_value = 5.0},
               {.name = "sun_state_cache_size",
-               .description = "per-sun table sets kept in memory (24 MB each at 33 nodes)",
+               .description = "per-sun table sets kept in memory (24 MB each at 33 nodes, up to 47 MB "
+                              "near the horizon)",
                .default_value = 8,
                .min_value = 1,
                .max_value = 256,
@@ -171,10 +174,31 @@ std::shared_ptr<const SunState> Nishita96Model::compute_sun_state(
   std::ostringstream key;
   key.precision(17);
   key << cache_prefix_ << ";sun_zenith_rad=" << zenith;
-  auto tables = cache_->get_or_build(key.str(), [&] {
-    return nishita96::build_sun_tables(optical_lengths_, atmosphere(), zenith, table_nodes_,
-                                       phase_theta_cells_, context);
-  });
+  // Single flight in memory; on a miss, for a bucketed configuration, the disk table cache first
+  // (the key names the blob format, the model version, the configuration with its quality
+  // options, and the bucket's zenith), then the computation, stored for the next process
+  // (nishita96_sun_tables_blob.h). An exact sun (bucket width 0) is not stored: its keys are a
+  // continuum, 24 to 47 MB each, which a client could use to fill the disk
+  // (docs/tables-and-memory.md "Per-sun states").
+  auto tables =
+      cache_->get_or_build(key.str(), [&]() -> std::shared_ptr<const nishita96::SunTables> {
+        const bool persist = context.cache != nullptr && bucket_width_rad_ > 0.0;
+        const std::string disk_key = "nishita96-sun-tables/" +
+                                     std::to_string(nishita96::kSunTablesBlobVersion) + "/" +
+                                     key.str();
+        if (persist) {
+          if (const std::optional<std::string> bytes = context.cache->load(disk_key)) {
+            if (auto loaded = nishita96::sun_tables_from_bytes(*bytes, atmosphere(), zenith,
+                                                               table_nodes_, phase_theta_cells_))
+              return loaded;
+          }
+        }
+        auto built = nishita96::build_sun_tables(optical_lengths_, atmosphere(), zenith,
+                                                 table_nodes_, phase_theta_cells_, context);
+        ++tables_computed_;
+        if (persist) context.cache->store(disk_key, nishita96::sun_tables_to_bytes(*built));
+        return built;
+      });
   return std::make_shared<const Nishita96SunState>(sun, std::move(tables));
 }
 

@@ -20,7 +20,7 @@
 // | table_nodes           | -    | 33      | [5, 65]         | odd; nodes per axis of each sampling table (32^3 voxels) |
 // | phase_theta_cells     | -    | 32      | [4, 256]        | theta cells of the phase integration (x 2 in phi)        |
 // | sun_zenith_bucket_deg | deg  | 0       | [0, 5]          | per-sun tables shared within this width (0: exact)       |
-// | sun_state_cache_size  | -    | 8       | [1, 256]        | per-sun table sets kept (24 MB each at 33 nodes)         |
+// | sun_state_cache_size  | -    | 8       | [1, 256]        | per-sun table sets kept (24 to 47 MB each at 33 nodes)   |
 // | alpha                 | -    | 0.8     | [0, 4]          | Angstrom exponent of the aerosols (atmosphere)           |
 // | beta                  | -    | 0.04    | [0, 2]          | aerosol optical depth at 1 um (atmosphere)               |
 // | g                     | -    | 0.7     | [-0.8, 0.8]     | Cornette-Shanks asymmetry (atmosphere)                   |
@@ -36,6 +36,7 @@
 // underestimated (at 4 cells by up to 23% at g = 0.7).
 #pragma once
 
+#include <atomic>
 #include <memory>
 
 #include "models/core/model_factory.h"
@@ -83,7 +84,8 @@ class Nishita96Model final : public SkyModel {
   std::size_t table_bytes() const override { return optical_lengths_.memory_bytes(); }
   const Nishita93Tables& optical_lengths() const { return optical_lengths_; }
   SunStateCacheStats cache_stats() const { return cache_->stats(); }
-  std::size_t sun_states_built() const override { return cache_->stats().builds; }
+  // Per-sun table sets computed (not loaded from the disk table cache).
+  std::size_t sun_states_built() const override { return tables_computed_.load(); }
 
   // Radiance of the chosen orders for ground-or-above views inside the atmosphere (the
   // checked query sky_radiance() returns single_and_double).
@@ -110,6 +112,7 @@ class Nishita96Model final : public SkyModel {
   std::string cache_prefix_;
   // The one shared, internally synchronised piece of the model: per-sun tables by bucket.
   std::unique_ptr<SunStateCache<nishita96::SunTables>> cache_;
+  mutable std::atomic<std::size_t> tables_computed_{0};
 };
 
 }  // namespace clearsky

@@ -251,6 +251,20 @@ void sun_transmittance_at(const ColumnContext& c, Vec3 p, std::span<double> out)
                                out);
 }
 
+// The line of a column through its first two nodes: node k is at p0 + (k step) d. Both layouts
+// space a column's nodes evenly along a straight axis (nishita96_tables.h), so the two nodes
+// give the whole column.
+struct ColumnLine {
+  Vec3 p0;
+  Vec3 d;         // unit direction of the axis
+  double step_m;  // node spacing along d
+};
+
+ColumnLine column_line(Vec3 p0, Vec3 p1) {
+  const double step_m = length(p1 - p0);
+  return {p0, (1.0 / step_m) * (p1 - p0), step_m};
+}
+
 // One column of a table: nodes k = 0 .. nodes - 1 along the axis, from p0 in direction d
 // with spacing step; the radiance arriving at each node from -d.
 void build_column(const ColumnContext& c, SamplingTable& table, int i, int j) {
@@ -258,10 +272,8 @@ void build_column(const ColumnContext& c, SamplingTable& table, int i, int j) {
   const std::size_t n = a.grid.size();
   const double earth = a.parameters.earth_radius_m;
   const double top = a.parameters.top_radius_m;
-  const Vec3 p0 = table.node_position(i, j, 0);
-  const Vec3 p1 = table.node_position(i, j, 1);
-  const double step = length(p1 - p0);
-  const Vec3 d = (1.0 / step) * (p1 - p0);
+  const auto [p0, d, step] =
+      column_line(table.node_position(i, j, 0), table.node_position(i, j, 1));
   double start_t;
   double end_t;
   if (dot(p0, p0) >= top * top) {
@@ -402,10 +414,8 @@ void build_grazing_column(const ColumnContext& c, SamplingTable& table, int i, i
   const std::size_t n = a.grid.size();
   const double earth = a.parameters.earth_radius_m;
   const double top = a.parameters.top_radius_m;
-  const Vec3 p0 = table.grazing_node_position(i, j, 0);
-  const Vec3 p1 = table.grazing_node_position(i, j, 1);
-  const double step = length(p1 - p0);
-  const Vec3 d = (1.0 / step) * (p1 - p0);
+  const auto [p0, d, step] =
+      column_line(table.grazing_node_position(i, j, 0), table.grazing_node_position(i, j, 1));
   const int last = table.nodes() - 1;
   const double b = dot(p0, d);
   const double cc = dot(p0, p0);
@@ -449,11 +459,8 @@ void build_grazing_column(const ColumnContext& c, SamplingTable& table, int i, i
 
 }  // namespace
 
-std::shared_ptr<const SunTables> build_sun_tables(const Nishita93Tables& optical_lengths,
-                                                  const AtmosphereSpectra& atmosphere,
-                                                  double sun_zenith_rad, int nodes,
-                                                  int phase_theta_cells,
-                                                  const PrecomputeContext& context) {
+std::vector<SamplingTable> empty_sampling_tables(const AtmosphereSpectra& atmosphere,
+                                                 double sun_zenith_rad, int nodes) {
   const auto angles = sampling_angles_rad(sun_zenith_rad);
   std::vector<SamplingTable> tables;
   for (std::size_t k = 0; k < angles.size(); ++k) {
@@ -462,6 +469,15 @@ std::shared_ptr<const SunTables> build_sun_tables(const Nishita93Tables& optical
                         atmosphere.parameters.top_radius_m, nodes, atmosphere.grid.size(),
                         k == 2 || k == 3);
   }
+  return tables;
+}
+
+std::shared_ptr<const SunTables> build_sun_tables(const Nishita93Tables& optical_lengths,
+                                                  const AtmosphereSpectra& atmosphere,
+                                                  double sun_zenith_rad, int nodes,
+                                                  int phase_theta_cells,
+                                                  const PrecomputeContext& context) {
+  std::vector<SamplingTable> tables = empty_sampling_tables(atmosphere, sun_zenith_rad, nodes);
   const ColumnContext c{
       optical_lengths, atmosphere, direction_of_angle(sun_zenith_rad),
       0.5 * (atmosphere.parameters.top_radius_m - atmosphere.parameters.earth_radius_m)};

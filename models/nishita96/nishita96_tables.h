@@ -74,6 +74,7 @@ class SamplingTable {
 
   double angle_rad() const { return angle_rad_; }
   int nodes() const { return nodes_; }
+  std::size_t wavelengths() const { return wavelengths_; }
   int grazing_across_nodes() const { return (nodes_ - 1) * kGrazingAcrossRefinement + 1; }
   // Weight of the grazing layout in the lookups: 0 (sheared only), 1 (grazing only) or, in the
   // blend band, in between.
@@ -90,6 +91,12 @@ class SamplingTable {
   std::span<float> node(int i, int j, int k);
   std::span<const float> node(int i, int j, int k) const;
   std::span<float> grazing_node(int i, int j, int k);
+  // Every stored value of each layout (empty for a layout the table does not have), in storage
+  // order: what the disk form of a table set copies (nishita96_sun_tables_blob.h).
+  std::span<float> sheared_values() { return values_; }
+  std::span<const float> sheared_values() const { return values_; }
+  std::span<float> grazing_values() { return grazing_values_; }
+  std::span<const float> grazing_values() const { return grazing_values_; }
   std::size_t memory_bytes() const {
     return (values_.size() + grazing_values_.size()) * sizeof(float);
   }
@@ -140,6 +147,11 @@ class SunTables {
   std::array<Vec3, kSamplingDirections> directions_;
   PhaseBins phase_bins_;
 };
+
+// The 8 tables of a sun zenith, laid out with every value 0: what build_sun_tables fills, and
+// what a table set read back from its disk form is checked against.
+std::vector<SamplingTable> empty_sampling_tables(const AtmosphereSpectra& atmosphere,
+                                                 double sun_zenith_rad, int nodes);
 
 // Builds the 8 tables on all workers of `context` (cancellable).
 std::shared_ptr<const SunTables> build_sun_tables(const Nishita93Tables& optical_lengths,

@@ -28,6 +28,7 @@
 #include "server/http/http_server.h"
 #include "server/memory/heap_bounds.h"
 #include "server/scheduler/scheduler.h"
+#include "server/tables/day_sun_states.h"
 #include "server/tables/start_builds.h"
 #include "storage/repositories/evaluation_run_repository.h"
 
@@ -200,11 +201,16 @@ void run_server(const server::ServerConfig& config, const std::string& software_
     metrics.observe_build(id, seconds, from_cache);
   });
   // Drafts first, then the defaults, or exactly --prebuild (docs/quality-levels.md).
+  std::vector<std::pair<const ModelFactory*, ModelConfig>> builds;
   try {
-    tables.start_builds(server::start_builds(tables.factories(), config.prebuild));
+    builds = server::start_builds(tables.factories(), config.prebuild);
+    tables.start_builds(builds);
   } catch (const std::invalid_argument& e) {
     throw CLI::ValidationError("--prebuild", e.what());
   }
+  // The day's per-sun states of those configurations, in the background once their tables are
+  // ready; stopped before the tables go (docs/tables-and-memory.md "The day's per-sun states").
+  server::DaySunStates day_sun_states(tables, builds, &cache);
   if (config.prebuild_three) {
     // The paper's 3-wavelength colour method needs each model on its 3-point grid.
     const ThreeWavelengthRgb three;
@@ -223,6 +229,11 @@ void run_server(const server::ServerConfig& config, const std::string& software_
         "no token (--token-file, --token or CLEARSKY_TOKEN): write endpoints are disabled");
   server::HttpServer http(config, tables, metrics);
   if (services) http.add_data_services(services->data(), auth);
+  http.set_day_sun_states([&day_sun_states] {
+    std::map<std::string, std::pair<std::size_t, std::size_t>> progress;
+    for (const auto& [id, p] : day_sun_states.progress()) progress[id] = {p.built, p.total};
+    return progress;
+  });
   const int port = http.bind();
   spdlog::info(
       "clearsky serving on http://{}:{} (role {}, at most {} workers, {} models, cache {}, "

@@ -17,8 +17,11 @@
 // Thread-safety: start()/stop() from one controlling thread; requests run on the workers.
 #pragma once
 
+#include <functional>
+#include <map>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "api/http/answer_memory_budget.h"
 #include "api/http/api_types.h"
@@ -49,6 +52,12 @@ class HttpServer {
   // token of the write routes; both must outlive the server. Call before bind(). Without
   // them (a query replica) the data endpoints, writes included, answer 404 no_database.
   void add_data_services(const api::DataServices& services, const WriteAuthorizer& auth);
+  // The progress /readyz shows of the background pass over the day's per-sun states
+  // (api::ApiContext::day_sun_states). Call before bind().
+  void set_day_sun_states(
+      std::function<std::map<std::string, std::pair<std::size_t, std::size_t>>()> progress) {
+    context_.day_sun_states = std::move(progress);
+  }
 
   // Binds config.host:config.port (port 0: a free port); returns the bound port. Throws
   // std::runtime_error when it cannot bind.
