@@ -204,19 +204,13 @@ std::optional<OpticalLengths> Nishita93Tables::sun_optical_lengths(double r_m, d
   // cosine -mu_s). Both halves from the tangent point are the horizontal ray there, so
   //   L(r, mu_s) = 2 H(c) - L(r, -mu_s),
   // exact geometry, equal to the horizontal ray's at mu_s = 0 (continuous through the horizon).
-  // Where the cylinders resolve the lit part below the sphere (a cylinder between the ground
-  // and the sphere, only with many cylinders) the against-axis table is read instead.
+  // The against-axis table is not read here: its entries change like exp(-(c - R) / H_R) with
+  // the tangent radius c, which a linear interpolation between cylinders R_top / (n_c - 1)
+  // apart (12.5 km at 512 cylinders, more than a scale height) cannot follow; where it was read
+  // (cylinders between the ground and the point's sphere, from 128 cylinders on) twilight skies
+  // did not converge in the cylinder count (docs/performance.md "Findings"). H(c) is read along
+  // the spheres, linear in Rayleigh density, which follows that dependence.
   const double c = r * sin_s;
-  const double max_v = cylinder_count_ - 1.0;
-  const int i = std::min(static_cast<int>(u), sphere_count_ - 2);
-  const int last_below = std::max(
-      0, static_cast<int>(
-             std::ceil(max_v * sphere_radius_m_[static_cast<std::size_t>(i + 1)] / top_radius_m_)) -
-             1);
-  if (top_radius_m_ * last_below / max_v > std::max(c, bottom_radius_m_) &&
-      max_v * sphere_radius_m_[static_cast<std::size_t>(i)] * sin_s / top_radius_m_ <= last_below)
-    return OpticalLengths{lookup(against_rayleigh_m_, u, sin_s, abs_mu_s, true),
-                          lookup(against_mie_m_, u, sin_s, abs_mu_s, true)};
   const OpticalLengths horizontal = horizontal_lengths(c);
   return OpticalLengths{2.0 * horizontal.rayleigh_m - along.rayleigh_m,
                         2.0 * horizontal.mie_m - along.mie_m};

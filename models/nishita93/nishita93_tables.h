@@ -15,7 +15,8 @@
 //
 // Beyond the study: the against-axis tables follow the ray through its tangent point (the
 // study's code reused the near intersections on the way up, a defect it never exercised with
-// the sun above the horizon); rays that meet the ground are shadowed (lookups report it), and
+// the sun above the horizon), but no lookup reads them any more (sun_optical_lengths: they do
+// not converge in the cylinder count; node() still reports them); rays that meet the ground are shadowed (lookups report it), and
 // their table entries hold the ground-grazing chord so that bilinear lookups next to the
 // shadow stay monotone. Immutable after build(); thread-safe.
 #pragma once

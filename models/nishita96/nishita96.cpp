@@ -23,7 +23,7 @@ ModelDescriptor make_descriptor() {
   return ModelDescriptor{
       .id = "nishita96",
       .name = "Nishita96",
-      .version = "1",
+      .version = "2",
       .citation =
           "T. Nishita, Y. Dobashi, K. Kaneda, H. Yamashita. Display Method of the Sky "
           "Color Taking into Account Multiple Scattering. Pacific Graphics 1996, pages "
