@@ -115,7 +115,7 @@ TEST(OperationDocs, EveryResponseBodyIsANamedSchema) {
 TEST(OperationDocs, WritesNeedTheBearerToken) {
   const std::set<std::string> writes = {"importDataset", "deleteDataset", "createEvaluation",
                                         "createFit",     "createJob",     "deleteJob",
-                                        "pauseJob",      "resumeJob"};
+                                        "pauseJob",      "resumeJob",     "uploadAerosols"};
   for (const char* id : kOperationIds) {
     const Json& operation = *operation_doc(id);
     if (writes.contains(id)) {
