@@ -27,6 +27,8 @@ Area datasets_area();
 Area evaluations_area();
 // atmosphere fits (fits_operations.cpp).
 Area fits_area();
+// users' AERONET inversions for measured_aerosols (aerosols_operations.cpp).
+Area aerosols_area();
 // Error, the shared responses, headers, parameters and the bearer scheme (openapi_common.cpp).
 Json common_components();
 

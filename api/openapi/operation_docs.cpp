@@ -31,7 +31,7 @@ const Content& content() {
     Content c;
     for (const openapi::Area& area :
          {openapi::service_area(), openapi::sky_area(), openapi::datasets_area(),
-          openapi::evaluations_area(), openapi::fits_area()}) {
+          openapi::evaluations_area(), openapi::fits_area(), openapi::aerosols_area()}) {
       merge_members(c.operations, area.operations, "operation");
       for (const auto& [kind, members] : area.components.items()) {
         if (!c.components.contains(kind)) c.components[kind] = Json::object();
@@ -74,6 +74,7 @@ nlohmann::ordered_json openapi_tags() {
   {"name": "imports", "description": "Background dataset imports"},
   {"name": "evaluations", "description": "Runs of models against a dataset (RMSE)"},
   {"name": "fits", "description": "Atmosphere parameters fitted to a dataset"},
+  {"name": "aerosols", "description": "Users' AERONET inversions for measured_aerosols"},
   {"name": "jobs", "description": "Scheduled evaluations (cron, UTC)"},
   {"name": "operations", "description": "Liveness, readiness, metrics and this document"}
 ])json");

@@ -39,6 +39,11 @@ ApiResponse list_fits_route(const ApiContext& context, const ApiRequest& request
 ApiResponse create_fit_route(const ApiContext& context, const ApiRequest& request);
 ApiResponse get_fit_route(const ApiContext& context, const ApiRequest& request);
 
+// aerosol_routes.cpp
+ApiResponse list_aerosols_route(const ApiContext& context, const ApiRequest& request);
+ApiResponse upload_aerosols_route(const ApiContext& context, const ApiRequest& request);
+ApiResponse get_aerosols_route(const ApiContext& context, const ApiRequest& request);
+
 // job_routes.cpp
 ApiResponse list_jobs_route(const ApiContext& context, const ApiRequest& request);
 ApiResponse create_job_route(const ApiContext& context, const ApiRequest& request);

@@ -3,6 +3,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <optional>
 
@@ -14,6 +15,9 @@ namespace clearsky::aeronet {
 namespace {
 
 constexpr double kMissing = -999.0;
+// Fewer angles than this cannot resolve the forward peak the tables interpolate (AERONET
+// publishes 83 per wavelength, models/data/aeronet).
+constexpr std::size_t kMinimumAngles = 10;
 
 [[noreturn]] void refuse(std::size_t line, const std::string& reason) {
   throw InvalidInput("inversion", "line " + std::to_string(line) + ": " + reason);
@@ -51,6 +55,33 @@ std::optional<double> to_number(std::string_view s) {
   const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (error != std::errc{} || end != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
   return v;
+}
+
+// from_chars reads "nan", "inf" and "infinity" (any case) and overflowing decimals as numbers
+// that are not finite; the refusal says so rather than "not a number" for a number that overflows.
+bool non_finite(std::string_view s) {
+  double v = 0.0;
+  const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (end != s.data() + s.size() || s.empty()) return false;
+  return error == std::errc::result_out_of_range || (error == std::errc{} && !std::isfinite(v));
+}
+
+// "dd:mm:yyyy" (AERONET writes the retrieval day with colons whatever the column name says) to
+// a sortable yyyymmdd, else nothing.
+std::optional<int> day_number(std::string_view s) {
+  if (s.size() != 10 || s[2] != ':' || s[5] != ':') return std::nullopt;
+  const auto d = to_number(s.substr(0, 2));
+  const auto m = to_number(s.substr(3, 2));
+  const auto y = to_number(s.substr(6, 4));
+  if (!d || !m || !y || *d < 1 || *d > 31 || *m < 1 || *m > 12 || *y < 1900) return std::nullopt;
+  return static_cast<int>(*y) * 10000 + static_cast<int>(*m) * 100 + static_cast<int>(*d);
+}
+
+// yyyymmdd to ISO 8601 "yyyy-mm-dd".
+std::string iso_day(int day) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%04d-%02d-%02d", day / 10000, day / 100 % 100, day % 100);
+  return text;
 }
 
 // "KEY=value" among the fields of line 1.
@@ -130,12 +161,22 @@ PhaseFunctionFile parse_phase_function_file(std::string_view text) {
     std::vector<double> angles;
     for (const auto& [angle, column] : columns) angles.push_back(angle);
     if (file.angles_deg.empty()) file.angles_deg = angles;
+    if (!(wavelength > 0.0))
+      refuse(4, "phase-function wavelength " + std::to_string(wavelength) + " nm is not positive");
+    if (angles.size() != file.angles_deg.size())
+      refuse(4, std::to_string(angles.size()) + " phase-function angles at " +
+                    std::to_string(wavelength) + " nm where " +
+                    std::to_string(file.wavelengths_nm[0]) + " nm has " +
+                    std::to_string(file.angles_deg.size()));
     if (angles != file.angles_deg)
       refuse(4, "the phase functions at " + std::to_string(wavelength) +
                     " nm have other angles than at " + std::to_string(file.wavelengths_nm[0]) +
                     " nm");
     file.wavelengths_nm.push_back(wavelength);
   }
+  if (file.angles_deg.size() < kMinimumAngles)
+    refuse(4, std::to_string(file.angles_deg.size()) + " phase-function angles per wavelength, " +
+                  std::to_string(kMinimumAngles) + " at least expected");
   if (file.angles_deg.front() != 0.0 || file.angles_deg.back() != 180.0)
     refuse(4, "phase-function angles must run from 0 to 180 degrees");
   for (std::size_t a = 1; a < file.angles_deg.size(); ++a)
@@ -150,6 +191,11 @@ PhaseFunctionFile parse_phase_function_file(std::string_view text) {
                               std::to_string(names.size()) + " (truncated line?)");
     auto value = [&](std::size_t column) {
       const auto v = to_number(fields[column]);
+      if (!v && non_finite(fields[column]))
+        refuse(line_number, "column " + std::string(names[column]) + ": \"" +
+                                std::string(fields[column]) + "\" is not finite");
+      if (fields[column].empty())
+        refuse(line_number, "column " + std::string(names[column]) + " is empty (missing value)");
       if (!v)
         refuse(line_number, "column " + std::string(names[column]) + ": \"" +
                                 std::string(fields[column]) + "\" is not a number");
@@ -160,9 +206,25 @@ PhaseFunctionFile parse_phase_function_file(std::string_view text) {
     PhaseFunctionRetrieval r;
     r.date = std::string(fields[0]);
     r.time = std::string(fields[1]);
+    const auto day = day_number(fields[0]);
+    if (!day) refuse(line_number, "column Date(dd-mm-yyyy): \"" + r.date + "\" is not a date");
     const auto t = hours(fields[1]);
     if (!t) refuse(line_number, "column Time(hh:mm:ss): \"" + r.time + "\" is not a time");
     r.time_utc_h = *t;
+    // retrieval_time_utc_h selects a retrieval by the hour of one day: a file of several days
+    // would make that choice ambiguous, and retrievals out of order or twice at one time too.
+    if (!file.retrievals.empty()) {
+      const PhaseFunctionRetrieval& previous = file.retrievals.back();
+      if (r.date != previous.date)
+        refuse(line_number, "retrievals of several days (" + previous.date + " and " + r.date +
+                                "): one day per file");
+      if (!(r.time_utc_h > previous.time_utc_h))
+        refuse(line_number, "retrieval time " + r.time + " is not after the previous one (" +
+                                previous.time + ")");
+    } else {
+      file.first_day = iso_day(*day);
+    }
+    file.last_day = iso_day(*day);
     r.aod_440 = value(*aod_column);
     r.angstrom_440_870 = value(*alpha_column);
     if (!(r.aod_440 > 0.0)) refuse(line_number, "column tau440(measured) must be positive");

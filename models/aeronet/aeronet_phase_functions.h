@@ -17,10 +17,15 @@
 // Phase functions are normalised by AERONET so that (1/2) int P(theta) sin(theta) dtheta = 1.
 // Missing values are written -999. What this reader refuses, each with an InvalidInput whose
 // field is "inversion" and whose reason names the line (1-based), and the column when it is a
-// value: another product or layout (the header lines), a retrieval line with more or fewer
-// fields than the header, a field that is not a number, -999 in a value the models use (a
-// phase-function value, tau440(measured), alpha440-870), a file with no retrieval. Other
-// columns may hold -999. Pure function of the text; thread-safe.
+// value: an empty or truncated file, another product or layout (the header lines), a wavelength
+// with another number of angles or other angles than the first, fewer than 10 angles, angles
+// that do not increase from 0 to 180 degrees, a retrieval line with more or fewer fields than
+// the header, an empty field or one that is not a number or not finite (nan, inf, overflow) in
+// a value the models use, -999 in such a value (a phase-function value, tau440(measured),
+// alpha440-870), a date or time that is not one, retrievals of more than one day or whose times
+// do not increase (retrieval_time_utc_h of models/measured_aerosols picks among one day's
+// retrievals by time), a file with no retrieval. Other columns may hold -999 or be empty. Pure
+// function of the text; thread-safe.
 #pragma once
 
 #include <cstdint>
@@ -49,7 +54,9 @@ struct PhaseFunctionFile {
   std::string level;                               // "Level 1.5 Almucantar Retrievals, Version 2"
   std::vector<double> wavelengths_nm;              // increasing, from the column names
   std::vector<double> angles_deg;                  // the same for every wavelength, 0 .. 180
-  std::vector<PhaseFunctionRetrieval> retrievals;  // in file order
+  std::vector<PhaseFunctionRetrieval> retrievals;  // in file order, times increasing
+  std::string first_day;                           // ISO 8601 yyyy-mm-dd of the first retrieval
+  std::string last_day;                            // and of the last (the same day today)
   std::uint64_t content_hash = 0;  // FNV-1a of the whole text (models/core/content_hash.h)
 };
 

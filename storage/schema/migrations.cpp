@@ -377,6 +377,28 @@ CREATE INDEX fits_by_dataset ON fits(dataset_id);
 ALTER TABLE jobs ADD COLUMN skipped_count INTEGER NOT NULL DEFAULT 0;
 ALTER TABLE jobs ADD COLUMN last_skipped_utc TEXT;
 )sql",
+      // Users' AERONET phase-function inversions (docs/data-api.md "Aerosol inversions",
+      // models/measured_aerosols/README.md): the file's bytes as uploaded, validated by the
+      // reader of models/aeronet before the row is written, with what the reader found in it
+      // (site, days, retrievals) and its FNV-1a content hash, which keys the model's tables in
+      // the disk cache. Ids are never reused (AUTOINCREMENT): an id in a stored evaluation, job
+      // or fit always means the same file.
+      R"sql(
+CREATE TABLE aerosol_inversions (
+  id INTEGER PRIMARY KEY AUTOINCREMENT,
+  name TEXT NOT NULL,
+  content_hash TEXT NOT NULL,
+  site TEXT NOT NULL,
+  latitude_deg REAL NOT NULL,
+  longitude_deg REAL NOT NULL,
+  first_day TEXT NOT NULL,
+  last_day TEXT NOT NULL,
+  retrieval_count INTEGER NOT NULL CHECK (retrieval_count > 0),
+  size_bytes INTEGER NOT NULL,
+  content BLOB NOT NULL,
+  created_utc TEXT NOT NULL
+);
+)sql",
   };
   return migrations;
 }

@@ -311,6 +311,25 @@ Page<EvaluationSummary> Client::evaluations(const EvaluationFilter& filter) cons
                                     detail::evaluation_summary_of);
 }
 
+AerosolInversion Client::upload_aerosols(const std::string& name,
+                                         const std::filesystem::path& file) const {
+  QueryText query;
+  query.add("name", name);
+  return detail::aerosol_inversion_of(
+      json_of(transport_->post_file(query.target("/v1/aerosols"), file, {})));
+}
+
+Page<AerosolInversion> Client::aerosol_inversions(const PageRequest& page) const {
+  QueryText query;
+  add_page(query, page);
+  return page_of<AerosolInversion>(transport_->get(query.target("/v1/aerosols")),
+                                   detail::aerosol_inversion_of);
+}
+
+AerosolInversion Client::aerosol_inversion(std::int64_t id) const {
+  return detail::aerosol_inversion_of(json_of(transport_->get(id_path("/v1/aerosols", id))));
+}
+
 Fit Client::create_fit(const FitRequest& request) const {
   return detail::fit_of(
       json_of(transport_->post_json("/v1/fits", detail::fit_request_json(request).dump())));

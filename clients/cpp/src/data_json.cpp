@@ -250,4 +250,31 @@ Fit fit_of(const nlohmann::json& json) {
   return fit;
 }
 
+AerosolInversion aerosol_inversion_of(const nlohmann::json& json) {
+  AerosolInversion a;
+  a.id = member<std::int64_t>(json, "id");
+  a.name = member<std::string>(json, "name");
+  a.content_hash = member<std::string>(json, "content_hash");
+  a.site = member<std::string>(json, "site");
+  a.first_day = member<std::string>(json, "first_day");
+  a.last_day = member<std::string>(json, "last_day");
+  a.retrieval_count = member<std::int64_t>(json, "retrieval_count");
+  a.created = member<std::string>(json, "created_utc");
+  if (const auto wavelengths = optional_member<std::vector<double>>(json, "wavelengths_nm"))
+    a.wavelengths_nm = *wavelengths;
+  if (const auto retrievals = optional_member<nlohmann::json>(json, "retrievals")) {
+    for (const nlohmann::json& r : *retrievals) {
+      AerosolRetrieval one;
+      one.date = member<std::string>(r, "date");
+      one.time_utc = member<std::string>(r, "time_utc");
+      one.time_utc_h = member<double>(r, "time_utc_h");
+      one.aod_440 = member<double>(r, "aod_440");
+      one.angstrom_440_870 = member<double>(r, "angstrom_440_870");
+      one.aod = member<std::vector<double>>(r, "aod");
+      a.retrievals.push_back(std::move(one));
+    }
+  }
+  return a;
+}
+
 }  // namespace clearsky::client::detail

@@ -23,5 +23,6 @@ EvaluationSummary evaluation_summary_of(const nlohmann::json& json);
 Evaluation evaluation_of(const nlohmann::json& json);
 Job job_of(const nlohmann::json& json);
 Fit fit_of(const nlohmann::json& json);
+AerosolInversion aerosol_inversion_of(const nlohmann::json& json);
 
 }  // namespace clearsky::client::detail

@@ -4,12 +4,13 @@
 
 from __future__ import annotations
 
+import io
 import os
 import time as time_module
 from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, TypeVar, Union
 from urllib.parse import quote
 
-from .data_results import (Dataset, DatasetSummary, Evaluation, EvaluationSummary,
+from .data_results import (AerosolInversion, Dataset, DatasetSummary, Evaluation, EvaluationSummary,
                            EvaluationTicket, Fit, Import, Job, Page, next_cursor_of)
 from .errors import ClearskyError
 from .exr_image import SkydomeImage, read_skydome
@@ -555,6 +556,36 @@ class Client:
             raise ClearskyError(None, "fit_" + final.status,
                                 f"fit {fit_id} {final.status}: {final.error}", body=final.raw)
         return final
+
+    def upload_aerosols(self, name: str, path: str) -> AerosolInversion:
+        """POST /v1/aerosols (token): stores an AERONET phase-function inversion (.pfn) read from
+        ``path`` under the label ``name``; the server reads it whole first (400 naming ``body``
+        with the line and column when it refuses it). Its ``id`` is what ``aerosols=`` selects.
+
+        Example:
+            >>> stored = client.upload_aerosols("egbert", "130527_130527_Egbert.pfn")
+            >>> stored.retrieval_count
+            5
+        """
+        with open(path, "rb") as source:
+            content = source.read()
+
+        def body() -> Any:
+            return io.BytesIO(content), len(content)
+
+        answer = self._transport.request("POST", "/v1/aerosols", as_query({"name": name}),
+                                         body=body, content_type="text/plain", authorize=True)
+        return AerosolInversion.from_json(answer.json())
+
+    def list_aerosols(self, limit: Optional[int] = None,
+                      cursor: Optional[str] = None) -> Page[AerosolInversion]:
+        """GET /v1/aerosols: newest first, without their retrievals."""
+        return _page(self._get("/v1/aerosols", {"limit": limit, "cursor": cursor}),
+                     AerosolInversion.from_json)
+
+    def get_aerosols(self, inversion_id: int) -> AerosolInversion:
+        """GET /v1/aerosols/{id}: with every retrieval's time and optical depth."""
+        return AerosolInversion.from_json(self._get(f"/v1/aerosols/{int(inversion_id)}").json())
 
     def list_jobs(self, limit: Optional[int] = None, cursor: Optional[str] = None) -> Page[Job]:
         """GET /v1/jobs: by name."""

@@ -1,6 +1,7 @@
-"""Typed answers of the data endpoints: datasets, imports, evaluations, tickets, fits and jobs
-(docs/data-api.md; the schemas DatasetSummary, Dataset, Import, EvaluationTicket,
-EvaluationSummary, Evaluation, Fit and Job of /openapi.json), and a page of a list.
+"""Typed answers of the data endpoints: datasets, imports, evaluations, tickets, fits, aerosol
+inversions and jobs (docs/data-api.md; the schemas DatasetSummary, Dataset, Import,
+EvaluationTicket, EvaluationSummary, Evaluation, Fit, AerosolInversion and Job of /openapi.json),
+and a page of a list.
 
 Times are the server's ISO 8601 texts. Every answer keeps its whole JSON in ``raw``: the
 captures of a dataset and of an evaluation, with their samples, are read from there."""
@@ -149,6 +150,30 @@ class Fit:
         return cls(j["id"], j["dataset"], j["model"], j["status"], j["progress"], j.get("stage"),
                    j.get("values"), j.get("rmse_before"), j.get("rmse_after"),
                    j.get("cross_validated_rmse"), j.get("error"), j)
+
+
+@dataclass(frozen=True)
+class AerosolInversion:
+    """A stored AERONET inversion for measured_aerosols (POST, GET /v1/aerosols; docs/data-api.md
+    "Aerosol inversions"): its id (what ``aerosols=`` selects), label, site, days and content
+    hash; ``retrievals`` (time and optical depth per wavelength) when read one by one."""
+
+    id: int
+    name: str
+    site: str
+    first_day: str
+    last_day: str
+    retrieval_count: int
+    content_hash: str
+    wavelengths_nm: Optional[List[float]]
+    retrievals: Optional[List[Dict[str, Any]]]
+    raw: Dict[str, Any] = field(repr=False)
+
+    @classmethod
+    def from_json(cls, j: Dict[str, Any]) -> "AerosolInversion":
+        return cls(j["id"], j["name"], j["site"], j["first_day"], j["last_day"],
+                   j["retrieval_count"], j["content_hash"], j.get("wavelengths_nm"),
+                   j.get("retrievals"), j)
 
 
 @dataclass(frozen=True)

@@ -51,6 +51,8 @@ CLIENT_METHODS = {
     "listEvaluations": "list_evaluations", "createEvaluation": "create_evaluation",
     "getEvaluation": "get_evaluation", "getEvaluationTicket": "get_evaluation_ticket",
     "listFits": "list_fits", "createFit": "create_fit", "getFit": "get_fit",
+    "listAerosols": "list_aerosols", "uploadAerosols": "upload_aerosols",
+    "getAerosols": "get_aerosols",
     "listJobs": "list_jobs", "createJob": "create_job", "getJob": "get_job",
     "deleteJob": "delete_job", "pauseJob": "pause_job", "resumeJob": "resume_job",
 }

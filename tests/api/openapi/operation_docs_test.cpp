@@ -42,6 +42,9 @@ const char* const kOperationIds[] = {"healthz",
                                      "listFits",
                                      "createFit",
                                      "getFit",
+                                     "listAerosols",
+                                     "uploadAerosols",
+                                     "getAerosols",
                                      "listJobs",
                                      "createJob",
                                      "getJob",
@@ -112,7 +115,7 @@ TEST(OperationDocs, EveryResponseBodyIsANamedSchema) {
 TEST(OperationDocs, WritesNeedTheBearerToken) {
   const std::set<std::string> writes = {"importDataset", "deleteDataset", "createEvaluation",
                                         "createFit",     "createJob",     "deleteJob",
-                                        "pauseJob",      "resumeJob"};
+                                        "pauseJob",      "resumeJob",     "uploadAerosols"};
   for (const char* id : kOperationIds) {
     const Json& operation = *operation_doc(id);
     if (writes.contains(id)) {

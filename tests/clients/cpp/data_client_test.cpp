@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "tests/clients/cpp/client_server.h"
 #include "tests/support/shared_data.h"
@@ -207,6 +208,39 @@ TEST_F(DataClient, AnUploadCancelledByItsProgressCallbackIsAnError) {
     EXPECT_EQ(e.code(), "cancelled") << e.what();
   }
   EXPECT_TRUE(server_->client().datasets().items.empty());
+}
+
+// An AERONET inversion uploaded from the repository's file, read back one by one and in the
+// list; a file the server's reader refuses is a 400 naming the body.
+TEST_F(DataClient, AerosolInversionsUploadedAndRead) {
+  // The repository's root from this file's path (CMake compiles it by its absolute path).
+  const std::filesystem::path root =
+      std::filesystem::path(__FILE__).parent_path().parent_path().parent_path().parent_path();
+  const std::filesystem::path pfn = root / "models/data/aeronet/130527_130527_Egbert.pfn";
+  const AerosolInversion stored = server_->client().upload_aerosols("egbert", pfn);
+  EXPECT_EQ(stored.site, "Egbert");
+  EXPECT_EQ(stored.retrieval_count, 5);
+  ASSERT_EQ(stored.retrievals.size(), 5u);
+  EXPECT_EQ(stored.retrievals[0].time_utc, "11:19:04");
+  EXPECT_EQ(stored.retrievals[0].aod.size(), stored.wavelengths_nm.size());
+  const AerosolInversion read = server_->client().aerosol_inversion(stored.id);
+  EXPECT_EQ(read.content_hash, stored.content_hash);
+  const Page<AerosolInversion> list = server_->client().aerosol_inversions();
+  ASSERT_EQ(list.items.size(), 1u);
+  EXPECT_TRUE(list.items[0].retrievals.empty());
+  const std::filesystem::path garbage = std::filesystem::temp_directory_path() / "not.pfn";
+  {
+    std::ofstream out(garbage);
+    out << "not an inversion\n";
+  }
+  try {
+    server_->client().upload_aerosols("bad", garbage);
+    FAIL() << "a file that is not an inversion was stored";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.status(), 400);
+    EXPECT_EQ(e.parameter(), "body") << e.what();
+  }
+  std::filesystem::remove(garbage);
 }
 
 TEST_F(DataClient, AnUnknownImportIs404NamingTheId) {

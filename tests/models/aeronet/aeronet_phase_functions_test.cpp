@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "models/core/embedded_data.h"
 #include "models/core/invalid_input.h"
@@ -124,6 +126,124 @@ TEST(AeronetPhaseFunctions, RefusesOtherProductsAndLayouts) {
   // An angle missing at one wavelength only.
   const std::string ragged = with_field(text, 3, 5, "3.9400[442nm]");
   EXPECT_NE(refusal(ragged).find("other angles"), std::string::npos);
+}
+
+// A small forged inversion: two wavelengths, `angles` angles from 0 to 180 degrees, the given
+// retrieval lines (date, time and the values of one row, the same for every retrieval).
+struct Forged {
+  std::vector<double> angles_deg = {0, 5, 10, 20, 40, 60, 90, 120, 150, 170, 180};
+  std::vector<std::string> wavelengths = {"442", "871"};
+  std::vector<std::pair<std::string, std::string>> times = {{"27:05:2013", "11:19:04"},
+                                                            {"27:05:2013", "12:00:00"}};
+  std::string value = "1.5";  // every phase-function value
+  std::string aod = "0.1";    // tau440(measured)
+  std::string alpha = "1.2";  // alpha440-870
+  std::string text() const {
+    std::string t =
+        "27:05:2013,Locations=Forged,long=-79.750,lat=44.226,elev=264,Nmeas=2\n"
+        "Level 1.5 Almucantar Retrievals, Version 2\n"
+        "Phase Functions - Total Mode,ALL POINTS DATA\n"
+        "Date(dd-mm-yyyy),Time(hh:mm:ss),Julian_Day";
+    for (const std::string& w : wavelengths)
+      for (double a : angles_deg)
+        t.append(",").append(std::to_string(a)).append("[").append(w).append("nm]");
+    t += ",alpha440-870,tau440(measured)\n";
+    for (const auto& [date, time] : times) {
+      t.append(date).append(",").append(time).append(",147.0");
+      for (std::size_t i = 0; i < wavelengths.size() * angles_deg.size(); ++i)
+        t.append(",").append(value);
+      t.append(",").append(alpha).append(",").append(aod).append("\n");
+    }
+    return t;
+  }
+};
+
+TEST(AeronetPhaseFunctions, ReadsAForgedInversion) {
+  const PhaseFunctionFile file = parse_phase_function_file(Forged{}.text());
+  EXPECT_EQ(file.site, "Forged");
+  EXPECT_EQ(file.wavelengths_nm, (std::vector<double>{442, 871}));
+  EXPECT_EQ(file.angles_deg.size(), 11u);
+  ASSERT_EQ(file.retrievals.size(), 2u);
+  EXPECT_EQ(file.first_day, "2013-05-27");
+  EXPECT_EQ(file.last_day, "2013-05-27");
+  EXPECT_DOUBLE_EQ(file.retrievals[1].aod_440, 0.1);
+  EXPECT_EQ(parse_phase_function_file(egbert()).first_day, "2013-05-27");
+}
+
+TEST(AeronetPhaseFunctions, ForgedFillAndEmptyValues) {
+  Forged f;
+  f.value = "-999.";
+  EXPECT_NE(refusal(f.text()).find("is missing (-999)"), std::string::npos);
+  f = Forged{};
+  f.alpha = "";
+  const std::string empty = refusal(f.text());
+  EXPECT_NE(empty.find("alpha440-870 is empty"), std::string::npos) << empty;
+  EXPECT_NE(empty.find("line 5"), std::string::npos) << empty;
+  f = Forged{};
+  f.aod = "-999.000000";
+  EXPECT_NE(refusal(f.text()).find("tau440(measured) is missing"), std::string::npos);
+}
+
+TEST(AeronetPhaseFunctions, ForgedNonFiniteNumbers) {
+  for (const std::string bad : {"nan", "inf", "-INF", "infinity", "1e999"}) {
+    Forged f;
+    f.value = bad;
+    const std::string reason = refusal(f.text());
+    EXPECT_NE(reason.find("is not finite"), std::string::npos) << bad << ": " << reason;
+  }
+  Forged f;
+  f.aod = "nan";
+  EXPECT_NE(refusal(f.text()).find("tau440(measured): \"nan\" is not finite"), std::string::npos);
+  f = Forged{};
+  f.value = "1.5x";
+  EXPECT_NE(refusal(f.text()).find("is not a number"), std::string::npos);
+}
+
+TEST(AeronetPhaseFunctions, ForgedAngleCountsAndOrder) {
+  Forged f;
+  f.angles_deg = {0, 10, 30, 60, 90, 180};
+  EXPECT_NE(refusal(f.text()).find("10 at least expected"), std::string::npos);
+  f = Forged{};
+  f.angles_deg = {0, 5, 10, 40, 20, 60, 90, 120, 150, 170, 180};
+  EXPECT_NE(refusal(f.text()).find("angles must increase"), std::string::npos);
+  f = Forged{};
+  f.angles_deg = {0, 5, 10, 20, 20, 60, 90, 120, 150, 170, 180};
+  EXPECT_NE(refusal(f.text()).find("angles must increase"), std::string::npos);
+  f = Forged{};
+  f.angles_deg = {0, 5, 10, 20, 40, 60, 90, 120, 150, 170, 179};
+  EXPECT_NE(refusal(f.text()).find("from 0 to 180"), std::string::npos);
+  // One wavelength (442 nm) with one angle more than the other.
+  f = Forged{};
+  std::string text = f.text();
+  const std::size_t at = text.find(",0.000000[871nm]");
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at, ",175.000000[442nm]");
+  const std::string reason = refusal(text);
+  EXPECT_NE(reason.find("11 phase-function angles at 871"), std::string::npos) << reason;
+}
+
+TEST(AeronetPhaseFunctions, ForgedRetrievalsOfOneDayInTimeOrder) {
+  Forged f;
+  f.times = {{"27:05:2013", "11:00:00"}, {"27:05:2013", "12:00:00"}, {"27:05:2013", "13:30:00"}};
+  EXPECT_EQ(parse_phase_function_file(f.text()).retrievals.size(), 3u);
+  f.times = {{"27:05:2013", "12:00:00"}, {"27:05:2013", "11:00:00"}};
+  const std::string order = refusal(f.text());
+  EXPECT_NE(order.find("not after the previous one"), std::string::npos) << order;
+  EXPECT_NE(order.find("line 6"), std::string::npos) << order;
+  f.times = {{"27:05:2013", "12:00:00"}, {"27:05:2013", "12:00:00"}};
+  EXPECT_NE(refusal(f.text()).find("not after the previous one"), std::string::npos);
+  f.times = {{"27:05:2013", "12:00:00"}, {"28:05:2013", "09:00:00"}};
+  EXPECT_NE(refusal(f.text()).find("several days"), std::string::npos);
+  f.times = {{"2013-05-27", "12:00:00"}};
+  EXPECT_NE(refusal(f.text()).find("is not a date"), std::string::npos);
+}
+
+TEST(AeronetPhaseFunctions, ForgedEmptyAndHeaderOnly) {
+  EXPECT_NE(refusal("").find("truncated"), std::string::npos);
+  EXPECT_NE(refusal("\n\n\r\n").find("truncated"), std::string::npos);
+  Forged f;
+  f.times.clear();
+  EXPECT_NE(refusal(f.text()).find("no retrieval"), std::string::npos);
 }
 
 }  // namespace

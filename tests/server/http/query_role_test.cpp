@@ -47,7 +47,7 @@ TEST(QueryRole, ServesTheSkyWithoutADatabaseAndRefusesTheDataEndpointsNamingTheR
   EXPECT_EQ(ready->status, 200) << ready->body;
 
   for (const char* path : {"/v1/datasets", "/v1/imports", "/v1/evaluations", "/v1/jobs",
-                           "/v1/datasets/x", "/v1/jobs/1"}) {
+                           "/v1/datasets/x", "/v1/jobs/1", "/v1/aerosols", "/v1/aerosols/1"}) {
     const auto r = c.Get(path);
     ASSERT_TRUE(r) << path;
     EXPECT_EQ(r->status, 404) << path;
@@ -60,6 +60,10 @@ TEST(QueryRole, ServesTheSkyWithoutADatabaseAndRefusesTheDataEndpointsNamingTheR
   ASSERT_TRUE(job);
   EXPECT_EQ(job->status, 404);
   EXPECT_EQ(error_of(job)["parameter"], "role");
+  const auto aerosols = c.Post("/v1/aerosols?name=a", with_token, "x", "text/plain");
+  ASSERT_TRUE(aerosols);
+  EXPECT_EQ(aerosols->status, 404);
+  EXPECT_EQ(error_of(aerosols)["code"], "no_database");
   const auto removal = c.Delete("/v1/datasets/x");
   ASSERT_TRUE(removal);
   EXPECT_EQ(removal->status, 404);

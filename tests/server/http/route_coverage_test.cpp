@@ -30,6 +30,7 @@ const std::map<std::string_view, std::pair<std::string, std::string>> kExamples 
     {"importDataset", {"?name=d", "not an archive"}},
     {"createEvaluation", {"", R"({"models": ["preetham"], "dataset": "d"})"}},
     {"createFit", {"", R"({"dataset": "d", "model": "preetham"})"}},
+    {"uploadAerosols", {"?name=a", "not an inversion"}},
     {"createJob", {"", R"({"name": "n", "schedule": "0 3 * * *", "dataset": "d"})"}},
 };
 

@@ -446,6 +446,27 @@ def run(checker, workdir):
     c.call("getRadiance", 409, query=c.query("getRadiance", "sun_zenith", "sun_azimuth", *views,
                                              model="hosek", fit=fit["id"]))
 
+    # Users' AERONET inversions (docs/data-api.md "Aerosol inversions"): the shipped file, a
+    # file the reader refuses, another media type, an unknown id; two stored to page.
+    shipped = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..",
+                           "models", "data", "aeronet", "130527_130527_Egbert.pfn")
+    with open(shipped, "rb") as source:
+        pfn = source.read()
+    text = {"Content-Type": "text/plain"}
+    c.call("uploadAerosols", 401, query="name=egbert", body=pfn, headers=text)
+    stored = c.call("uploadAerosols", 201, query="name=egbert", body=pfn, token=TOKEN,
+                    headers=text)
+    c.call("uploadAerosols", 201, query="name=again", body=pfn, token=TOKEN, headers=text)
+    c.call("uploadAerosols", 400, query="name=bad", body=b"not,an,inversion\n", token=TOKEN,
+           headers=text)
+    c.call("uploadAerosols", 415, query="name=json", body=pfn, token=TOKEN,
+           headers={"Content-Type": "application/json"})
+    c.call("getAerosols", 200, {"id": stored["id"]})
+    c.call("getAerosols", 404, {"id": 999})
+    c.call("getAerosols", 400, {"id": "abc"})
+    c.call("listAerosols", 200)
+    check_paging(c, "listAerosols")
+
     # Jobs.
     c.call("createJob", 401, body=c.body_example("createJob"))
     c.call("createJob", 201, body=c.body_example("createJob"), token=TOKEN)

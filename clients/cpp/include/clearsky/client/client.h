@@ -113,6 +113,14 @@ class Client {
   Page<Fit> fits(const PageRequest& page = {}) const;
   Fit wait_for_fit(std::int64_t id, const WaitOptions& wait = {}) const;
 
+  // Users' AERONET inversions for measured_aerosols (docs/data-api.md "Aerosol inversions";
+  // uploading needs the token): the .pfn file is sent from its path, read whole by the server
+  // before it is stored (400 naming "body" when refused).
+  AerosolInversion upload_aerosols(const std::string& name,
+                                   const std::filesystem::path& file) const;
+  Page<AerosolInversion> aerosol_inversions(const PageRequest& page = {}) const;
+  AerosolInversion aerosol_inversion(std::int64_t id) const;
+
   // Jobs.
   Job create_job(const JobRequest& request) const;
   Page<Job> jobs(const PageRequest& page = {}) const;

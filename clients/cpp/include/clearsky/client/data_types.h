@@ -260,4 +260,27 @@ struct Fit {
   bool done() const { return status != "queued" && status != "running"; }
 };
 
+// One retrieval of a stored AERONET inversion (GET /v1/aerosols/{id}).
+struct AerosolRetrieval {
+  std::string date;      // as written, dd:mm:yyyy
+  std::string time_utc;  // as written, hh:mm:ss
+  double time_utc_h = 0;
+  double aod_440 = 0;
+  double angstrom_440_870 = 0;
+  std::vector<double> aod;  // at each of AerosolInversion::wavelengths_nm
+};
+// A stored AERONET inversion for measured_aerosols (docs/data-api.md "Aerosol inversions");
+// wavelengths_nm and retrievals are empty in a list's items.
+struct AerosolInversion {
+  std::int64_t id = 0;
+  std::string name;
+  std::string content_hash;  // 16 hex digits
+  std::string site;
+  std::string first_day, last_day;  // yyyy-mm-dd
+  std::int64_t retrieval_count = 0;
+  std::string created;
+  std::vector<double> wavelengths_nm;
+  std::vector<AerosolRetrieval> retrievals;
+};
+
 }  // namespace clearsky::client
