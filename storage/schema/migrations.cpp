@@ -2,7 +2,8 @@
 // datasets of measured captures, their samples (spectra as float64 blobs), evaluation runs with
 // per-capture results, and scheduled evaluation jobs; dataset imports; from version 4, ids never
 // reused and run parameters as JSON (docs/data-api.md); from version 7, atmosphere fits
-// (docs/fits.md). Times are ISO 8601 UTC text except capture instants (unix seconds).
+// (docs/fits.md); from version 9, datasets of broadband irradiance time series. Times are ISO
+// 8601 UTC text except capture and irradiance sample instants (unix seconds).
 #include "storage/schema/migrations.h"
 
 #include <string>
@@ -376,6 +377,33 @@ CREATE INDEX fits_by_dataset ON fits(dataset_id);
       R"sql(
 ALTER TABLE jobs ADD COLUMN skipped_count INTEGER NOT NULL DEFAULT 0;
 ALTER TABLE jobs ADD COLUMN last_skipped_utc TEXT;
+)sql",
+      // Version 9 (docs/data-api.md "Dataset kinds", docs/measurement-formats.md "Broadband
+      // irradiance"): a dataset is of one kind, `sky_radiance` (captures of spectral sky
+      // radiance, every dataset stored before) or `broadband_irradiance` (a time series of
+      // horizontal irradiance, W/m2, from a pyranometer or a weather file). An irradiance sample
+      // is an instant (unix seconds with the UTC offset of its clock), a site, and any of
+      // global horizontal (GHI), diffuse horizontal (DHI) and direct normal (DNI) irradiance,
+      // at least one, with the period it averages when known. Instants may repeat (a logger
+      // writing its clock to the tenth of a minute): samples keep their file order by id.
+      R"sql(
+ALTER TABLE datasets ADD COLUMN kind TEXT NOT NULL DEFAULT 'sky_radiance'
+  CHECK (kind IN ('sky_radiance', 'broadband_irradiance'));
+CREATE TABLE irradiance_samples (
+  id INTEGER PRIMARY KEY,
+  dataset_id INTEGER NOT NULL REFERENCES datasets(id) ON DELETE CASCADE,
+  time_utc_s REAL NOT NULL,
+  utc_offset_minutes INTEGER NOT NULL,
+  latitude_deg REAL NOT NULL,
+  longitude_deg REAL NOT NULL,
+  elevation_m REAL NOT NULL,
+  ghi_w_m2 REAL,
+  dhi_w_m2 REAL,
+  dni_w_m2 REAL,
+  averaging_s REAL CHECK (averaging_s IS NULL OR averaging_s > 0),
+  CHECK (ghi_w_m2 IS NOT NULL OR dhi_w_m2 IS NOT NULL OR dni_w_m2 IS NOT NULL)
+);
+CREATE INDEX irradiance_samples_by_dataset ON irradiance_samples(dataset_id, time_utc_s);
 )sql",
   };
   return migrations;
