@@ -3,12 +3,18 @@
 
 namespace clearsky::storage {
 
-void IrradianceSampleRepository::insert(std::int64_t dataset_id,
-                                        const std::vector<IrradianceSample>& samples) {
+std::int64_t IrradianceSampleRepository::insert(std::int64_t dataset_id,
+                                                const std::vector<IrradianceSample>& samples) {
+  // IS compares NULLs as equal, as a missing component is the same on both sides.
   auto statement = db_.prepare(
       "INSERT INTO irradiance_samples (dataset_id, time_utc_s, utc_offset_minutes, latitude_deg,"
       " longitude_deg, elevation_m, ghi_w_m2, dhi_w_m2, dni_w_m2, averaging_s)"
-      " VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+      " SELECT ?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10 WHERE NOT EXISTS ("
+      " SELECT 1 FROM irradiance_samples WHERE dataset_id = ?1 AND time_utc_s = ?2"
+      " AND utc_offset_minutes = ?3 AND latitude_deg = ?4 AND longitude_deg = ?5"
+      " AND elevation_m = ?6 AND ghi_w_m2 IS ?7 AND dhi_w_m2 IS ?8 AND dni_w_m2 IS ?9"
+      " AND averaging_s IS ?10)");
+  std::int64_t added = 0;
   for (const IrradianceSample& sample : samples) {
     statement.reset();
     statement.bind(1, dataset_id)
@@ -22,7 +28,9 @@ void IrradianceSampleRepository::insert(std::int64_t dataset_id,
         .bind_optional(9, sample.dni_w_m2)
         .bind_optional(10, sample.averaging_s);
     statement.run();
+    added += db_.changes();
   }
+  return added;
 }
 
 std::vector<IrradianceSample> IrradianceSampleRepository::list(std::int64_t dataset_id) {

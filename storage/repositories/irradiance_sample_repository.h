@@ -30,8 +30,10 @@ struct IrradianceSample {
 class IrradianceSampleRepository {
  public:
   explicit IrradianceSampleRepository(Database& db) : db_(db) {}
-  // Appends the samples to the dataset, in their order; the caller holds the transaction.
-  void insert(std::int64_t dataset_id, const std::vector<IrradianceSample>& samples);
+  // Appends the samples to the dataset in their order, but for those identical (instant, clock,
+  // site, values) to one it holds, so that importing a file again adds nothing; the number
+  // added. The caller holds the transaction.
+  std::int64_t insert(std::int64_t dataset_id, const std::vector<IrradianceSample>& samples);
   // The dataset's samples by instant, then in the order they were stored.
   std::vector<IrradianceSample> list(std::int64_t dataset_id);
 

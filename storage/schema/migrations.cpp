@@ -385,7 +385,11 @@ ALTER TABLE jobs ADD COLUMN last_skipped_utc TEXT;
       // is an instant (unix seconds with the UTC offset of its clock), a site, and any of
       // global horizontal (GHI), diffuse horizontal (DHI) and direct normal (DNI) irradiance,
       // at least one, with the period it averages when known. Instants may repeat (a logger
-      // writing its clock to the tenth of a minute): samples keep their file order by id.
+      // writing its clock to the tenth of a minute): samples keep their file order by id. An
+      // evaluation run of such a dataset has, per measured component, its RMSE and mean bias
+      // (model minus measured, W/m2) over the samples compared and every sample's error
+      // (float64 blob in the dataset's sample order, NaN where not compared: the sun down or
+      // the component not measured).
       R"sql(
 ALTER TABLE datasets ADD COLUMN kind TEXT NOT NULL DEFAULT 'sky_radiance'
   CHECK (kind IN ('sky_radiance', 'broadband_irradiance'));
@@ -404,6 +408,15 @@ CREATE TABLE irradiance_samples (
   CHECK (ghi_w_m2 IS NOT NULL OR dhi_w_m2 IS NOT NULL OR dni_w_m2 IS NOT NULL)
 );
 CREATE INDEX irradiance_samples_by_dataset ON irradiance_samples(dataset_id, time_utc_s);
+CREATE TABLE evaluation_irradiance_results (
+  run_id INTEGER NOT NULL REFERENCES evaluation_runs(id) ON DELETE CASCADE,
+  component TEXT NOT NULL CHECK (component IN ('ghi', 'dhi', 'dni')),
+  rmse_w_m2 REAL,
+  mean_bias_w_m2 REAL,
+  samples_compared INTEGER NOT NULL,
+  errors_w_m2 BLOB NOT NULL,
+  PRIMARY KEY (run_id, component)
+);
 )sql",
   };
   return migrations;
