@@ -73,7 +73,9 @@ TEST(BroadbandEvaluation, AModelsOwnSeriesHasNoErrorAndANightSampleIsNotCompared
   EXPECT_NEAR(*run.components[0].rmse_w_m2, 0.0, 1e-9);
   EXPECT_EQ(run.components[1].component, "dni");
   EXPECT_EQ(run.components[1].samples_compared, 1);
-  EXPECT_TRUE(std::isnan(run.components[0].errors_w_m2[2]));
+  // Errors are in the dataset's order, by instant: the night sample (02:00) first.
+  EXPECT_TRUE(std::isnan(run.components[0].errors_w_m2[0]));
+  EXPECT_FALSE(std::isnan(run.components[0].errors_w_m2[1]));
   const auto stored = storage::IrradianceRunResultRepository(db).load(run.run_id);
   ASSERT_EQ(stored.size(), 2u);
   EXPECT_EQ(stored[0].errors_w_m2.size(), 3u);

@@ -51,7 +51,7 @@ TEST(BroadbandFit, RecoversTheBetaThatMadeADayOfGhi) {
   FitSettings settings;
   settings.parameters = free;
   settings.config = small_tables(*bruneton.descriptor);  // beta at its default, 0.04
-  settings.relative_tolerance = 5e-3;  // of the bounds' width: 0.0014 in beta
+  settings.relative_tolerance = 5e-3;                    // of the bounds' width: 0.0014 in beta
   const FitResult fit = fit_broadband(bruneton, samples, settings);
   ASSERT_EQ(fit.values.size(), 1u);
   EXPECT_NEAR(fit.values[0], kMadeBeta, 0.003);
