@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "api/datasets/import_format.h"
+#include "api/datasets/irradiance_import.h"
 #include "api/datasets/sky_radiance_import.h"
 #include "api/encode/iso8601_time.h"
 #include "api/error/api_error.h"
@@ -14,6 +15,7 @@
 #include "storage/repositories/capture_repository.h"
 #include "storage/repositories/dataset_name.h"
 #include "storage/repositories/dataset_repository.h"
+#include "storage/repositories/irradiance_sample_repository.h"
 
 namespace clearsky::api {
 namespace {
@@ -42,6 +44,29 @@ nlohmann::ordered_json sample_json(const MeasuredSample& s, bool spectrum) {
   return j;
 }
 
+nlohmann::ordered_json optional_json(const std::optional<double>& value) {
+  if (!value) return nullptr;
+  return *value;
+}
+
+// The series of a broadband irradiance dataset, by instant.
+nlohmann::ordered_json irradiance_series_json(storage::Database& db, std::int64_t dataset_id) {
+  nlohmann::ordered_json series = nlohmann::ordered_json::array();
+  for (const storage::IrradianceSample& s :
+       storage::IrradianceSampleRepository(db).list(dataset_id))
+    series.push_back({{"time", format_iso8601_time(s.time_utc_s, s.utc_offset_minutes)},
+                      {"time_utc", format_iso8601_time(s.time_utc_s, 0, true)},
+                      {"place",
+                       {{"latitude", s.latitude_deg},
+                        {"longitude", s.longitude_deg},
+                        {"elevation_m", s.elevation_m}}},
+                      {"ghi", optional_json(s.ghi_w_m2)},
+                      {"dhi", optional_json(s.dhi_w_m2)},
+                      {"dni", optional_json(s.dni_w_m2)},
+                      {"averaging_s", optional_json(s.averaging_s)}});
+  return series;
+}
+
 }  // namespace
 
 ListPage list_datasets(storage::Database& db, Parameters query) {
@@ -55,9 +80,11 @@ ListPage list_datasets(storage::Database& db, Parameters query) {
   for (const auto& d : datasets.rows)
     page.items.push_back({{"name", d.name},
                           {"format", d.format},
+                          {"kind", d.kind},
                           {"created", d.created_utc},
                           {"captures", d.captures},
-                          {"samples", d.samples}});
+                          {"samples", d.samples},
+                          {"irradiance_samples", d.irradiance_samples}});
   if (datasets.more) page.next_cursor = name_cursor(datasets.rows.back().name);
   return page;
 }
@@ -65,6 +92,17 @@ ListPage list_datasets(storage::Database& db, Parameters query) {
 nlohmann::ordered_json show_dataset(storage::Database& db, const std::string& name,
                                     const ShowDatasetOptions& options) {
   const storage::DatasetSummary dataset = find_dataset(db, name);
+  if (dataset.kind == storage::kBroadbandIrradianceKind) {
+    if (options.capture)
+      throw ApiError(404, "unknown_capture", "capture",
+                     "capture: dataset '" + name + "' is a broadband irradiance series");
+    return {{"name", dataset.name},
+            {"format", dataset.format},
+            {"kind", dataset.kind},
+            {"created", dataset.created_utc},
+            {"captures", nlohmann::ordered_json::array()},
+            {"irradiance", irradiance_series_json(db, dataset.id)}};
+  }
   nlohmann::ordered_json captures = nlohmann::ordered_json::array();
   bool found = false;
   for (const storage::StoredCapture& stored : storage::CaptureRepository(db).load(dataset.id)) {
@@ -95,6 +133,7 @@ nlohmann::ordered_json show_dataset(storage::Database& db, const std::string& na
                    "capture: dataset '" + name + "' has no capture '" + *options.capture + "'");
   return {{"name", dataset.name},
           {"format", dataset.format},
+          {"kind", dataset.kind},
           {"created", dataset.created_utc},
           {"captures", std::move(captures)}};
 }
@@ -106,10 +145,12 @@ nlohmann::ordered_json delete_dataset(storage::Database& db, const std::string& 
 }
 
 void check_import_format(const std::string& format) {
-  if (format != kKiderImportFormat && !is_sky_radiance_format(format))
+  if (format != kKiderImportFormat && !is_sky_radiance_format(format) &&
+      !is_irradiance_format(format))
     throw invalid_parameter("format", "'" + format +
                                           "' is not an import format (known: kider, "
-                                          "sky-radiance-csv, sky-radiance-json)");
+                                          "sky-radiance-csv, sky-radiance-json, irradiance-csv, "
+                                          "irradiance-json)");
 }
 
 void check_dataset_name(const std::string& name) {
@@ -134,6 +175,16 @@ nlohmann::ordered_json import_dataset(
   check_dataset_name(name);
   const std::string shown_as =
       source.shown_as.empty() ? source.archive_or_folder.string() : source.shown_as;
+  if (is_irradiance_format(format)) {
+    try {
+      return import_irradiance_samples(
+          db, name, kIrradianceDatasetFormat,
+          read_irradiance_file(source.archive_or_folder, format, source.limits, shown_as));
+    } catch (const storage::SqliteError& e) {
+      if (e.disk_full()) throw insufficient_storage("writing the database");
+      throw;
+    }
+  }
   if (is_sky_radiance_format(format)) {
     try {
       return import_report_json(import_sky_radiance(db, name, source.archive_or_folder, format,

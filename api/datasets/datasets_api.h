@@ -1,14 +1,18 @@
 // /v1/datasets, transport-free: list, show, delete and import stored measurement datasets
 // (docs/data-api.md "Datasets"). The HTTP layer passes the path's dataset name and the query;
 // the answers are JSON:
-//   list:   [{"name", "format", "created", "captures", "samples"}], by name, paged (limit,
-//           cursor: api/paging/list_page.h)
-//   show:   {"name", "format", "created", "captures": [{"label", "time" (ISO, site offset),
+//   list:   [{"name", "format", "kind", "created", "captures", "samples",
+//           "irradiance_samples"}], by name, paged (limit, cursor: api/paging/list_page.h); kind
+//           sky_radiance or broadband_irradiance (docs/data-api.md "Dataset kinds")
+//   show:   {"name", "format", "kind", "created", "captures": [{"label", "time" (ISO, site offset),
 //            "time_utc", "place": {"latitude", "longitude", "elevation_m"}, "sun_zenith",
 //            "sun_azimuth" (computed, SPA without refraction), "sun_azimuth_estimated" (or null),
 //            "samples": N}]}; samples=true adds each capture's samples {"index", "view_zenith",
 //            "view_azimuth" (degrees, clockwise from North), "flags"}, and capture=LABEL keeps one
 //            capture and adds each sample's spectrum {"wavelengths_nm", "radiance"} (W/(m2.sr.nm)).
+//           A broadband_irradiance dataset has no captures and its series instead:
+//           "irradiance": [{"time", "time_utc", "place", "ghi", "dhi", "dni", "averaging_s"}]
+//           by instant (W/m2, s; null where not measured).
 //   import: the import report {"dataset", "added", "unchanged", "samples_added", "seconds"}
 //           (over HTTP, imports run as background jobs: api/imports/).
 // Errors are ApiError: 404 unknown dataset or capture, 400 bad parameter or archive content,
@@ -56,7 +60,8 @@ struct ImportSource {
 };
 // Imports the source into the named dataset. format is kider (an archive or folder) or
 // sky-radiance-csv / sky-radiance-json (one file of the open format, sky_radiance_import.h;
-// 400 invalid_body naming the member). progress is called as
+// 400 invalid_body naming the member) or irradiance-csv / irradiance-json (irradiance_import.h,
+// whose report it returns). progress is called as
 // storage::KiderImportRequest::progress (kider_importer.h). Refusals: 400 invalid_archive,
 // 400 invalid_parameter (name), 409 conflict, 413 too_large naming max_entry_bytes or
 // max_import_bytes, 507 insufficient_storage (SQLITE_FULL).

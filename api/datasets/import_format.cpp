@@ -41,12 +41,18 @@ bool is_sky_radiance_format(std::string_view format) {
   return format == kSkyRadianceCsvFormat || format == kSkyRadianceJsonFormat;
 }
 
+bool is_irradiance_format(std::string_view format) {
+  return format == kIrradianceCsvFormat || format == kIrradianceJsonFormat;
+}
+
 std::string import_format_of(const std::optional<std::string>& format,
                              std::optional<std::string_view> content_type) {
-  if (format && *format != kKiderImportFormat && !is_sky_radiance_format(*format))
+  if (format && *format != kKiderImportFormat && !is_sky_radiance_format(*format) &&
+      !is_irradiance_format(*format))
     throw invalid_parameter("format", "'" + *format +
                                           "' is not an import format (known: kider, "
-                                          "sky-radiance-csv, sky-radiance-json)");
+                                          "sky-radiance-csv, sky-radiance-json, irradiance-csv, "
+                                          "irradiance-json)");
   const std::string type = content_type ? media_type_of(*content_type) : std::string();
   if (type.empty() || type == "application/x-www-form-urlencoded")
     return format.value_or(std::string(kKiderImportFormat));
@@ -56,6 +62,9 @@ std::string import_format_of(const std::optional<std::string>& format,
                    "Content-Type: '" + type +
                        "' is not an import's media type (text/csv, application/json, "
                        "application/octet-stream or an archive type)");
+  // The irradiance formats share the open format's media types.
+  if (format && *format == kIrradianceCsvFormat && named == kSkyRadianceCsvFormat) return *format;
+  if (format && *format == kIrradianceJsonFormat && named == kSkyRadianceJsonFormat) return *format;
   if (format && *format != named)
     throw ApiError(415, "unsupported_media_type", "Content-Type",
                    "Content-Type: '" + type + "' is not of format " + *format);

@@ -142,9 +142,16 @@ EvaluationRequest parse_evaluation_request(storage::Database& db, const std::str
   if (!j.contains("dataset") || !j["dataset"].is_string())
     throw missing_parameter("dataset", "the name of a stored dataset");
   request.dataset = j["dataset"].get<std::string>();
-  if (!storage::DatasetRepository(db).find(request.dataset))
+  const auto dataset = storage::DatasetRepository(db).find(request.dataset);
+  if (!dataset)
     throw ApiError(404, "unknown_dataset", "dataset",
                    "dataset: no dataset named '" + request.dataset + "'");
+  // Broadband series are evaluated by `clearsky evaluate` (docs/data-api.md "Evaluations of
+  // broadband irradiance"); the queued runs compare captures.
+  if (dataset->kind == storage::kBroadbandIrradianceKind)
+    throw ApiError(422, "broadband_dataset", "dataset",
+                   "dataset: '" + request.dataset +
+                       "' is a broadband irradiance series, evaluated with clearsky evaluate");
   const nlohmann::json models = j.value("models", nlohmann::json("all"));
   if (models.is_string()) {
     request.models = {models.get<std::string>()};

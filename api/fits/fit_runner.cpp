@@ -6,14 +6,17 @@
 #include <stdexcept>
 
 #include "api/encode/fit_json.h"
+#include "api/evaluation/broadband_evaluation_runner.h"
 #include "api/evaluation/evaluation_runner.h"
 #include "api/evaluation/evaluations_api.h"
 #include "api/evaluation/prepared_dataset.h"
+#include "api/fits/broadband_fit.h"
 #include "api/request/sky_fit.h"
 #include "models/core/invalid_input.h"
 #include "models/registry.h"
 #include "storage/repositories/dataset_repository.h"
 #include "storage/repositories/fit_repository.h"
+#include "storage/repositories/irradiance_sample_repository.h"
 
 namespace clearsky::api {
 
@@ -130,6 +133,23 @@ std::int64_t run_fit(storage::Database& db, const FitRequest& request,
     id = fits.start(new_fit(db, request, checked));
   }
   try {
+    if (is_broadband_dataset(db, request.dataset)) {
+      // A broadband irradiance series (docs/fits.md "Fits to broadband irradiance").
+      if (!request.captures.empty())
+        throw InvalidInput("captures",
+                           "dataset '" + request.dataset +
+                               "' is a broadband irradiance series: it has no captures");
+      const auto dataset = storage::DatasetRepository(db).find(request.dataset);
+      checked.settings.progress = [&](double fraction, std::string_view stage) {
+        if (request.progress) request.progress(fraction, stage);
+        fits.progress(id, fraction, std::string(stage));
+      };
+      const FitResult result =
+          fit_broadband(*checked.factory, storage::IrradianceSampleRepository(db).list(dataset->id),
+                        checked.settings);
+      fits.finish(id, fit_outcome(result));
+      return id;
+    }
     PreparedDataset prepared = load_prepared_dataset(db, request.dataset);
     std::vector<MeasuredCapture> captures;
     if (request.captures.empty()) {

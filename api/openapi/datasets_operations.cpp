@@ -11,14 +11,35 @@ Json schemas() {
   return parse(R"json({
   "DatasetSummary": {
     "type": "object",
-    "required": ["name", "format", "created", "captures", "samples"],
+    "required": ["name", "format", "kind", "created", "captures", "samples", "irradiance_samples"],
     "additionalProperties": false,
     "properties": {
       "name": {"type": "string"},
-      "format": {"type": "string", "description": "The measurement format: kider2014 (Kider et al. 2014 archives) or sky-radiance (the open format, docs/measurement-formats.md)."},
+      "format": {"type": "string", "description": "The measurement format: kider2014 (Kider et al. 2014 archives), sky-radiance (the open format), irradiance (the open broadband irradiance format) or kider-pyranometer (docs/measurement-formats.md)."},
+      "kind": {"$ref": "#/components/schemas/DatasetKind"},
       "created": {"type": "string", "format": "date-time"},
       "captures": {"type": "integer", "minimum": 0},
-      "samples": {"type": "integer", "minimum": 0}
+      "samples": {"type": "integer", "minimum": 0},
+      "irradiance_samples": {"type": "integer", "minimum": 0, "description": "The instants of a broadband_irradiance dataset."}
+    }
+  },
+  "DatasetKind": {
+    "type": "string",
+    "enum": ["sky_radiance", "broadband_irradiance"],
+    "description": "sky_radiance: captures of spectral sky radiance; broadband_irradiance: a time series of measured GHI, DHI and DNI (docs/data-api.md \"Dataset kinds\")."
+  },
+  "IrradianceSample": {
+    "type": "object",
+    "required": ["time", "time_utc", "place", "ghi", "dhi", "dni", "averaging_s"],
+    "additionalProperties": false,
+    "properties": {
+      "time": {"type": "string", "format": "date-time", "description": "In the UTC offset of the instrument's clock."},
+      "time_utc": {"type": "string", "format": "date-time"},
+      "place": {"$ref": "#/components/schemas/Place"},
+      "ghi": {"type": "number", "nullable": true, "description": "Global horizontal irradiance, W/m2; null when not measured."},
+      "dhi": {"type": "number", "nullable": true, "description": "Diffuse horizontal irradiance, W/m2."},
+      "dni": {"type": "number", "nullable": true, "description": "Direct normal irradiance, W/m2."},
+      "averaging_s": {"type": "number", "nullable": true, "description": "The period the values average, s, when known."}
     }
   },
   "DatasetList": {
@@ -72,13 +93,15 @@ Json schemas() {
   },
   "Dataset": {
     "type": "object",
-    "required": ["name", "format", "created", "captures"],
+    "required": ["name", "format", "kind", "created", "captures"],
     "additionalProperties": false,
     "properties": {
       "name": {"type": "string"},
       "format": {"type": "string"},
+      "kind": {"$ref": "#/components/schemas/DatasetKind"},
       "created": {"type": "string", "format": "date-time"},
-      "captures": {"type": "array", "items": {"$ref": "#/components/schemas/Capture"}}
+      "captures": {"type": "array", "items": {"$ref": "#/components/schemas/Capture"}, "description": "Empty for a broadband_irradiance dataset."},
+      "irradiance": {"type": "array", "items": {"$ref": "#/components/schemas/IrradianceSample"}, "description": "A broadband_irradiance dataset's series, by instant."}
     }
   },
   "DatasetDeleted": {
@@ -88,18 +111,36 @@ Json schemas() {
     "properties": {"deleted": {"type": "string", "description": "The dataset's name."}}
   },
   "ImportReport": {
-    "type": "object",
-    "description": "What an import added (null in an import's state until it succeeds).",
+    "description": "What an import added (null in an import's state until it succeeds): captures, or for the broadband irradiance formats samples.",
     "nullable": true,
-    "required": ["dataset", "added", "unchanged", "samples_added", "seconds"],
-    "additionalProperties": false,
-    "properties": {
-      "dataset": {"type": "string"},
-      "added": {"type": "array", "items": {"type": "string"}, "description": "Capture labels added."},
-      "unchanged": {"type": "array", "items": {"type": "string"}, "description": "Capture labels already stored with the same content."},
-      "samples_added": {"type": "integer", "minimum": 0},
-      "seconds": {"type": "number", "minimum": 0}
-    }
+    "oneOf": [
+      {
+        "type": "object",
+        "required": ["dataset", "added", "unchanged", "samples_added", "seconds"],
+        "additionalProperties": false,
+        "properties": {
+          "dataset": {"type": "string"},
+          "added": {"type": "array", "items": {"type": "string"}, "description": "Capture labels added."},
+          "unchanged": {"type": "array", "items": {"type": "string"}, "description": "Capture labels already stored with the same content."},
+          "samples_added": {"type": "integer", "minimum": 0},
+          "seconds": {"type": "number", "minimum": 0}
+        }
+      },
+      {
+        "type": "object",
+        "required": ["dataset", "kind", "samples_added", "samples_unchanged", "seconds"],
+        "additionalProperties": false,
+        "properties": {
+          "dataset": {"type": "string"},
+          "kind": {"type": "string", "enum": ["broadband_irradiance"]},
+          "samples_added": {"type": "integer", "minimum": 0},
+          "samples_unchanged": {"type": "integer", "minimum": 0, "description": "Samples identical to one the dataset holds."},
+          "first_time": {"type": "string", "format": "date-time"},
+          "last_time": {"type": "string", "format": "date-time"},
+          "seconds": {"type": "number", "minimum": 0}
+        }
+      }
+    ]
   },
   "ImportProgress": {
     "type": "object",
@@ -135,7 +176,7 @@ Json schemas() {
     "properties": {
       "id": {"type": "integer", "minimum": 1},
       "dataset": {"type": "string"},
-      "format": {"type": "string", "enum": ["kider", "sky-radiance-csv", "sky-radiance-json"]},
+      "format": {"type": "string", "enum": ["kider", "sky-radiance-csv", "sky-radiance-json", "irradiance-csv", "irradiance-json"]},
       "source": {"type": "string", "enum": ["upload", "path"]},
       "path": {"type": "string", "nullable": true, "description": "With source=path."},
       "upload_bytes": {"type": "integer", "nullable": true, "description": "With source=upload."},
@@ -220,7 +261,7 @@ Json operations() {
         "headers": {"Link": {"$ref": "#/components/headers/Link"}},
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/DatasetList"},
-          "example": [{"name": "synthetic", "format": "kider2014", "created": "2026-11-23T19:42:13.533Z", "captures": 1, "samples": 81}]
+          "example": [{"name": "synthetic", "format": "kider2014", "kind": "sky_radiance", "created": "2026-11-23T19:42:13.533Z", "captures": 1, "samples": 81, "irradiance_samples": 0}]
         }}
       },
       "400": {"description": "An unknown or invalid parameter."}
@@ -233,7 +274,7 @@ Json operations() {
     "description": "Imports measured skies as a background job (docs/measurement-formats.md): Kider et al. 2014 captures, or a file of the open sky-radiance format (CSV or JSON: format=, or the body's media type text/csv or application/json). An upload is checked whole before it is accepted: the open format's every value (400 invalid_body naming the column or member, the message giving the row), an archive's format (400 invalid_archive naming body). For Kider archives, the body is an archive (streamed to disk under --max-upload-bytes, default 1 GiB), or no body and path= names an archive or folder under one of the server's import roots (--import-root; none by default). The route checks the parameters, name, format and path, then answers 202 with the import's state; follow Location. The import reads at most --max-entry-bytes (default 16 MiB) from one archive entry or file and --max-import-bytes (default 256 MiB) in all, counted as it reads: beyond, it fails with code too_large naming the limit. The import is one transaction: a failure leaves nothing behind.",
     "parameters": [
       {"name": "name", "in": "query", "required": true, "description": "The dataset to import into (created when absent): 1 to 128 characters of A-Z a-z 0-9 . _ -, the first a letter or a digit.", "schema": {"type": "string", "pattern": "^[A-Za-z0-9][A-Za-z0-9._-]{0,127}$"}, "example": "synthetic"},
-      {"name": "format", "in": "query", "required": false, "description": "The measurement format; absent: from the body's media type (text/csv: sky-radiance-csv, application/json: sky-radiance-json), else kider.", "schema": {"type": "string", "enum": ["kider", "sky-radiance-csv", "sky-radiance-json"]}},
+      {"name": "format", "in": "query", "required": false, "description": "The measurement format; absent: from the body's media type (text/csv: sky-radiance-csv, application/json: sky-radiance-json), else kider. The broadband irradiance formats (irradiance-csv, irradiance-json) are named here, with text/csv, application/json or no media type.", "schema": {"type": "string", "enum": ["kider", "sky-radiance-csv", "sky-radiance-json", "irradiance-csv", "irradiance-json"]}},
       {"name": "lat", "in": "query", "required": false, "description": "kider only: the site's latitude, North positive, decimal or DMS (default 42.443449, Cornell).", "schema": {"type": "string"}, "example": "42.443449"},
       {"name": "lon", "in": "query", "required": false, "description": "kider only: the site's longitude, East positive (default -76.481962).", "schema": {"type": "string"}, "example": "-76.481962"},
       {"name": "elevation", "in": "query", "required": false, "description": "kider only: the site's elevation above sea level, m (default 250).", "schema": {"type": "number", "minimum": -500, "maximum": 9000}},
@@ -281,7 +322,7 @@ Json operations() {
         "description": "The dataset.",
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/Dataset"},
-          "example": {"name": "synthetic", "format": "kider2014", "created": "2026-11-23T19:42:13.533Z", "captures": [{"label": "2013-05-27___11.45.00", "time": "2013-05-27T11:45:00-04:00", "time_utc": "2013-05-27T15:45:00Z", "place": {"latitude": 42.443449, "longitude": -76.481962, "elevation_m": 250.0}, "sun_zenith": 26.651259213110777, "sun_azimuth": 136.07696990085265, "sun_azimuth_estimated": null, "samples": 81}]}
+          "example": {"name": "synthetic", "format": "kider2014", "kind": "sky_radiance", "created": "2026-11-23T19:42:13.533Z", "captures": [{"label": "2013-05-27___11.45.00", "time": "2013-05-27T11:45:00-04:00", "time_utc": "2013-05-27T15:45:00Z", "place": {"latitude": 42.443449, "longitude": -76.481962, "elevation_m": 250.0}, "sun_zenith": 26.651259213110777, "sun_azimuth": 136.07696990085265, "sun_azimuth_estimated": null, "samples": 81}]}
         }}
       },
       "400": {"description": "An unknown parameter or a samples value other than true or false."},

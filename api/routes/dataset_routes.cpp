@@ -6,6 +6,7 @@
 #include "api/datasets/datasets_api.h"
 #include "api/datasets/import_format.h"
 #include "api/datasets/import_site_clock.h"
+#include "api/datasets/irradiance_import.h"
 #include "api/datasets/sky_radiance_import.h"
 #include "api/datasets/upload_spool.h"
 #include "api/error/api_error.h"
@@ -79,9 +80,11 @@ ApiResponse import_dataset_route(const ApiContext& context, const ApiRequest& re
   const std::optional<std::string> path = p.text("path");
   // A path import has no body, hence no media type of its own.
   what.format = import_format_of(format, path ? std::nullopt : request.header("Content-Type"));
-  const bool sky_radiance = is_sky_radiance_format(what.format);
-  if (sky_radiance) {
-    // The open format carries each capture's site and clock itself.
+  const bool irradiance = is_irradiance_format(what.format);
+  // The open formats' files (sky radiance or broadband irradiance).
+  const bool open_format = is_sky_radiance_format(what.format) || irradiance;
+  if (open_format) {
+    // The open formats carry each row's site and clock themselves.
     for (const char* name : {"lat", "lon", "elevation", "utc_offset"})
       if (p.has(name))
         throw invalid_parameter(name, "only for kider archives: the " + what.format +
@@ -108,8 +111,8 @@ ApiResponse import_dataset_route(const ApiContext& context, const ApiRequest& re
     confine_to = resolved->root;
   } else {
     if (spool->size_bytes() == 0)
-      throw missing_parameter("body", sky_radiance ? "the " + what.format + " file"
-                                                   : "the archive (.7z, zip or tar), or path=");
+      throw missing_parameter("body", open_format ? "the " + what.format + " file"
+                                                  : "the archive (.7z, zip or tar), or path=");
     what.source = "upload";
     what.upload_bytes = static_cast<std::int64_t>(spool->size_bytes());
     source = spool->finish();
@@ -120,7 +123,9 @@ ApiResponse import_dataset_route(const ApiContext& context, const ApiRequest& re
   // archive's format from its first entry (a CSV sent as an archive is refused here, not by
   // a failed import). The messages name the body, never the spool file.
   if (!resolved) {
-    if (sky_radiance) {
+    if (irradiance) {
+      read_irradiance_file(source, what.format, data.imports->limits(), "body");
+    } else if (open_format) {
       read_sky_radiance_file(source, what.format, data.imports->limits(), "body");
     } else {
       try {

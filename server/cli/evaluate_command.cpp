@@ -9,10 +9,12 @@
 // (docs/data-api.md "Evaluation parameters"). --out-of-domain exclude|clamp is its
 // "out_of_domain" parameter: what is done with the samples a model cannot answer (docs/data-api.md
 // "Samples a model cannot answer"); it overrides the same key of --parameters.
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 
 #include "api/encode/evaluation_json.h"
+#include "api/evaluation/broadband_evaluation_runner.h"
 #include "api/evaluation/evaluation_fit.h"
 #include "api/evaluation/evaluation_runner.h"
 #include "api/evaluation/evaluations_api.h"
@@ -84,6 +86,33 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
     }
     if (!options->out_of_domain.empty())
       request.parameters[api::kOutOfDomainParameter] = options->out_of_domain;
+    if (api::is_broadband_dataset(db, request.dataset)) {
+      // A broadband irradiance series: each model's GHI, DHI and DNI against it, W/m2.
+      api::BroadbandEvaluationReport broadband;
+      try {
+        broadband = api::run_broadband_evaluation(db, request, registered_models());
+      } catch (const api::ApiError& e) {
+        if (e.parameter() == "model") throw CLI::ValidationError("--models", e.reason());
+        throw;
+      }
+      if (options->json) {
+        std::cout << api::broadband_evaluation_json(broadband, options->samples != "false").dump(2)
+                  << '\n';
+        return;
+      }
+      std::cout << std::fixed << std::setprecision(2);
+      for (const api::BroadbandModelRun& run : broadband.models) {
+        std::cout << run.model_id << ": RMSE " << run.rmse_w_m2.value_or(std::nan(""))
+                  << " W/m2 over " << run.samples_sun_up << " of " << run.samples
+                  << " samples with the sun up (run " << run.run_id << ", precompute "
+                  << run.precompute_seconds << " s, evaluate " << run.evaluate_seconds << " s)\n";
+        for (const api::BroadbandComponentResult& c : run.components)
+          std::cout << "  " << c.component << ": RMSE " << c.rmse_w_m2.value_or(std::nan(""))
+                    << " W/m2, mean bias " << c.mean_bias_w_m2.value_or(std::nan(""))
+                    << " W/m2 over " << c.samples_compared << " samples\n";
+      }
+      return;
+    }
     const api::EvaluationReport report = api::run_evaluation(db, request);
     const api::SampleDetail samples = options->samples == "spectra" ? api::SampleDetail::spectra
                                       : options->samples == "true"  ? api::SampleDetail::summary

@@ -10,6 +10,7 @@
 
 #include "api/encode/fit_json.h"
 #include "api/error/api_error.h"
+#include "api/evaluation/broadband_evaluation_runner.h"
 #include "api/fits/fit_runner.h"
 #include "api/http/json_body.h"
 #include "models/core/invalid_input.h"
@@ -44,7 +45,8 @@ std::string values(const nlohmann::json& named) {
   return out;
 }
 
-void print_text(const nlohmann::json& fit) {
+// unit: of the RMSE, mW/(m2.sr.nm) for captures, W/m2 for a broadband irradiance series.
+void print_text(const nlohmann::json& fit, const char* unit) {
   std::cout << "fit " << fit["id"] << ": " << fit["model"].get<std::string>() << " on "
             << fit["dataset"].get<std::string>() << ": " << values(fit["values"]) << '\n';
   std::cout << "  RMSE before " << number(fit["rmse_before"], 3) << ", after "
@@ -52,7 +54,7 @@ void print_text(const nlohmann::json& fit) {
             << ")";
   if (!fit["cross_validated_rmse"].is_null())
     std::cout << ", cross-validated " << number(fit["cross_validated_rmse"], 3);
-  std::cout << " mW/(m2.sr.nm)\n";
+  std::cout << " " << unit << "\n";
   for (const nlohmann::json& u : fit["uncertainty"])
     std::cout << "  " << u["name"].get<std::string>() << ": RMSE within 1% of the minimum for ["
               << number(u["scan"][0], 4) << ", " << number(u["scan"][1], 4) << "] (scan), ["
@@ -161,7 +163,7 @@ void add_fit_command(CLI::App& app, const std::string& software_version) {
     if (options->json)
       std::cout << fit.dump(2) << '\n';
     else
-      print_text(fit);
+      print_text(fit, api::is_broadband_dataset(db, request.dataset) ? "W/m2" : "mW/(m2.sr.nm)");
   });
 }
 

@@ -10,15 +10,18 @@
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "api/datasets/datasets_api.h"
 #include "api/datasets/import_format.h"
 #include "api/datasets/import_site_clock.h"
+#include "api/datasets/irradiance_import.h"
 #include "api/datasets/sky_radiance_import.h"
 #include "api/error/api_error.h"
 #include "server/cli/commands.h"
 #include "server/cli/database_option.h"
 #include "storage/importers/kider_importer.h"
+#include "storage/importers/kider_pyranometer.h"
 #include "storage/repositories/dataset_name.h"
 
 namespace clearsky::cli {
@@ -85,6 +88,108 @@ void add_sky_radiance_import(CLI::App& import) {
   });
 }
 
+// `clearsky import irradiance FILE... --name NAME [--db PATH]`: files of the open broadband
+// irradiance format (docs/measurement-formats.md "Broadband irradiance"), CSV or JSON by their
+// extension, in one transaction each; the report is the API's, as JSON.
+void add_irradiance_import(CLI::App& import) {
+  auto* command = import.add_subcommand(
+      "irradiance", "Files of the open broadband irradiance format (.csv or .json), checked whole");
+  struct Options {
+    std::vector<std::string> files;
+    std::string name;
+    std::string db = kDefaultDatabasePath;
+  };
+  auto options = std::make_shared<Options>();
+  command->add_option("files", options->files, "CSV (.csv) or JSON (.json) files")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("--name", options->name, "Dataset name")->required();
+  add_database_option(*command, options->db);
+  command->callback([options] {
+    api::check_dataset_name(options->name);
+    storage::Database db = open_cli_database(options->db);
+    for (const std::string& file : options->files) {
+      const std::filesystem::path path(file);
+      const std::string extension = path.extension().string();
+      if (extension != ".csv" && extension != ".json")
+        throw CLI::ValidationError("files", file + ": neither .csv nor .json");
+      const std::string_view format =
+          extension == ".csv" ? api::kIrradianceCsvFormat : api::kIrradianceJsonFormat;
+      // The operator's own files: no import limits beyond the machine's.
+      storage::ImportByteLimits limits;
+      limits.max_entry_bytes = limits.max_import_bytes = std::numeric_limits<std::int64_t>::max();
+      std::cout << api::import_irradiance_samples(
+                       db, options->name, api::kIrradianceDatasetFormat,
+                       api::read_irradiance_file(path, format, limits, file))
+                       .dump(2)
+                << '\n';
+    }
+  });
+}
+
+// `clearsky import pyranometer PATH... --name NAME [--lat --lon --elevation --utc-offset]
+// [--first-record LOCAL_TIME] [--db PATH]`: the Kider et al. 2014 pyranometer records
+// (storage/importers/kider_pyranometer.h), per-capture files, the day file, or folders of them,
+// at the site and on the clock given as for `import kider`.
+void add_pyranometer_import(CLI::App& import) {
+  auto* command = import.add_subcommand(
+      "pyranometer",
+      "Kider et al. 2014 pyranometer records (YYYY.MM.DD.HH.MM.SS.txt, pyranometer_full_day.txt)");
+  struct Options {
+    std::vector<std::string> paths;
+    std::string name;
+    std::string db = kDefaultDatabasePath;
+    std::optional<std::string> first_record;
+    std::map<std::string, std::string> site_clock;
+  };
+  auto options = std::make_shared<Options>();
+  command->add_option("paths", options->paths, "Record files or folders")
+      ->required()
+      ->check(CLI::ExistingPath);
+  command->add_option("--name", options->name, "Dataset name")->required();
+  add_database_option(*command, options->db);
+  command->add_option_function<std::string>(
+      "--first-record", [options](const std::string& value) { options->first_record = value; },
+      "Local time of the day file's first record, YYYY-MM-DDThh:mm:ss (default: the earliest "
+      "per-capture record given with it)");
+  for (const auto& [name, what] :
+       {std::pair<std::string, std::string>{"lat", "Site latitude (default: Cornell)"},
+        {"lon", "Site longitude (default: Cornell)"},
+        {"elevation", "Site elevation, m (default: 250)"},
+        {"utc-offset", "UTC offset of the records' clock (default: -04:00)"}}) {
+    const std::string parameter = name == "utc-offset" ? "utc_offset" : name;
+    command->add_option_function<std::string>(
+        "--" + name,
+        [options, parameter](const std::string& value) { options->site_clock[parameter] = value; },
+        what);
+  }
+  command->callback([options] {
+    api::check_dataset_name(options->name);
+    api::Parameters site_clock("clearsky import pyranometer");
+    for (const auto& [name, value] : options->site_clock) site_clock.add(name, value);
+    storage::KiderImportOptions clock;
+    try {
+      clock = api::parse_import_site_clock(site_clock);
+    } catch (const api::ApiError& e) {
+      std::string option = "--" + e.parameter();
+      std::replace(option.begin(), option.end(), '_', '-');
+      throw CLI::ValidationError(option, e.reason());
+    }
+    std::vector<std::filesystem::path> paths(options->paths.begin(), options->paths.end());
+    storage::KiderPyranometerRead read;
+    try {
+      read = storage::read_kider_pyranometer(paths, clock, options->first_record);
+    } catch (const std::invalid_argument& e) {
+      throw CLI::ValidationError("paths", e.what());
+    }
+    storage::Database db = open_cli_database(options->db);
+    nlohmann::ordered_json report = api::import_irradiance_samples(
+        db, options->name, api::kKiderPyranometerDatasetFormat, read.samples);
+    report["notes"] = read.notes;
+    std::cout << report.dump(2) << '\n';
+  });
+}
+
 }  // namespace
 
 void add_import_command(CLI::App& app) {
@@ -130,6 +235,8 @@ void add_import_command(CLI::App& app) {
   }
   kider->add_flag("--json", options->json, "Print the import report as JSON (no progress lines)");
   add_sky_radiance_import(*import);
+  add_irradiance_import(*import);
+  add_pyranometer_import(*import);
   kider->callback([options] {
     storage::Database db = open_cli_database(options->db);
     storage::KiderImportRequest request;

@@ -13,18 +13,22 @@ constexpr const char* kSummarySelect =
     "SELECT d.id, d.name, d.format, d.created_utc,"
     " (SELECT COUNT(*) FROM captures c WHERE c.dataset_id = d.id),"
     " (SELECT COUNT(*) FROM samples s JOIN captures c ON s.capture_id = c.id WHERE c.dataset_id = "
-    "d.id)"
+    "d.id),"
+    " d.kind, (SELECT COUNT(*) FROM irradiance_samples i WHERE i.dataset_id = d.id)"
     " FROM datasets d";
 
 DatasetSummary read_summary(const Statement& row) {
-  return {row.column_int64(0), row.column_text(1),  row.column_text(2),
-          row.column_text(3),  row.column_int64(4), row.column_int64(5)};
+  return {row.column_int64(0), row.column_text(1),  row.column_text(2), row.column_text(3),
+          row.column_int64(4), row.column_int64(5), row.column_text(6), row.column_int64(7)};
 }
 
 }  // namespace
 
-std::int64_t DatasetRepository::find_or_create(const std::string& name, const std::string& format) {
+std::int64_t DatasetRepository::find_or_create(const std::string& name, const std::string& format,
+                                               std::string_view kind) {
   if (name.empty()) throw std::invalid_argument("dataset name must not be empty");
+  // A format belongs to one kind (kider2014 and the sky-radiance format to sky_radiance, the
+  // irradiance formats to broadband_irradiance), so the format's check covers the kind's.
   auto query = db_.prepare("SELECT id, format FROM datasets WHERE name = ?");
   query.bind(1, name);
   if (query.step()) {
@@ -33,8 +37,14 @@ std::int64_t DatasetRepository::find_or_create(const std::string& name, const st
                            ", not " + format);
     return query.column_int64(0);
   }
-  auto insert = db_.prepare("INSERT INTO datasets (name, format, created_utc) VALUES (?, ?, ?)");
+  // A sky-radiance dataset takes the column's default, so that this also writes the databases
+  // of versions before 9 that the migration tests build.
+  auto insert = db_.prepare(
+      kind == kSkyRadianceKind ? "INSERT INTO datasets (name, format, created_utc) VALUES (?, ?, ?)"
+                               : "INSERT INTO datasets (name, format, created_utc, kind)"
+                                 " VALUES (?, ?, ?, ?)");
   insert.bind(1, name).bind(2, format).bind(3, utc_now_iso8601());
+  if (kind != kSkyRadianceKind) insert.bind(4, kind);
   insert.run();
   return db_.last_insert_rowid();
 }

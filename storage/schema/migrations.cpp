@@ -2,7 +2,9 @@
 // datasets of measured captures, their samples (spectra as float64 blobs), evaluation runs with
 // per-capture results, and scheduled evaluation jobs; dataset imports; from version 4, ids never
 // reused and run parameters as JSON (docs/data-api.md); from version 7, atmosphere fits
-// (docs/fits.md). Times are ISO 8601 UTC text except capture instants (unix seconds).
+// (docs/fits.md); from version 9, users' aerosol inversions; from version 10, datasets of
+// broadband irradiance time series. Times are ISO
+// 8601 UTC text except capture and irradiance sample instants (unix seconds).
 #include "storage/schema/migrations.h"
 
 #include <string>
@@ -377,7 +379,7 @@ CREATE INDEX fits_by_dataset ON fits(dataset_id);
 ALTER TABLE jobs ADD COLUMN skipped_count INTEGER NOT NULL DEFAULT 0;
 ALTER TABLE jobs ADD COLUMN last_skipped_utc TEXT;
 )sql",
-      // Users' AERONET phase-function inversions (docs/data-api.md "Aerosol inversions",
+      // Version 9: users' AERONET phase-function inversions (docs/data-api.md "Aerosol inversions",
       // models/measured_aerosols/README.md): the file's bytes as uploaded, validated by the
       // reader of models/aeronet before the row is written, with what the reader found in it
       // (site, days, retrievals) and its FNV-1a content hash, which keys the model's tables in
@@ -397,6 +399,46 @@ CREATE TABLE aerosol_inversions (
   size_bytes INTEGER NOT NULL,
   content BLOB NOT NULL,
   created_utc TEXT NOT NULL
+);
+)sql",
+      // Version 10 (docs/data-api.md "Dataset kinds", docs/measurement-formats.md "Broadband
+      // irradiance"): a dataset is of one kind, `sky_radiance` (captures of spectral sky
+      // radiance, every dataset stored before) or `broadband_irradiance` (a time series of
+      // horizontal irradiance, W/m2, from a pyranometer or a weather file). An irradiance sample
+      // is an instant (unix seconds with the UTC offset of its clock), a site, and any of
+      // global horizontal (GHI), diffuse horizontal (DHI) and direct normal (DNI) irradiance,
+      // at least one, with the period it averages when known. Instants may repeat (a logger
+      // writing its clock to the tenth of a minute): samples keep their file order by id. An
+      // evaluation run of such a dataset has, per measured component, its RMSE and mean bias
+      // (model minus measured, W/m2) over the samples compared and every sample's error
+      // (float64 blob in the dataset's sample order, NaN where not compared: the sun down or
+      // the component not measured).
+      R"sql(
+ALTER TABLE datasets ADD COLUMN kind TEXT NOT NULL DEFAULT 'sky_radiance'
+  CHECK (kind IN ('sky_radiance', 'broadband_irradiance'));
+CREATE TABLE irradiance_samples (
+  id INTEGER PRIMARY KEY,
+  dataset_id INTEGER NOT NULL REFERENCES datasets(id) ON DELETE CASCADE,
+  time_utc_s REAL NOT NULL,
+  utc_offset_minutes INTEGER NOT NULL,
+  latitude_deg REAL NOT NULL,
+  longitude_deg REAL NOT NULL,
+  elevation_m REAL NOT NULL,
+  ghi_w_m2 REAL,
+  dhi_w_m2 REAL,
+  dni_w_m2 REAL,
+  averaging_s REAL CHECK (averaging_s IS NULL OR averaging_s > 0),
+  CHECK (ghi_w_m2 IS NOT NULL OR dhi_w_m2 IS NOT NULL OR dni_w_m2 IS NOT NULL)
+);
+CREATE INDEX irradiance_samples_by_dataset ON irradiance_samples(dataset_id, time_utc_s);
+CREATE TABLE evaluation_irradiance_results (
+  run_id INTEGER NOT NULL REFERENCES evaluation_runs(id) ON DELETE CASCADE,
+  component TEXT NOT NULL CHECK (component IN ('ghi', 'dhi', 'dni')),
+  rmse_w_m2 REAL,
+  mean_bias_w_m2 REAL,
+  samples_compared INTEGER NOT NULL,
+  errors_w_m2 BLOB NOT NULL,
+  PRIMARY KEY (run_id, component)
 );
 )sql",
   };

@@ -2,7 +2,9 @@
 // every one refuses a query parameter it does not take (GET /v1/jobs/{id} included), ids in
 // the path are checked, creations answer with their Location, an upload is read through the
 // BodyReader into the spool (and a body above the upload limit is a 413), and a server without
-// a database answers 404 no_database.
+// a database answers 404 no_database; an upload of the broadband irradiance format is checked
+// whole before the 202 (400 naming the column, 415 naming Content-Type) and its answers name no
+// server path.
 #include <gtest/gtest.h>
 
 #include "api/evaluation/evaluation_pool.h"
@@ -55,16 +57,23 @@ class DataRouteHandlers : public ::testing::Test {
   // The route's handler on method and target ("/v1/jobs/1?x=1"), as the server calls it.
   ApiResponse call(const std::string& method, const std::string& target,
                    const std::string& body = "", BodyReader* reader = nullptr,
-                   bool with_data = true) {
+                   bool with_data = true, const std::string& content_type = "") {
     ApiRequest request;
     request.method = method;
     const std::size_t question = target.find('?');
     request.path = target.substr(0, question);
     if (question != std::string::npos) {
-      const std::string query = target.substr(question + 1);
-      const std::size_t equals = query.find('=');
-      request.query.emplace_back(query.substr(0, equals), query.substr(equals + 1));
+      std::string query = target.substr(question + 1);
+      for (;;) {
+        const std::size_t amp = query.find('&');
+        const std::string pair = query.substr(0, amp);
+        const std::size_t equals = pair.find('=');
+        request.query.emplace_back(pair.substr(0, equals), pair.substr(equals + 1));
+        if (amp == std::string::npos) break;
+        query = query.substr(amp + 1);
+      }
     }
+    if (!content_type.empty()) request.headers.emplace_back("Content-Type", content_type);
     const RouteMatch match = match_route(method, request.path);
     EXPECT_NE(match.route, nullptr) << method << " " << target;
     if (match.route == nullptr) return {};
@@ -163,6 +172,39 @@ TEST_F(DataRouteHandlers, UploadsAreReadThroughTheBodyReader) {
   StringBodyReader empty("", 64);
   EXPECT_EQ(json_of(call("POST", "/v1/datasets?name=e", "", &empty))["error"]["parameter"], "body");
   imports.reset();  // waits for the queued import
+}
+
+TEST_F(DataRouteHandlers, BroadbandIrradianceUploadsAreCheckedBefore202) {
+  data.upload_max_bytes = 100000;
+  const std::string header = "time,latitude,longitude,elevation_m,ghi\n";
+  const std::string good = header + "2013-05-27T09:30:00-04:00,42.44,-76.48,250,654.84\n";
+  StringBodyReader bad_body(header + "2013-05-27T09:30:00-04:00,42.44,-76.48,250,bright\n", 64);
+  const ApiResponse bad =
+      call("POST", "/v1/datasets?name=roof&format=irradiance-csv", "", &bad_body, true, "text/csv");
+  EXPECT_EQ(bad.status, 400) << bad.body;
+  EXPECT_EQ(json_of(bad)["error"]["parameter"], "ghi");
+  EXPECT_EQ(bad.body.find(dir.path.string()), std::string::npos) << bad.body;
+
+  StringBodyReader wrong_type_body(good, 64);
+  const ApiResponse wrong_type = call("POST", "/v1/datasets?name=roof&format=irradiance-csv", "",
+                                      &wrong_type_body, true, "application/json");
+  EXPECT_EQ(wrong_type.status, 415);
+  EXPECT_EQ(json_of(wrong_type)["error"]["parameter"], "Content-Type");
+
+  StringBodyReader site_body(good, 64);
+  EXPECT_EQ(json_of(call("POST", "/v1/datasets?name=roof&format=irradiance-csv&lat=40", "",
+                         &site_body, true, "text/csv"))["error"]["parameter"],
+            "lat");
+
+  StringBodyReader good_body(good, 64);
+  const ApiResponse accepted = call("POST", "/v1/datasets?name=roof&format=irradiance-csv", "",
+                                    &good_body, true, "text/csv");
+  ASSERT_EQ(accepted.status, 202) << accepted.body;
+  imports.reset();  // waits for the import
+  const nlohmann::json shown = json_of(call("GET", "/v1/datasets/roof"));
+  EXPECT_EQ(shown["kind"], "broadband_irradiance");
+  ASSERT_EQ(shown["irradiance"].size(), 1u);
+  EXPECT_EQ(shown["irradiance"][0]["ghi"], 654.84);
 }
 
 TEST_F(DataRouteHandlers, WithoutADatabaseTheDataRoutesAnswer404) {
