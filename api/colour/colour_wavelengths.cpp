@@ -22,7 +22,7 @@ std::optional<ColourError> draft_colour_error(const std::string& model_id) {
       {"nishita93", {0.26, 0.37, 0.53}},
       {"nishita96", {0.20, 0.37, 0.51}},
       {"preetham", {0.42, 0.95, 1.22}},
-      {"oneal", {0.18, 0.66, 0.79}},
+      {"oneal", {0.21, 0.35, 0.42}},
       {"haber", {0.18, 0.28, 0.41}},
       {"bruneton", {0.17, 0.38, 0.66}},
       {"elek", {0.17, 0.38, 0.66}},
