@@ -12,6 +12,7 @@
 #include "api/evaluation/evaluation_fit.h"
 #include "api/http/json_body.h"
 #include "api/parse/iso8601_time.h"
+#include "api/request/aerosols_option.h"
 #include "api/request/sky_request.h"
 #include "storage/repositories/dataset_repository.h"
 #include "storage/repositories/evaluation_run_repository.h"
@@ -118,6 +119,7 @@ nlohmann::json parse_evaluation_parameters(const nlohmann::json& parameters,
       if (spec.integer && number != std::floor(number))
         throw invalid_parameter(name, "must be an integer");
     }
+    check_aerosols_option(name, number);
   }
   try {
     for (const ModelFactory* model : models)

@@ -89,7 +89,7 @@ Json common_components() {
       "properties": {
         "code": {
           "type": "string",
-          "description": "e.g. invalid_parameter, unknown_parameter, missing_parameter, conflicting_parameters, invalid_body, unknown_model, unknown_dataset, unknown_fit, fit_not_succeeded (409), fit_model_mismatch (409), not_found, method_not_allowed (405, with an Allow header, for a method a path does not serve), too_large, model_cannot_answer, model_not_ready, busy, unauthorized, writes_disabled, no_database (404 on a query replica, serve --role query: parameter role), draining (/readyz of a stopping server), path_imports_disabled, path_not_importable, insufficient_storage (507), internal_error"
+          "description": "e.g. invalid_parameter, unknown_parameter, missing_parameter, conflicting_parameters, invalid_body, unknown_model, unknown_dataset, unknown_fit, unknown_aerosols (404: no such stored aerosol inversion, also for aerosols= of measured_aerosols), fit_not_succeeded (409), fit_model_mismatch (409), not_found, method_not_allowed (405, with an Allow header, for a method a path does not serve), too_large, model_cannot_answer, model_not_ready, busy, unauthorized, writes_disabled, no_database (404 on a query replica, serve --role query: parameter role), draining (/readyz of a stopping server), path_imports_disabled, path_not_importable, insufficient_storage (507), internal_error"
         },
         "message": {"type": "string"},
         "parameter": {

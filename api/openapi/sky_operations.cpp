@@ -490,7 +490,8 @@ void add_sky_errors(Json& operation, bool get) {
   r["404"] = error_response(
       "No served model has this id (code unknown_model), or no stored fit matches fit= (code "
       "unknown_fit), or fit= on a server without a database (code no_database, parameter "
-      "fit).");
+      "fit), or aerosols= of measured_aerosols names no stored inversion (code "
+      "unknown_aerosols, parameter aerosols; on a query replica every id but 0).");
   r["404"]["content"]["application/json"]["example"] = parse(
       R"json({"error": {"code": "unknown_model", "message": "model: no model 'nope' (available: preetham, hosek)", "parameter": "model"}})json");
   r["409"] = error_response(

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "api/error/api_error.h"
+#include "api/request/aerosols_option.h"
 #include "api/request/place_time.h"
 #include "models/atmosphere/atmosphere_parameter_table.h"
 #include "models/core/numeric.h"
@@ -77,6 +78,7 @@ ModelConfig parse_config(Parameters& p, const ModelDescriptor& descriptor) {
     const double value = *p.number(spec.name, spec.min_value, spec.max_value);
     if (spec.integer && value != std::floor(value))
       throw invalid_parameter(spec.name, "must be an integer");
+    check_aerosols_option(spec.name, value);
     if (spec.atmosphere) {
       if (!set_atmosphere_parameter(config.atmosphere, spec.name, value)) {
         throw std::logic_error("descriptor of " + descriptor.id +

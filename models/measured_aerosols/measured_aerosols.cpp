@@ -3,6 +3,8 @@
 
 #include "models/atmosphere/atmosphere_parameter_table.h"
 #include "models/core/embedded_data.h"
+#include "models/core/invalid_input.h"
+#include "models/measured_aerosols/aerosol_inversion_source.h"
 #include "models/measured_aerosols/measured_aerosol_optics.h"
 
 namespace clearsky {
@@ -10,9 +12,19 @@ namespace clearsky {
 namespace {
 
 constexpr const char* kInversionPath = "aeronet/130527_130527_Egbert.pfn";
+// Ids are SQLite rowids; this bound keeps them within what the options parse as integers.
+constexpr double kMaxAerosolsId = 2147483647.0;
 
 std::vector<ParameterSpec> parameters() {
   std::vector<ParameterSpec> p = {
+      {.name = kAerosolsOption,
+       .description =
+           "id of an uploaded AERONET inversion (POST /v1/aerosols); 0: the shipped Egbert "
+           "2013-05-27 file. Names stored data: never swept or fitted",
+       .default_value = 0.0,
+       .min_value = 0.0,
+       .max_value = kMaxAerosolsId,
+       .integer = true},
       {.name = "retrieval_time_utc_h",
        .unit = "h",
        .description =
@@ -35,9 +47,17 @@ std::vector<ParameterSpec> parameters() {
   return p;
 }
 
-std::shared_ptr<const BrunetonModel> build_default(const ValidatedConfig& config,
-                                                   const PrecomputeContext& context) {
-  return build_measured_aerosols(config, context, default_aerosol_inversion());
+// The shipped file for aerosols=0, else the uploaded inversion the installed source returns
+// (aerosol_inversion_source.h); an id it does not know is refused naming aerosols.
+std::shared_ptr<const BrunetonModel> build_selected(const ValidatedConfig& config,
+                                                    const PrecomputeContext& context) {
+  const auto id = static_cast<std::int64_t>(config.option(kAerosolsOption));
+  if (id == 0) return build_measured_aerosols(config, context, default_aerosol_inversion());
+  const std::optional<std::string> bytes = aerosol_inversion_bytes(id);
+  if (!bytes) {
+    throw InvalidInput(kAerosolsOption, "no aerosol inversion " + std::to_string(id));
+  }
+  return build_measured_aerosols(config, context, aeronet::parse_phase_function_file(*bytes));
 }
 
 }  // namespace
@@ -70,7 +90,7 @@ const ModelDescriptor& measured_aerosols_descriptor() {
 }
 
 ModelFactory measured_aerosols_factory() {
-  return make_model_factory<&measured_aerosols_descriptor, &build_default,
+  return make_model_factory<&measured_aerosols_descriptor, &build_selected,
                             &BrunetonModel::estimated_table_bytes>();
 }
 

@@ -3,10 +3,12 @@
 // inversion (Dubovik and King 2000) instead of the Angstrom law and the Cornette-Shanks phase
 // function: the retrieval's optical depth spectrum and phase functions per wavelength
 // (models/measured_aerosols/measured_aerosol_optics.h; README.md here). The inversion is the
-// one in models/data/aeronet (Egbert, 2013-05-27, five retrievals).
+// one in models/data/aeronet (Egbert, 2013-05-27, five retrievals), or with aerosols=ID an
+// uploaded one, found through models/measured_aerosols/aerosol_inversion_source.h.
 //
 // | parameter                    | unit | default | range     | meaning                                                          |
 // |------------------------------|------|---------|-----------|------------------------------------------------------------------|
+// | aerosols                     | -    | 0       | [0, 2147483647] | an uploaded inversion's id (aerosol_inversion_source.h); 0: the shipped file |
 // | retrieval_time_utc_h         | h    | -1      | [-1, 24]  | the retrieval nearest this UTC time; negative: the day's mean    |
 // | aod_scale                    | -    | 1       | [0.05, 5] | scale of the retrieved aerosol optical depth                     |
 // | scattering_orders            | -    | 4       | [1, 10]   | orders of scattering precomputed                                 |

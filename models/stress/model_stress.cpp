@@ -12,6 +12,7 @@
 #include "models/core/fit_domain.h"
 #include "models/core/invalid_input.h"
 #include "models/core/numeric.h"
+#include "models/measured_aerosols/aerosol_inversion_source.h"
 #include "models/stress/documented_jumps.h"
 #include "models/stress/documented_limits.h"
 #include "models/stress/domain_sweeps.h"
@@ -99,7 +100,10 @@ class ModelStress {
     }
     if (runs("parameters"))
       for (const ParameterSpec& p : d.parameters)
-        if (p.atmosphere || options_.sweep_options) sweep_parameter(p);
+        // An option naming stored data (measured_aerosols' aerosols, an uploaded inversion's
+        // id) is no quantity to sweep: most ids name nothing.
+        if ((p.atmosphere || options_.sweep_options) && p.name != kAerosolsOption)
+          sweep_parameter(p);
     if (model) {
       for (BoundCheck* check : {&report_.symmetry, &report_.energy, &report_.radiance_below_sun})
         apply_documented_limit(*model, *check);

@@ -20,6 +20,7 @@
 #include "api/evaluation/evaluations_api.h"
 #include "api/http/json_body.h"
 #include "models/registry.h"
+#include "server/cli/aerosol_inversion_source_installed.h"
 #include "server/cli/commands.h"
 #include "server/cli/database_option.h"
 
@@ -62,6 +63,7 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
       ->check(CLI::IsMember({"true", "false", "spectra"}));
   command->callback([options, software_version] {
     storage::Database db = open_cli_database(options->db);
+    const AerosolInversionSourceInstalled aerosol_source(options->db);
     api::EvaluationRequest request;
     request.dataset = options->dataset;
     request.models = options->models;

@@ -14,6 +14,7 @@
 #include "api/fits/fit_runner.h"
 #include "api/http/json_body.h"
 #include "models/core/invalid_input.h"
+#include "server/cli/aerosol_inversion_source_installed.h"
 #include "server/cli/commands.h"
 #include "server/cli/database_option.h"
 #include "storage/repositories/fit_repository.h"
@@ -146,6 +147,7 @@ void add_fit_command(CLI::App& app, const std::string& software_version) {
       request.search_options =
           json_option(options->search_options, "--search-options", "search_options");
     storage::Database db = open_cli_database(options->db);
+    const AerosolInversionSourceInstalled aerosol_source(options->db);
     if (!options->json)
       request.progress = [last = std::string()](double fraction, std::string_view stage) mutable {
         if (stage == last) return;

@@ -23,6 +23,7 @@
 #include "models/registry.h"
 #include "server/auth/token_file.h"
 #include "server/cache/file_table_cache.h"
+#include "server/cli/aerosol_inversion_source_installed.h"
 #include "server/cli/commands.h"
 #include "server/cli/database_option.h"
 #include "server/http/http_server.h"
@@ -190,6 +191,9 @@ void run_server(const server::ServerConfig& config, const std::string& software_
   // The writer's database is opened before the tables start, so that a bad --db fails at once.
   std::optional<WriterServices> services;
   if (writer) services.emplace(config, import_roots, registered, software_version);
+  // A query replica installs no inversion source: every aerosols= id but 0 is unknown there.
+  std::optional<AerosolInversionSourceInstalled> aerosol_source;
+  if (writer) aerosol_source.emplace(config.db_path);
   server::TableStore tables(registered, options);
   // The writer's workers use the tables: they stop (running evaluations end) before the tables go.
   struct StopServicesFirst {
