@@ -85,8 +85,9 @@ ModelDescriptor make_descriptor() {
                .min_value = 0.0,
                .max_value = 5.0},
               {.name = "sun_state_cache_size",
-               .description = "per-sun table sets kept in memory (24 MB each at 33 nodes, up to 47 MB "
-                              "near the horizon)",
+               .description =
+                   "per-sun table sets kept in memory (24 MB each at 33 nodes, up to 47 MB "
+                   "near the horizon)",
                .default_value = 8,
                .min_value = 1,
                .max_value = 256,
