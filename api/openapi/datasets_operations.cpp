@@ -111,36 +111,22 @@ Json schemas() {
     "properties": {"deleted": {"type": "string", "description": "The dataset's name."}}
   },
   "ImportReport": {
-    "description": "What an import added (null in an import's state until it succeeds): captures, or for the broadband irradiance formats samples.",
+    "type": "object",
+    "description": "What an import added (null in an import's state until it succeeds). Captures (added, unchanged) for the sky radiance formats; kind broadband_irradiance with samples_unchanged, first_time and last_time for the broadband irradiance formats. One object with the members of both shapes, so that null stays expressible in OpenAPI 3.0 (nullable needs a type beside it, which a oneOf of the two shapes cannot carry).",
     "nullable": true,
-    "oneOf": [
-      {
-        "type": "object",
-        "required": ["dataset", "added", "unchanged", "samples_added", "seconds"],
-        "additionalProperties": false,
-        "properties": {
-          "dataset": {"type": "string"},
-          "added": {"type": "array", "items": {"type": "string"}, "description": "Capture labels added."},
-          "unchanged": {"type": "array", "items": {"type": "string"}, "description": "Capture labels already stored with the same content."},
-          "samples_added": {"type": "integer", "minimum": 0},
-          "seconds": {"type": "number", "minimum": 0}
-        }
-      },
-      {
-        "type": "object",
-        "required": ["dataset", "kind", "samples_added", "samples_unchanged", "seconds"],
-        "additionalProperties": false,
-        "properties": {
-          "dataset": {"type": "string"},
-          "kind": {"type": "string", "enum": ["broadband_irradiance"]},
-          "samples_added": {"type": "integer", "minimum": 0},
-          "samples_unchanged": {"type": "integer", "minimum": 0, "description": "Samples identical to one the dataset holds."},
-          "first_time": {"type": "string", "format": "date-time"},
-          "last_time": {"type": "string", "format": "date-time"},
-          "seconds": {"type": "number", "minimum": 0}
-        }
-      }
-    ]
+    "required": ["dataset", "samples_added", "seconds"],
+    "additionalProperties": false,
+    "properties": {
+      "dataset": {"type": "string"},
+      "added": {"type": "array", "items": {"type": "string"}, "description": "Capture labels added (sky radiance formats)."},
+      "unchanged": {"type": "array", "items": {"type": "string"}, "description": "Capture labels already stored with the same content (sky radiance formats)."},
+      "kind": {"type": "string", "enum": ["broadband_irradiance"], "description": "Broadband irradiance formats only."},
+      "samples_added": {"type": "integer", "minimum": 0},
+      "samples_unchanged": {"type": "integer", "minimum": 0, "description": "Samples identical to one the dataset holds (broadband irradiance formats)."},
+      "first_time": {"type": "string", "format": "date-time"},
+      "last_time": {"type": "string", "format": "date-time"},
+      "seconds": {"type": "number", "minimum": 0}
+    }
   },
   "ImportProgress": {
     "type": "object",

@@ -7,6 +7,9 @@
 // server path.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
 #include "api/evaluation/evaluation_pool.h"
 #include "api/imports/import_pool.h"
 #include "api/routes/route_handlers.h"
@@ -200,7 +203,15 @@ TEST_F(DataRouteHandlers, BroadbandIrradianceUploadsAreCheckedBefore202) {
   const ApiResponse accepted = call("POST", "/v1/datasets?name=roof&format=irradiance-csv", "",
                                     &good_body, true, "text/csv");
   ASSERT_EQ(accepted.status, 202) << accepted.body;
-  imports.reset();  // waits for the import
+  // The import's own state, polled until it ends: stopping the pool instead would cancel it if
+  // its worker had not yet started it (a loaded machine).
+  const std::string location(accepted.header("Location").value_or(""));
+  std::string status;
+  for (int i = 0; i < 6000 && status != "succeeded" && status != "failed"; ++i) {
+    if (i > 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    status = json_of(call("GET", location))["status"].get<std::string>();
+  }
+  ASSERT_EQ(status, "succeeded") << call("GET", location).body;
   const nlohmann::json shown = json_of(call("GET", "/v1/datasets/roof"));
   EXPECT_EQ(shown["kind"], "broadband_irradiance");
   ASSERT_EQ(shown["irradiance"].size(), 1u);

@@ -82,8 +82,10 @@ TEST(BatchAnswerMemory, BatchesAreCountedInTheAnswerMemoryBudget) {
   const Answer alone = post(server, "/v1/radiance", 1000);
   EXPECT_EQ(alone.status, 413);
   EXPECT_EQ(alone.parameter, "answer_memory");
-  // 700 views of radiance (about 3.4 MB) and 2,500 of RGB (about 3.6 MB) fit an empty budget.
+  // 700 views of radiance (about 3.4 MB) and 2,500 of RGB (about 3.6 MB) each fit an empty
+  // budget, one after the other once the first has given its reservation back.
   EXPECT_EQ(post(server, "/v1/radiance", 700).status, 200);
+  EXPECT_EQ(reserved_once_released(server), 0.0);
   EXPECT_EQ(post(server, "/v1/rgb", 2500).status, 200);
   EXPECT_EQ(reserved_once_released(server), 0.0);
   {
@@ -114,6 +116,9 @@ TEST(BatchAnswerMemory, BatchesAreCountedInTheAnswerMemoryBudget) {
   // released once they were sent.
   EXPECT_EQ(reserved_once_released(server), 0.0);
   EXPECT_EQ(post(server, "/v1/radiance", 700).status, 200);
+  // The radiance batch's reservation is returned just after its last byte was read: the RGB
+  // batch, which fits the budget alone but not beside it, waits for that rather than racing it.
+  EXPECT_EQ(reserved_once_released(server), 0.0);
   EXPECT_EQ(post(server, "/v1/rgb", 2500).status, 200);
   EXPECT_EQ(reserved_once_released(server), 0.0);
   EXPECT_TRUE(server.alive()) << server.log();
