@@ -272,8 +272,12 @@ void build_column(const ColumnContext& c, SamplingTable& table, int i, int j) {
   const std::size_t n = a.grid.size();
   const double earth = a.parameters.earth_radius_m;
   const double top = a.parameters.top_radius_m;
-  const auto [p0, d, step] =
-      column_line(table.node_position(i, j, 0), table.node_position(i, j, 1));
+  // Named copies, not a structured binding: a lambda below uses the step, and capturing a
+  // structured binding is not C++20 (GCC allows it, clang refuses it).
+  const ColumnLine line = column_line(table.node_position(i, j, 0), table.node_position(i, j, 1));
+  const Vec3 p0 = line.p0;
+  const Vec3 d = line.d;
+  const double step = line.step_m;
   double start_t;
   double end_t;
   if (dot(p0, p0) >= top * top) {
@@ -414,8 +418,13 @@ void build_grazing_column(const ColumnContext& c, SamplingTable& table, int i, i
   const std::size_t n = a.grid.size();
   const double earth = a.parameters.earth_radius_m;
   const double top = a.parameters.top_radius_m;
-  const auto [p0, d, step] =
+  // Named copies, not a structured binding: a lambda below uses the step, and capturing a
+  // structured binding is not C++20 (GCC allows it, clang refuses it).
+  const ColumnLine line =
       column_line(table.grazing_node_position(i, j, 0), table.grazing_node_position(i, j, 1));
+  const Vec3 p0 = line.p0;
+  const Vec3 d = line.d;
+  const double step = line.step_m;
   const int last = table.nodes() - 1;
   const double b = dot(p0, d);
   const double cc = dot(p0, p0);
