@@ -30,6 +30,7 @@ void append_values(std::string& out, std::span<const float> values) {
 
 bool read_values(std::string_view& in, std::span<float> values) {
   if (in.size() < values.size_bytes()) return false;
+  if (values.empty()) return true;  // an empty span's data() may be null: no memcpy from it
   std::memcpy(values.data(), in.data(), values.size_bytes());
   in.remove_prefix(values.size_bytes());
   return true;
