@@ -120,6 +120,12 @@ double SkydomeProjection::pixel_solid_angle_sr(int x, int y) const {
   return 0.0;
 }
 
+bool SkydomeProjection::latlong_row_below_horizon(int y) const {
+  if (projection_ != Projection::latlong) return false;
+  SkyDirection d;
+  return direction(0, y, d) && d.zenith_rad > 0.5 * kPi;
+}
+
 bool SkydomeProjection::direction(int x, int y, SkyDirection& out) const {
   switch (projection_) {
     case Projection::fisheye: {

@@ -30,6 +30,14 @@ class SkydomeProjection {
   // The direction pixel (x, y) sees, or false when it sees none (outside the fisheye circle).
   bool direction(int x, int y, SkyDirection& out) const;
 
+  // Latlong only (false for the other projections): whether every pixel of row y looks below
+  // the horizon, i.e. has direction()'s zenith above pi/2. OpenEXR's latlong direction of a
+  // pixel has the up component sin(latitude) of its row, the same float in every column, and
+  // from_openexr_frame() only divides it by the vector's positive length, so the sign of the
+  // zenith cosine, and with it the side of the horizon, is the row's; it is read from column 0.
+  // Lets a skydome fill the rows under the horizon without a direction per pixel.
+  bool latlong_row_below_horizon(int y) const;
+
   // The pixel whose sample position is nearest to direction d (the inverse of direction()), or
   // false when no pixel sees it (outside the fisheye circle). Used to place the solar disc.
   bool pixel(const SkyDirection& d, int& x, int& y) const;

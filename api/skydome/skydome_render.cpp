@@ -42,6 +42,8 @@ struct SkydomeRender::Settings {
   SkydomeProjection projection{Projection::fisheye, 8};
   std::string channels;
   std::string method;
+  // channels and method as flags for the per-pixel code, set with them in prepare_skydome().
+  bool rgb_channels = false, spectral_channels = false, three_method = false;
   bool half = true;
   // format=png: 8-bit sRGB through display_tone_mapping.h, instead of the EXR.
   bool png = false;
@@ -57,6 +59,9 @@ struct SkydomeRender::Settings {
   std::optional<Spectrum> sun_irradiance;
   std::unique_ptr<SolarDiscPixels> disc;  // sun=disc
   Spectrum ground_radiance;               // ground=albedo, W/(m2.sr.nm) on the model's grid
+  // ground=albedo: the channels of a ground pixel without the disc (write_pixel() of
+  // ground_radiance), which the rows below a latlong map's horizon repeat.
+  std::vector<float> ground_pixel;
 };
 
 namespace {
@@ -91,8 +96,8 @@ const ThreeWavelengthRgb& three_wavelength_method() {
 
 // Channels of the image, alpha included (the order is write()'s).
 std::size_t channel_count(const SkydomeRender::Settings& s) {
-  if (s.channels == "rgb") return 4;
-  if (s.channels == "luminance") return 2;
+  if (s.rgb_channels) return 4;
+  if (!s.spectral_channels) return 2;  // luminance
   return s.m.wavelengths_nm.size() + 1;
 }
 
@@ -178,39 +183,96 @@ void add_sun_attributes(Imf::Header& header, const SkydomeRender::Settings& s) {
   }
 }
 
-// Rows [y0, y0 + rows) of the image into band (rows x width pixels of channel_count(s) floats,
-// channel-interleaved, the coverage A last), over the cores in pieces of kPiecePixels: the sky
-// the model answers, the ground below the horizon (skydome_options.h) and the sun's disc
-// (sun_disc.h). Both writers (the EXR and the PNG) take their pixels from here.
-void compute_band(const SkydomeRender::Settings& s, int y0, int rows, float* band, unsigned threads,
-                  std::atomic<int>& failed_pixels) {
-  const int width = s.projection.width();
-  const std::size_t n_channels = channel_count(s);
-  const std::size_t alpha_channel = n_channels - 1;
-  const SkyModel& model = *s.m.model;
-  const ThreeWavelengthRgb& three = three_wavelength_method();
+// One pixel's channels (channel_count(s) floats, channel-interleaved, A = 1 last) from its
+// spectral radiance l on the model's grid.
+void write_pixel(const SkydomeRender::Settings& s, float* px, std::span<const double> l) {
+  const std::size_t alpha_channel = channel_count(s) - 1;
   const double rgb_scale = s.options.units == PixelUnits::photometric ? kMaxLuminousEfficacy : 1.0;
-  // One pixel's channels from its spectral radiance on the model's grid; A = 1.
-  const auto write_pixel = [&](float* px, std::span<const double> l) {
-    px[alpha_channel] = 1.0f;
-    if (s.channels == "spectral") {
-      for (std::size_t c = 0; c < alpha_channel; ++c) px[c] = static_cast<float>(l[s.m.indices[c]]);
-    } else if (s.method == "three") {
-      const LinearSrgb c = three.rgb(l[s.m.indices[2]], l[s.m.indices[1]], l[s.m.indices[0]]);
-      if (s.channels == "rgb") {
-        write_rgb(px, c, rgb_scale);
-      } else {
-        px[0] = static_cast<float>(kMaxLuminousEfficacy * linear_srgb_to_xyz(c).y);
-      }
+  px[alpha_channel] = 1.0f;
+  if (s.spectral_channels) {
+    for (std::size_t c = 0; c < alpha_channel; ++c) px[c] = static_cast<float>(l[s.m.indices[c]]);
+  } else if (s.three_method) {
+    const LinearSrgb c =
+        three_wavelength_method().rgb(l[s.m.indices[2]], l[s.m.indices[1]], l[s.m.indices[0]]);
+    if (s.rgb_channels) {
+      write_rgb(px, c, rgb_scale);
     } else {
-      const Xyz xyz = s.xyz->xyz(l);
-      if (s.channels == "rgb") {
-        write_rgb(px, xyz_to_linear_srgb(xyz), rgb_scale);
-      } else {
-        px[0] = static_cast<float>(kMaxLuminousEfficacy * xyz.y);
+      px[0] = static_cast<float>(kMaxLuminousEfficacy * linear_srgb_to_xyz(c).y);
+    }
+  } else {
+    const Xyz xyz = s.xyz->xyz(l);
+    if (s.rgb_channels) {
+      write_rgb(px, xyz_to_linear_srgb(xyz), rgb_scale);
+    } else {
+      px[0] = static_cast<float>(kMaxLuminousEfficacy * xyz.y);
+    }
+  }
+}
+
+// The pixels [x_begin, x_end) of row y (row: the row's first pixel) one by one: each pixel's
+// direction, the sky the model answers, the ground below the horizon (skydome_options.h) and
+// the sun's disc (sun_disc.h).
+void compute_pixels(const SkydomeRender::Settings& s, int y, int x_begin, int x_end, float* row,
+                    std::atomic<int>& failed_pixels) {
+  const std::size_t n_channels = channel_count(s);
+  std::vector<ViewDirection> views;
+  std::vector<int> columns, ground_columns;
+  views.reserve(static_cast<std::size_t>(x_end - x_begin));
+  for (int x = x_begin; x < x_end; ++x) {
+    SkyDirection d;
+    if (!s.projection.direction(x, y, d)) continue;
+    // Below the horizon (skydome_options.h): hidden, the albedo ground, or the model.
+    if (d.zenith_rad > 0.5 * kPi && s.options.ground != Ground::model) {
+      if (s.options.ground == Ground::albedo) ground_columns.push_back(x);
+      continue;
+    }
+    views.push_back(d);
+    columns.push_back(x);
+  }
+  SpectralBatch batch;
+  if (!views.empty()) s.m.model->sky_radiance(*s.sun_state, s.viewpoint, views, batch);
+  const bool disc_row = s.disc && s.disc->covers_row(y);
+  std::vector<double> with_sun;
+  const auto emit = [&](int x, std::span<const double> l) {
+    if (disc_row) {
+      if (const SolarDiscPixels::Pixel* sun_pixel = s.disc->find(x, y)) {
+        with_sun.assign(l.begin(), l.end());
+        for (std::size_t w = 0; w < with_sun.size(); ++w) with_sun[w] += sun_pixel->radiance[w];
+        l = with_sun;
       }
     }
+    write_pixel(s, row + static_cast<std::size_t>(x) * n_channels, l);
   };
+  for (int x : ground_columns) emit(x, s.ground_radiance.values());
+  for (std::size_t k = 0; k < views.size(); ++k) {
+    if (batch.status[k] != SampleStatus::ok) {
+      if (batch.status[k] != SampleStatus::view_below_horizon_unsupported) ++failed_pixels;
+      continue;
+    }
+    emit(columns[k], batch.spectrum(k));
+  }
+}
+
+// Whether row y of a latlong map is wholly below the horizon with nothing but the ground's
+// pixel (or nothing) in it: no model answer there (ground albedo or none) and no disc pixel.
+bool row_is_plain_ground(const SkydomeRender::Settings& s, int y) {
+  return s.options.ground != Ground::model && !(s.disc && s.disc->covers_row(y)) &&
+         s.projection.latlong_row_below_horizon(y);
+}
+
+// Rows [y0, y0 + rows) of the image into band (rows x width pixels of channel_count(s) floats,
+// channel-interleaved, the coverage A last), over the cores in pieces of kPiecePixels. Both
+// writers (the EXR and the PNG) take their pixels from here. The fast path fills the plain
+// ground rows with s.ground_pixel, the pixel compute_pixels() writes for every one of them
+// (the same function of the same radiance), so both paths give the same floats.
+// With band_half (half pixels), each piece is also converted to half on the core that computed
+// it, rather than the whole band afterwards on the writing thread (the per-pixel path keeps
+// that serial conversion, as earlier releases did); the conversion is the same.
+void compute_band(const SkydomeRender::Settings& s, int y0, int rows, float* band, unsigned threads,
+                  std::atomic<int>& failed_pixels, SkydomePixelPath path,
+                  half* band_half = nullptr) {
+  const int width = s.projection.width();
+  const std::size_t n_channels = channel_count(s);
   const std::size_t pieces = static_cast<std::size_t>((width + kPiecePixels - 1) / kPiecePixels);
   parallel_for(
       static_cast<std::size_t>(rows) * pieces,
@@ -219,46 +281,23 @@ void compute_band(const SkydomeRender::Settings& s, int y0, int rows, float* ban
         const int y = y0 + static_cast<int>(r);
         const int x_begin = static_cast<int>(task % pieces) * kPiecePixels;
         const int x_end = std::min(width, x_begin + kPiecePixels);
-        std::vector<ViewDirection> views;
-        std::vector<int> columns, ground_columns;
-        views.reserve(static_cast<std::size_t>(x_end - x_begin));
-        for (int x = x_begin; x < x_end; ++x) {
-          SkyDirection d;
-          if (!s.projection.direction(x, y, d)) continue;
-          // Below the horizon (skydome_options.h): hidden, the albedo ground, or the model.
-          if (d.zenith_rad > 0.5 * kPi && s.options.ground != Ground::model) {
-            if (s.options.ground == Ground::albedo) ground_columns.push_back(x);
-            continue;
-          }
-          views.push_back(d);
-          columns.push_back(x);
-        }
         float* row = band + r * static_cast<std::size_t>(width) * n_channels;
-        std::fill(row + static_cast<std::size_t>(x_begin) * n_channels,
-                  row + static_cast<std::size_t>(x_end) * n_channels, 0.0f);
-        SpectralBatch batch;
-        if (!views.empty()) model.sky_radiance(*s.sun_state, s.viewpoint, views, batch);
-        const bool disc_row = s.disc && s.disc->covers_row(y);
-        std::vector<double> with_sun;
-        const auto emit = [&](int x, std::span<const double> l) {
-          if (disc_row) {
-            if (const SolarDiscPixels::Pixel* sun_pixel = s.disc->find(x, y)) {
-              with_sun.assign(l.begin(), l.end());
-              for (std::size_t w = 0; w < with_sun.size(); ++w)
-                with_sun[w] += sun_pixel->radiance[w];
-              l = with_sun;
-            }
+        float* first = row + static_cast<std::size_t>(x_begin) * n_channels;
+        float* last = row + static_cast<std::size_t>(x_end) * n_channels;
+        if (path == SkydomePixelPath::fast && row_is_plain_ground(s, y)) {
+          if (s.options.ground == Ground::albedo) {
+            for (float* px = first; px != last; px += n_channels)
+              std::copy(s.ground_pixel.begin(), s.ground_pixel.end(), px);
+          } else {
+            std::fill(first, last, 0.0f);
           }
-          float* px = row + static_cast<std::size_t>(x) * n_channels;
-          write_pixel(px, l);
-        };
-        for (int x : ground_columns) emit(x, s.ground_radiance.values());
-        for (std::size_t k = 0; k < views.size(); ++k) {
-          if (batch.status[k] != SampleStatus::ok) {
-            if (batch.status[k] != SampleStatus::view_below_horizon_unsupported) ++failed_pixels;
-            continue;
-          }
-          emit(columns[k], batch.spectrum(k));
+        } else {
+          std::fill(first, last, 0.0f);
+          compute_pixels(s, y, x_begin, x_end, row, failed_pixels);
+        }
+        if (band_half != nullptr) {
+          half* out = band_half + (first - band);
+          for (const float* in = first; in != last; ++in, ++out) *out = half(*in);
         }
       },
       threads);
@@ -268,7 +307,7 @@ void compute_band(const SkydomeRender::Settings& s, int y0, int rows, float* ban
 // alpha 255 where the model answered and 0 where it did not, each row given to libpng as it is
 // made and each band flushed to the client. False when the client stopped reading.
 bool write_png(const SkydomeRender::Settings& s, const SkydomeRender::Sink& sink, unsigned threads,
-               std::size_t* unanswered_pixels) {
+               std::size_t* unanswered_pixels, SkydomePixelPath path) {
   const int width = s.projection.width();
   const int height = s.projection.height();
   const DisplayToneMapping display(s.exposure_ev100, s.tone_curve);
@@ -297,7 +336,7 @@ bool write_png(const SkydomeRender::Settings& s, const SkydomeRender::Sink& sink
   std::atomic<int> failed_pixels{0};
   for (int y0 = 0; y0 < height; y0 += rows_per_band) {
     const int rows = std::min(rows_per_band, height - y0);
-    compute_band(s, y0, rows, band.data(), threads, failed_pixels);
+    compute_band(s, y0, rows, band.data(), threads, failed_pixels, path);
     for (int r = 0; r < rows; ++r) {
       const float* in = band.data() + static_cast<std::size_t>(r) * width * n_channels;
       for (int x = 0; x < width; ++x) {
@@ -395,6 +434,9 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
   }
   s->method = "spectral";
   if (s->channels == "rgb") s->method = p.choice("method", {"spectral", "three"}, "spectral");
+  s->rgb_channels = s->channels == "rgb";
+  s->spectral_channels = s->channels == "spectral";
+  s->three_method = s->method == "three";
   std::optional<std::vector<double>> wavelengths;
   if (s->channels == "spectral") wavelengths = parse_wavelengths(p, context.limits);
   p.reject_unused();
@@ -442,8 +484,11 @@ SkydomeRender prepare_skydome(const ApiContext& context, const ApiRequest& reque
     s->disc = std::make_unique<SolarDiscPixels>(s->projection, SkyDirection{s->sun.sun}, nm,
                                                 *s->sun_irradiance);
   }
-  if (s->options.ground == Ground::albedo)
+  if (s->options.ground == Ground::albedo) {
     s->ground_radiance = lambertian_ground_radiance(model, *s->sun_state, s->viewpoint);
+    s->ground_pixel.assign(channel_count(*s), 0.0f);
+    write_pixel(*s, s->ground_pixel.data(), s->ground_radiance.values());
+  }
   return SkydomeRender(std::move(s));
 }
 
@@ -489,10 +534,10 @@ std::size_t SkydomeRender::band_bytes() const {
          (s.disc ? s.disc->memory_bytes() : 0);
 }
 
-bool SkydomeRender::write(const Sink& sink, unsigned threads,
-                          std::size_t* unanswered_pixels) const {
+bool SkydomeRender::write(const Sink& sink, unsigned threads, std::size_t* unanswered_pixels,
+                          SkydomePixelPath path) const {
   const Settings& s = *settings_;
-  if (s.png) return write_png(s, sink, threads, unanswered_pixels);
+  if (s.png) return write_png(s, sink, threads, unanswered_pixels, path);
   const int width = s.projection.width();
   const int height = s.projection.height();
 
@@ -591,14 +636,16 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads,
     std::atomic<int> failed_pixels{0};
     for (int y0 = 0; y0 < height; y0 += rows_per_band) {
       const int rows = std::min(rows_per_band, height - y0);
-      compute_band(s, y0, rows, band_float.data(), threads, failed_pixels);
+      const bool convert_in_band = s.half && path == SkydomePixelPath::fast;
+      compute_band(s, y0, rows, band_float.data(), threads, failed_pixels, path,
+                   convert_in_band ? band_half.data() : nullptr);
 
       Imf::FrameBuffer frame;
       const std::size_t x_stride = n_channels * sample_bytes;
       const std::size_t y_stride = static_cast<std::size_t>(width) * x_stride;
       char* base = s.half ? reinterpret_cast<char*>(band_half.data())
                           : reinterpret_cast<char*>(band_float.data());
-      if (s.half) {
+      if (s.half && !convert_in_band) {
         const std::size_t count =
             static_cast<std::size_t>(rows) * static_cast<std::size_t>(width) * n_channels;
         for (std::size_t i = 0; i < count; ++i) band_half[i] = half(band_float[i]);

@@ -36,6 +36,14 @@
 
 namespace clearsky::api {
 
+// How SkydomeRender::write() computes its pixels. fast: the rows of a latlong map that lie
+// wholly below the horizon (half the image) are filled with the ground's pixel, computed once
+// per image, instead of a direction and a colour per pixel; the other pixels as per_pixel.
+// per_pixel: every pixel's direction and colour computed on its own, the computation of earlier
+// releases, kept as the slow reference that tests (bit for bit) and the benchmark compare the
+// fast path with (docs/performance.md "RGB skydome").
+enum class SkydomePixelPath { fast, per_pixel };
+
 class SkydomeRender {
  public:
   using Sink = std::function<bool(const char* data, std::size_t size)>;
@@ -47,8 +55,8 @@ class SkydomeRender {
   // gone), in which case the computation stops. Throws on internal errors only.
   // unanswered_pixels: directions the model should answer but gave no value for (a status
   // other than ok or below-horizon), written as 0.
-  bool write(const Sink& sink, unsigned threads = 0,
-             std::size_t* unanswered_pixels = nullptr) const;
+  bool write(const Sink& sink, unsigned threads = 0, std::size_t* unanswered_pixels = nullptr,
+             SkydomePixelPath path = SkydomePixelPath::fast) const;
   const std::string& model_id() const;
   // Clearsky-Quality, Clearsky-Served-Quality, Clearsky-Quality-Detail (api/request/quality.h).
   void add_quality_headers(std::vector<std::pair<std::string, std::string>>& headers) const;

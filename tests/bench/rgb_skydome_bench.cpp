@@ -1,12 +1,15 @@
 // The RGB skydome of GET /v1/skydome (api/skydome/skydome_render.h) per model and quality level:
-// a latitude-longitude image of 1024 x 512 pixels (channels=rgb, half pixels, the sky and the
-// albedo ground), written to a sink that drops the bytes. The model and its tables are built
-// before the timing (a synchronous provider, no disk cache); the timing is the per-pixel work
-// and the EXR encoding. The requirement's 4096 x 4096 request is a 4096 x 2048 latlong image:
-// 16 times these pixels (docs/performance.md "RGB skydome"), which the benchmark does not run
-// at full size because the slowest models take tens of seconds per iteration on the shared
-// machine. The counter pixels_per_s is over the image's pixels.
-// build/tests/clearsky_bench --benchmark_filter=RgbSkydome
+// a latitude-longitude image (channels=rgb, half pixels, the sky and the albedo ground), written
+// to a sink that drops the bytes. The model and its tables are built before the timing (a
+// synchronous provider, no disk cache); the timing is the per-pixel work and the EXR encoding.
+// Each is run on the fast pixel path and, as the baseline in the same run, on the per-pixel
+// reference path (SkydomePixelPath::per_pixel, the computation of earlier releases):
+//   RgbSkydome/<model>/<quality>/<path>/<width>
+// at width 1024 (1024 x 512 pixels) and 4096 (size=4096: 4096 x 2048, the requirement's
+// 4096-pixel skydome, docs/performance.md "RGB skydome"). The CPU column is the process's CPU
+// time over all threads (MeasureProcessCPUTime), less sensitive to the shared machine's load
+// than the wall time; pixels_per_s is over the image's pixels.
+// build/tests/clearsky_bench --benchmark_filter='RgbSkydome/hosek/draft/.*/4096'
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -18,31 +21,31 @@
 namespace clearsky {
 namespace {
 
-constexpr int kWidth = 1024;
-
 const clearsky::testing::SynchronousProvider& provider() {
   static const clearsky::testing::SynchronousProvider p(
       std::vector<ModelFactory>(registered_models().begin(), registered_models().end()));
   return p;
 }
 
-api::ApiRequest skydome_request(const std::string& model, const std::string& quality) {
+api::ApiRequest skydome_request(const std::string& model, const std::string& quality, int width) {
   api::ApiRequest request;
   request.path = request.route = "/v1/skydome";
   request.query = {{"model", model},
                    {"sun_zenith", "40"},
                    {"sun_azimuth", "135"},
                    {"projection", "latlong"},
-                   {"size", std::to_string(kWidth)},
+                   {"size", std::to_string(width)},
                    {"channels", "rgb"},
                    {"ground", "albedo"},
                    {"quality", quality}};
   return request;
 }
 
-void rgb_skydome(benchmark::State& state, const std::string& model, const std::string& quality) {
+void rgb_skydome(benchmark::State& state, const std::string& model, const std::string& quality,
+                 api::SkydomePixelPath path) {
   const api::ApiContext context{provider(), api::Limits{}};
-  const api::SkydomeRender render = api::prepare_skydome(context, skydome_request(model, quality));
+  const api::SkydomeRender render = api::prepare_skydome(
+      context, skydome_request(model, quality, static_cast<int>(state.range(0))));
   std::size_t bytes = 0;
   const api::SkydomeRender::Sink sink = [&bytes](const char*, std::size_t size) {
     bytes += size;
@@ -50,7 +53,7 @@ void rgb_skydome(benchmark::State& state, const std::string& model, const std::s
   };
   for (auto _ : state) {
     bytes = 0;
-    if (!render.write(sink)) state.SkipWithError("the sink refused");
+    if (!render.write(sink, 0, nullptr, path)) state.SkipWithError("the sink refused");
     benchmark::DoNotOptimize(bytes);
   }
   state.counters["pixels_per_s"] = benchmark::Counter(
@@ -62,11 +65,17 @@ const bool registered = [] {
   for (const char* quality : {"draft", "standard"}) {
     for (const ModelFactory& factory : registered_models()) {
       const std::string id = factory.descriptor->id;
-      benchmark::RegisterBenchmark(("RgbSkydome/" + id + "/" + quality).c_str(), rgb_skydome, id,
-                                   std::string(quality))
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime()
-          ->Iterations(2);
+      for (const auto path : {api::SkydomePixelPath::fast, api::SkydomePixelPath::per_pixel}) {
+        const std::string name = "RgbSkydome/" + id + "/" + quality + "/" +
+                                 (path == api::SkydomePixelPath::fast ? "fast" : "per_pixel");
+        benchmark::RegisterBenchmark(name.c_str(), rgb_skydome, id, std::string(quality), path)
+            ->Arg(1024)
+            ->Arg(4096)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime()
+            ->MeasureProcessCPUTime()
+            ->Iterations(2);
+      }
     }
   }
   return true;

@@ -25,6 +25,27 @@ TEST(SkydomeProjection, FisheyeIsEquidistantNorthUpEastLeft) {
   EXPECT_FALSE(p.direction(0, 0, d));  // corner: outside the circle
 }
 
+// latlong_row_below_horizon() decides a row from its first pixel: every pixel of the row must
+// agree with direction(), at even and odd heights (a row on the horizon itself) and large sizes.
+TEST(SkydomeProjection, LatlongRowsAreWhollyOnOneSideOfTheHorizon) {
+  for (int size : {8, 10, 48, 258, 1024}) {
+    const SkydomeProjection p(Projection::latlong, size);
+    int below = 0;
+    for (int y = 0; y < p.height(); ++y) {
+      const bool row_below = p.latlong_row_below_horizon(y);
+      below += row_below ? 1 : 0;
+      for (int x = 0; x < p.width(); ++x) {
+        SkyDirection d;
+        ASSERT_TRUE(p.direction(x, y, d));
+        ASSERT_EQ(d.zenith_rad > 0.5 * kPi, row_below) << size << ": " << x << "," << y;
+      }
+    }
+    EXPECT_EQ(below, p.height() / 2) << size;
+  }
+  EXPECT_FALSE(SkydomeProjection(Projection::fisheye, 64).latlong_row_below_horizon(60));
+  EXPECT_FALSE(SkydomeProjection(Projection::cubemap, 16).latlong_row_below_horizon(50));
+}
+
 TEST(SkydomeProjection, EnvironmentMapsMatchOpenExr) {
   for (Projection kind : {Projection::latlong, Projection::cubemap}) {
     const SkydomeProjection p(kind, 32);
