@@ -394,6 +394,40 @@ struct Builder {
     }
   }
 
+  // The n_theta x n_phi directions of the density's sphere (Eq. 7, the 2008 code's
+  // inscatterS): unit vectors and solid angles, the same for every texel.
+  struct SphereDirections {
+    int n_phi = 0;
+    std::vector<double> cos_t, wx, wy, wz, dw;
+  };
+
+  static SphereDirections sphere_directions(const std::vector<double>& cos_t,
+                                            const std::vector<double>& sin_t,
+                                            const std::vector<double>& cos_p,
+                                            const std::vector<double>& sin_p) {
+    SphereDirections s;
+    const int n_theta = static_cast<int>(cos_t.size());
+    s.n_phi = static_cast<int>(cos_p.size());
+    const double dtheta = kPi / n_theta;
+    const double dphi = kPi / n_theta;
+    s.cos_t = cos_t;
+    const std::size_t n_dir = static_cast<std::size_t>(n_theta) * s.n_phi;
+    s.wx.resize(n_dir);
+    s.wy.resize(n_dir);
+    s.wz.resize(n_dir);
+    s.dw.resize(n_dir);
+    for (int i = 0; i < n_theta; ++i) {
+      for (int p = 0; p < s.n_phi; ++p) {
+        const std::size_t d = static_cast<std::size_t>(i) * s.n_phi + p;
+        s.wx[d] = cos_p[p] * sin_t[i];
+        s.wy[d] = sin_p[p] * sin_t[i];
+        s.wz[d] = cos_t[i];
+        s.dw[d] = dtheta * dphi * sin_t[i];
+      }
+    }
+    return s;
+  }
+
   // Density J (Eq. 7) of the order after `source`, whose ground irradiance is delta_e.
   void build_density(const Source& source, const FloatTable2D& delta_e, HalfTable4D& j_table,
                      double progress_units) {
@@ -415,7 +449,25 @@ struct Builder {
     const std::size_t layer_floats =
         static_cast<std::size_t>(res.mu) * j_table.row_texels() * stride;
     std::vector<float> layer_values(layer_floats);
+    const SphereDirections sphere = sphere_directions(cos_t, sin_t, cos_p, sin_p);
+    const std::size_t n_dir = sphere.wx.size();
+    std::vector<double> layer_phase_r(static_cast<std::size_t>(res.mu) * n_dir);
+    std::vector<double> layer_phase_m(layer_phase_r.size());
     for (int layer = 0; layer < res.r; ++layer) {
+      // The phase functions towards each view row mu, times the solid angles: the same for
+      // every mu_s column of the layer, computed once for all of them.
+      for_each(static_cast<std::size_t>(res.mu), [&](std::size_t jm) {
+        const Layer l = layer_geometry(layer, res.r, g);
+        const double mu = std::clamp(texel_mu(static_cast<int>(jm), res.mu, l, g), -1.0, 1.0);
+        const double vx = std::sqrt(1.0 - mu * mu);
+        double* phase_r = layer_phase_r.data() + jm * n_dir;
+        double* phase_m = layer_phase_m.data() + jm * n_dir;
+        for (std::size_t d = 0; d < n_dir; ++d) {
+          const double nu2 = vx * sphere.wx[d] + mu * sphere.wz[d];
+          phase_r[d] = rayleigh_phase(nu2) * sphere.dw[d];
+          phase_m[d] = k.mie_phase(nu2) * sphere.dw[d];
+        }
+      });
       const Layer l = layer_geometry(layer, res.r, g);
       const double r = std::clamp(l.r, g.bottom_m, g.top_m);
       const double cos_theta_min = horizon_mu(r, g);
@@ -444,8 +496,8 @@ struct Builder {
       }
       for_each(static_cast<std::size_t>(res.mu_s), [&](std::size_t ms_index) {
         const int ms = static_cast<int>(ms_index);
-        density_column(source, layer, ms, r, cos_theta_min, density_r, density_m, cos_t, sin_t,
-                       cos_p, sin_p, ground, d_ground, ground_light, n_e, layer_values.data());
+        density_column(source, layer, ms, r, density_r, density_m, sphere, layer_phase_r,
+                       layer_phase_m, ground, d_ground, ground_light, n_e, layer_values.data());
       });
       for_each(static_cast<std::size_t>(res.mu), [&](std::size_t j) {
         j_table.store_row(layer, static_cast<int>(j),
@@ -463,8 +515,8 @@ struct Builder {
   template <bool First>
   void accumulate_weights(int n_theta, int n_phi, double sx, double sy, double mu_s, double r,
                           const std::vector<double>& wx, const std::vector<double>& wy,
-                          const std::vector<double>& cos_t, const std::vector<double>& phase_r,
-                          const std::vector<double>& phase_m, const std::vector<char>& ground,
+                          const std::vector<double>& cos_t, const double* phase_r,
+                          const double* phase_m, const std::vector<char>& ground,
                           const std::vector<double>& d_ground, int n_e, std::vector<double>& a_r,
                           std::vector<double>& a_m, std::vector<double>& b_r,
                           std::vector<double>& b_m, std::vector<double>& g_r,
@@ -479,6 +531,23 @@ struct Builder {
       double* br = First ? b_r.data() + static_cast<std::size_t>(i) * n_nu : nullptr;
       double* bm = First ? b_m.data() + static_cast<std::size_t>(i) * n_nu : nullptr;
       int lowest = n_e, highest = -1;
+      // Consecutive azimuths mostly fall in the same two nu slices: their sums are carried in
+      // registers while the slices stay the same and written back when they change. Every
+      // slot receives the same additions in the same order as with one store per term (the
+      // result of a floating-point sum depends on its order), without a store and a reload
+      // per term.
+      constexpr int kSums = First ? 4 : 2;
+      double* const sums[4] = {ar, am, br, bm};
+      double low[4] = {}, high[4] = {};
+      int run = -1;  // the lower slice of the pair held in low/high, -1 for none
+      auto write_back = [&] {
+        if (run < 0) return;
+        for (int q = 0; q < kSums; ++q) {
+          sums[q][run] = low[q];
+          sums[q][run + 1] = high[q];
+        }
+        run = -1;
+      };
       for (int p = 0; p < n_phi; ++p) {
         const std::size_t d = static_cast<std::size_t>(i) * n_phi + p;
         const double nu1 = sx * wx[d] + sy * wy[d] + z;
@@ -487,23 +556,45 @@ struct Builder {
         double pm = phase_m[d];
         const double f1 = 1.0 - slice.f;
         const double f2 = slice.f;
+        double term_low[4], term_high[4];
         if constexpr (First) {
           // Single scattering gets its phase functions here (2008 code, first iteration).
           const double p1r = rayleigh_phase(nu1);
           const double p1m = k.mie_phase(nu1);
-          ar[slice.i0] += f1 * p1r * pr;
-          ar[slice.i1] += f2 * p1r * pr;
-          am[slice.i0] += f1 * p1r * pm;
-          am[slice.i1] += f2 * p1r * pm;
-          br[slice.i0] += f1 * p1m * pr;
-          br[slice.i1] += f2 * p1m * pr;
-          bm[slice.i0] += f1 * p1m * pm;
-          bm[slice.i1] += f2 * p1m * pm;
+          term_low[0] = f1 * p1r * pr;
+          term_high[0] = f2 * p1r * pr;
+          term_low[1] = f1 * p1r * pm;
+          term_high[1] = f2 * p1r * pm;
+          term_low[2] = f1 * p1m * pr;
+          term_high[2] = f2 * p1m * pr;
+          term_low[3] = f1 * p1m * pm;
+          term_high[3] = f2 * p1m * pm;
         } else {
-          ar[slice.i0] += f1 * pr;
-          ar[slice.i1] += f2 * pr;
-          am[slice.i0] += f1 * pm;
-          am[slice.i1] += f2 * pm;
+          term_low[0] = f1 * pr;
+          term_high[0] = f2 * pr;
+          term_low[1] = f1 * pm;
+          term_high[1] = f2 * pm;
+        }
+        if (slice.i1 != slice.i0 + 1) {
+          // The last slice alone (its weight f2 is zero): straight to memory.
+          write_back();
+          for (int q = 0; q < kSums; ++q) {
+            sums[q][slice.i0] += term_low[q];
+            sums[q][slice.i1] += term_high[q];
+          }
+        } else {
+          if (slice.i0 != run) {
+            write_back();
+            run = slice.i0;
+            for (int q = 0; q < kSums; ++q) {
+              low[q] = sums[q][run];
+              high[q] = sums[q][run + 1];
+            }
+          }
+          for (int q = 0; q < kSums; ++q) {
+            low[q] += term_low[q];
+            high[q] += term_high[q];
+          }
         }
         if (sees_ground) {
           // Light reflected by the ground point seen in direction w (Lambertian, delta E of
@@ -520,36 +611,27 @@ struct Builder {
           highest = std::max(highest, e.i1);
         }
       }
+      write_back();
       ground_range[i] = {lowest, highest};
     }
   }
 
-  void density_column(const Source& source, int layer, int ms, double r, double /*cos_theta_min*/,
-                      float density_r, float density_m, const std::vector<double>& cos_t,
-                      const std::vector<double>& sin_t, const std::vector<double>& cos_p,
-                      const std::vector<double>& sin_p, const std::vector<char>& ground,
+  void density_column(const Source& source, int layer, int ms, double r, float density_r,
+                      float density_m, const SphereDirections& sphere,
+                      const std::vector<double>& layer_phase_r,
+                      const std::vector<double>& layer_phase_m, const std::vector<char>& ground,
                       const std::vector<double>& d_ground, const std::vector<float>& ground_light,
                       int n_e, float* layer_values) const {
-    (void)layer;
+    const std::vector<double>& cos_t = sphere.cos_t;
+    const std::vector<double>& wx = sphere.wx;
+    const std::vector<double>& wy = sphere.wy;
     const int n_theta = static_cast<int>(cos_t.size());
-    const int n_phi = static_cast<int>(cos_p.size());
+    const int n_phi = sphere.n_phi;
     const int n_nu = res.nu;
-    const double dtheta = kPi / n_theta;
-    const double dphi = kPi / n_theta;
     const double mu_s = std::clamp(texel_mu_s(ms, res.mu_s, res.sun), -1.0, 1.0);
     std::vector<float> profile_a, profile_b;
     build_profiles(source, r, mu_s, cos_t, profile_a, profile_b);
-    const std::size_t n_dir = static_cast<std::size_t>(n_theta) * n_phi;
-    std::vector<double> wx(n_dir), wy(n_dir), wz(n_dir), dw(n_dir);
-    for (int i = 0; i < n_theta; ++i) {
-      for (int p = 0; p < n_phi; ++p) {
-        const std::size_t d = static_cast<std::size_t>(i) * n_phi + p;
-        wx[d] = cos_p[p] * sin_t[i];
-        wy[d] = sin_p[p] * sin_t[i];
-        wz[d] = cos_t[i];
-        dw[d] = dtheta * dphi * sin_t[i];
-      }
-    }
+    const std::size_t n_dir = wx.size();
     // Weights of the profiles (R: with the Rayleigh phase of the scattering towards v; M:
     // with the Mie phase) and of the ground columns.
     const std::size_t n_profile = static_cast<std::size_t>(n_theta) * n_nu;
@@ -557,7 +639,6 @@ struct Builder {
     std::vector<double> a_r(n_profile), a_m(n_profile), b_r(n_profile), b_m(n_profile);
     std::vector<double> g_r(n_ground, 0.0), g_m(n_ground, 0.0);  // kept zero outside ground_range
     std::vector<std::pair<int, int>> ground_range(n_theta);
-    std::vector<double> phase_r(n_dir), phase_m(n_dir);
     std::vector<float> sum_r(stride), sum_m(stride);
     RowList<float> rows_r, rows_m;
     const std::size_t texels_per_row = static_cast<std::size_t>(n_nu) * res.mu_s;
@@ -565,11 +646,8 @@ struct Builder {
       const Layer l = layer_geometry(layer, res.r, g);
       const double mu = std::clamp(texel_mu(jm, res.mu, l, g), -1.0, 1.0);
       const double vx = std::sqrt(1.0 - mu * mu);
-      for (std::size_t d = 0; d < n_dir; ++d) {
-        const double nu2 = vx * wx[d] + mu * wz[d];
-        phase_r[d] = rayleigh_phase(nu2) * dw[d];
-        phase_m[d] = k.mie_phase(nu2) * dw[d];
-      }
+      const double* phase_r = layer_phase_r.data() + static_cast<std::size_t>(jm) * n_dir;
+      const double* phase_m = layer_phase_m.data() + static_cast<std::size_t>(jm) * n_dir;
       for (int knu = 0; knu < n_nu; ++knu) {
         const double var = std::sqrt(1.0 - mu * mu) * std::sqrt(1.0 - mu_s * mu_s);
         const double nu = std::clamp(texel_nu(knu, n_nu), mu_s * mu - var, mu_s * mu + var);
@@ -780,9 +858,10 @@ Tables precompute_tables(const AtmosphereSpectra& spectra, const Resolution& res
   t.stride = padded_stride(t.wavelengths);
   Coefficients k = coefficients(spectra, t.stride);
   k.mie_phase.table = std::move(mie_phase_table);
-  // Progress units: single scattering 1, per order density 3, transport 1.5.
+  // Progress units: single scattering 1 (twice with later orders), per order density 3,
+  // transport 1.5.
   const int later_orders = std::max(resolution.orders - 1, 0);
-  Progress progress(context, 1.0 + 4.5 * later_orders + 0.05);
+  Progress progress(context, (later_orders > 0 ? 2.0 : 1.0) + 4.5 * later_orders + 0.05);
   Builder b{resolution, t.geometry, k, context, t, progress, t.stride};
 
   context.report(0.0, "transmittance");
@@ -795,12 +874,18 @@ Tables precompute_tables(const AtmosphereSpectra& spectra, const Resolution& res
   // Sky irradiance: the orders 1 .. max(orders - 1, 1) of light reaching the ground (2008
   // code: the delta E of iterations 2 .. orders).
   FloatTable2D irradiance_sum = b.build_irradiance(source);
-  // Peak memory: the two single-scattering tables, the density, the running sum and one
-  // order's scattering, all in half precision (the previous order is released before the next
-  // one is transported).
+  // Peak memory: three 4D tables at any time, all in half precision. The single-scattering
+  // tables are read only by the second order's density and irradiance: they are released
+  // after them and built again, identically, once the later orders are done, so that they are
+  // never held with the density, the running sum and an order's scattering (the previous
+  // order is released before the next one is transported). docs/tables-and-memory.md.
   HalfTable4D density, previous;
   for (int order = 2; order <= resolution.orders; ++order) {
     b.build_density(source, delta_e, density, 3.0);
+    if (order == 2) {
+      t.single_rayleigh = HalfTable4D{};
+      t.single_mie = HalfTable4D{};
+    }
     if (order > 2) {
       FloatTable2D e = b.build_irradiance(source);
       for (std::size_t i = 0; i < e.values.size(); ++i) irradiance_sum.values[i] += e.values[i];
@@ -819,6 +904,13 @@ Tables precompute_tables(const AtmosphereSpectra& spectra, const Resolution& res
       previous = std::move(current);
       source = Builder::Source{nullptr, nullptr, &previous};
     }
+  }
+  if (later_orders > 0) {
+    density = HalfTable4D{};
+    previous = HalfTable4D{};
+    // The same computation as the first time (single scattering reads only the
+    // transmittance): the same tables, bit for bit.
+    b.build_single_scattering();
   }
   t.sky_irradiance = std::move(irradiance_sum);
   context.report(1.0, "done");

@@ -7,9 +7,10 @@
 // Storage: the 2D tables in float; the 4D tables in binary16 with a power-of-two scale per
 // (r, mu) row (value = half * row_scale), so that the three resident 4D tables of 1,048,576
 // texels x 40 wavelengths take 252 MB instead of 504 MB in float. The intermediate tables of
-// the precomputation (density J, per-order scattering) use the same storage, which keeps the
-// precomputation's peak memory near 430 MB. Geometry and integration weights are computed in
-// double, spectral arithmetic in float.
+// the precomputation (density J, per-order scattering) use the same storage, and at most three
+// 4D tables are held at once (the single-scattering tables are built again after the later
+// orders), so the precomputation peaks near 260 MB (docs/tables-and-memory.md). Geometry and
+// integration weights are computed in double, spectral arithmetic in float.
 //
 // Immutable once built; thread-safe for concurrent reads.
 #pragma once

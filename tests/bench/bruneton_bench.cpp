@@ -17,6 +17,7 @@
 #include "models/bruneton/bruneton.h"
 #include "models/evaluation/evaluate_model.h"
 #include "models/registry.h"
+#include "tests/bench/peak_resident.h"
 #include "tests/support/public_captures.h"
 
 namespace clearsky {
@@ -83,11 +84,15 @@ PrecomputeContext fresh_build() {
   return context;
 }
 
+// peak_MB: the process's peak resident memory during the build (reset before it), which the
+// precomputation's intermediate tables set (docs/tables-and-memory.md).
 void BM_BrunetonPrecomputePaper(benchmark::State& state) {
   for (auto _ : state) {
+    bench::reset_peak_resident();
     const auto model = BrunetonModel::create(bruneton_descriptor(), ModelConfig{}, fresh_build());
     benchmark::DoNotOptimize(model.get());
     state.counters["table_MB"] = static_cast<double>(model->table_bytes()) / 1e6;
+    state.counters["peak_MB"] = static_cast<double>(bench::peak_resident_bytes()) / 1e6;
   }
   state.SetLabel("40 wavelengths, 32x128x32x8, 4 orders, all cores");
 }

@@ -476,6 +476,24 @@ TEST(BrunetonCache, OneOrderRoundTrip) {
   EXPECT_EQ(loaded->tables().single_rayleigh.values, built->tables().single_rayleigh.values);
 }
 
+// The single-scattering tables are released after the second order's density and built again
+// at the end (models/bruneton/README.md "Our implementation"): with later orders they are the
+// tables that single scattering alone builds, bit for bit.
+TEST(BrunetonPrecomputation, SingleScatteringRebuiltAfterTheLaterOrdersIsTheSame) {
+  PrecomputeContext fresh;
+  fresh.reuse_live_tables = false;
+  const auto single_only = make(small_bruneton_config(1), fresh);
+  const auto three_orders = make(small_bruneton_config(3), fresh);
+  ASSERT_FALSE(three_orders->tables().single_rayleigh.empty());
+  EXPECT_EQ(three_orders->tables().single_rayleigh.values,
+            single_only->tables().single_rayleigh.values);
+  EXPECT_EQ(three_orders->tables().single_rayleigh.row_scale,
+            single_only->tables().single_rayleigh.row_scale);
+  EXPECT_EQ(three_orders->tables().single_mie.values, single_only->tables().single_mie.values);
+  EXPECT_EQ(three_orders->tables().single_mie.row_scale,
+            single_only->tables().single_mie.row_scale);
+}
+
 TEST(BrunetonPrecomputation, ReportsProgressAndCancels) {
   std::vector<double> fractions;
   PrecomputeContext context;
