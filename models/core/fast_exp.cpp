@@ -9,7 +9,7 @@ namespace clearsky {
 
 namespace {
 
-// exp(x) for x in [-708, 0] (see fast_exp.h); inlined into the vector loops below.
+// exp(x) for x in [-708, 709] (see fast_exp.h); inlined into the vector loops below.
 [[gnu::always_inline]] inline double exp_core(double x) {
   constexpr double kLog2e = 1.4426950408889634074;
   constexpr double kLn2High = 6.93147180369123816490e-01;  // ln2 with 32 trailing zero bits
@@ -34,7 +34,7 @@ namespace {
   p = p * r + 1.0;
   p = p * r + 1.0;
   // The low bits of k_bits are k (two's complement); shifting them into the exponent field
-  // with the bias gives 2^k for -1022 <= k <= 0.
+  // with the bias gives 2^k for -1022 <= k <= 1023.
   const double scale = std::bit_cast<double>((k_bits + 1023u) << 52);
   return p * scale;
 }
@@ -53,6 +53,11 @@ namespace {
 
 CLEARSKY_VECTOR_CLONES void exp_nonpositive_in_place(double* values, std::size_t n) {
   for (std::size_t i = 0; i < n; ++i) values[i] = std::clamp(values[i], -708.0, 0.0);
+  for (std::size_t i = 0; i < n; ++i) values[i] = exp_core(values[i]);
+}
+
+CLEARSKY_VECTOR_CLONES void exp_in_place(double* values, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) values[i] = std::clamp(values[i], -708.0, 709.0);
   for (std::size_t i = 0; i < n; ++i) values[i] = exp_core(values[i]);
 }
 

@@ -19,6 +19,12 @@ namespace clearsky {
 
 void exp_nonpositive_in_place(double* values, std::size_t n);
 
+// exp(x) over an array for x of either sign, by the same method: inputs clamped to [-708, 709]
+// (exp(709) = 8.2e307, the largest power the exponent field holds), within 2 ulp of std::exp
+// there. For the fitted models whose exponents are not known to be <= 0 (Hosek's gradation
+// and circumsolar terms, models/hosek/hosek_functions.h).
+void exp_in_place(double* values, std::size_t n);
+
 // out[i] = exp(-(beta_rayleigh[i] rayleigh_m + beta_mie[i] mie_m)): the transmittance of the
 // optical lengths (optical_depth.h) on n wavelengths, in one vector pass.
 void transmittance_from_lengths(std::size_t n, const double* beta_rayleigh_per_m,

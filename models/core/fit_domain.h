@@ -22,7 +22,13 @@ inline constexpr const char* kClampNegativeFitOption = "clamp_negative_fit";
 // negative and clamp is false (the values are then left as they are, for the caller to drop).
 inline SampleStatus apply_fit_domain(std::span<double> spectrum, bool clamp) {
   double largest = 0.0;
-  for (double v : spectrum) largest = std::max(largest, std::abs(v));
+  bool all_nonnegative = true;  // false for a NaN too, which the pass below handles
+  for (double v : spectrum) {
+    largest = std::max(largest, std::abs(v));
+    all_nonnegative &= v >= 0.0;
+  }
+  // The usual case: one pass, nothing to clamp.
+  if (all_nonnegative) return SampleStatus::ok;
   const double rounding = 1e-9 * largest;
   bool outside = false;
   for (double& v : spectrum) {

@@ -97,11 +97,17 @@ namespace {
 // Non-finite values are failures; negative values within rounding of zero are zeroed, others
 // are failures (the model has a bug that must not reach a user as a number).
 SampleStatus sanitize(std::span<double> values) {
+  // One pass for the usual spectrum (finite, nothing negative); the second only when a value
+  // is negative.
   double largest = 0.0;
+  bool finite = true, all_nonnegative = true;
   for (double v : values) {
-    if (!std::isfinite(v)) return SampleStatus::numerical_failure;
+    finite &= std::isfinite(v);
+    all_nonnegative &= v >= 0.0;
     largest = std::max(largest, std::abs(v));
   }
+  if (!finite) return SampleStatus::numerical_failure;
+  if (all_nonnegative) return SampleStatus::ok;
   for (double& v : values) {
     if (v < 0.0) {
       if (v < -1e-9 * largest - 1e-300) return SampleStatus::numerical_failure;

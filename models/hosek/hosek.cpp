@@ -8,6 +8,7 @@
 #include <string>
 
 #include "models/atmosphere/atmosphere_parameter_table.h"
+#include "models/core/fast_exp.h"
 #include "models/core/fit_domain.h"
 #include "models/core/quadrature.h"
 #include "models/spectral/reference_spectra.h"
@@ -90,7 +91,8 @@ class HosekSunState final : public SunState {
     double weight;
   };
 
-  explicit HosekSunState(const SunPosition& sun) : SunState(sun) {}
+  explicit HosekSunState(const SunPosition& sun)
+      : SunState(sun), sun_direction(sun.unit_vector()) {}
   std::size_t memory_bytes() const override {
     return sizeof(*this) + size() * sizeof(double) * hosek::kCoefficientCount +
            contributions.capacity() * sizeof(Contribution);
@@ -102,6 +104,7 @@ class HosekSunState final : public SunState {
     return static_cast<std::uint32_t>(size() - 1);
   }
 
+  Vec3 sun_direction;  // once per sun, not per query
   std::array<std::vector<double>, hosek::kCoefficientCount> coefficient;
   std::vector<Contribution> contributions;
 };
@@ -229,12 +232,15 @@ void HosekModel::radiance_to_integrate(const SunState& sun, const Viewpoint&,
 void HosekModel::fit_radiance(const SunState& sun, bool clamp_negative,
                               std::span<const ViewDirection> views, SpectralBatch& out) const {
   const HosekSunState& state = as_hosek_state(sun);
-  const Vec3 sun_direction = state.sun().unit_vector();
+  const Vec3& sun_direction = state.sun_direction;
   const std::size_t n = state.size();
   const auto& c = state.coefficient;
-  // hosek::distribution() over all distributions at once, in passes the compiler vectorises
-  // (all but the exponentials).
-  std::vector<double> gradation(n), peak(n), f(n);
+  // hosek::distribution() over all distributions at once, in passes the compiler vectorises,
+  // the exponentials included (fast_exp.h: the gradation and circumsolar exponents of every
+  // distribution side by side in one array, one vector pass).
+  std::vector<double> exponents(2 * n), f(n);
+  double* gradation = exponents.data();
+  double* peak = exponents.data() + n;
   for (std::size_t i = 0; i < views.size(); ++i) {
     const Vec3 d = views[i].unit_vector();
     const hosek::ViewTerms v = hosek::view_terms(d.z, dot(d, sun_direction));
@@ -242,10 +248,7 @@ void HosekModel::fit_radiance(const SunState& sun, bool clamp_negative,
       gradation[t] = c[1][t] * v.inverse_cos_theta_plus;
       peak[t] = c[4][t] * v.gamma_rad;
     }
-    for (std::size_t t = 0; t < n; ++t) {
-      gradation[t] = std::exp(gradation[t]);
-      peak[t] = std::exp(peak[t]);
-    }
+    exp_in_place(exponents.data(), exponents.size());
     for (std::size_t t = 0; t < n; ++t) {
       const double g = c[8][t];
       const double mie_base = 1.0 + g * g - 2.0 * g * v.cos_gamma;

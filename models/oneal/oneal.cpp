@@ -1,6 +1,7 @@
 // O'Neal: descriptor, factory and queries (see oneal.h).
 #include "models/oneal/oneal.h"
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -97,8 +98,14 @@ void ONealModel::scattered_radiance(const SunState& sun, const Viewpoint& viewpo
                                     std::span<const ViewDirection> views, SpectralBatch& out,
                                     bool with_ground) const {
   const std::size_t n = wavelengths().size();
-  std::vector<double> scratch(4 * n);
-  const std::span<double> all(scratch);
+  // Scratch on the stack for the usual grids (the study's 40 bins), on the heap beyond: a
+  // one-view query then allocates nothing.
+  constexpr std::size_t kStackWavelengths = 64;
+  std::array<double, 4 * kStackWavelengths> stack_scratch;
+  std::vector<double> heap_scratch(n > kStackWavelengths ? 4 * n : 0);
+  const std::span<double> all = n > kStackWavelengths
+                                    ? std::span<double>(heap_scratch)
+                                    : std::span<double>(stack_scratch).first(4 * n);
   const oneal::RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n), all.subspan(2 * n, n)};
   const std::span<double> view_transmittance = all.subspan(3 * n, n);
   const auto& p = config().atmosphere;

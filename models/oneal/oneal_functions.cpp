@@ -18,30 +18,46 @@ struct Point {
   double mu;  // view zenith cosine at the point
 };
 
+// Relative density exp(-(r - bottom) / h) of one profile at radius r.
+double density(double r, double h, double bottom) { return std::exp(-(r - bottom) / h); }
+
 // Optical length of one profile to infinity along mu (any sign; the caller has excluded rays
-// that meet the ground).
-double length_to_infinity(double r, double mu, double h, double bottom) {
-  const double rho = std::exp(-(r - bottom) / h);
+// that meet the ground), with rho = density(r, h, bottom) computed by the caller, who uses it
+// for more than one length.
+double length_to_infinity(double r, double mu, double h, double bottom, double rho) {
   if (mu >= 0.0) return rho * scale_m(h, bottom, mu);
   const double tangent_radius = r * safe_sqrt(1.0 - mu * mu);
   return 2.0 * std::exp(-(tangent_radius - bottom) / h) * scale_m(h, bottom, 0.0) -
          rho * scale_m(h, bottom, -mu);
 }
 
+// The Rayleigh and Mie relative densities at a radius.
+OpticalLengths densities(const AtmosphereParameters& p, double r) {
+  return {density(r, p.rayleigh_scale_height_m, p.earth_radius_m),
+          density(r, p.mie_scale_height_m, p.earth_radius_m)};
+}
+
+OpticalLengths lengths_to_infinity(const AtmosphereParameters& p, double r, double mu,
+                                   const OpticalLengths& rho) {
+  return {length_to_infinity(r, mu, p.rayleigh_scale_height_m, p.earth_radius_m, rho.rayleigh_m),
+          length_to_infinity(r, mu, p.mie_scale_height_m, p.earth_radius_m, rho.mie_m)};
+}
+
 OpticalLengths lengths_to_infinity(const AtmosphereParameters& p, double r, double mu) {
-  return {length_to_infinity(r, mu, p.rayleigh_scale_height_m, p.earth_radius_m),
-          length_to_infinity(r, mu, p.mie_scale_height_m, p.earth_radius_m)};
+  return lengths_to_infinity(p, r, mu, densities(p, r));
+}
+
+// Optical lengths to infinity of a point of the view: along the view when it escapes, along
+// the reversed view (upward through the point) when it meets the ground.
+OpticalLengths view_lengths_to_infinity(const AtmosphereParameters& p, const Point& a,
+                                        bool view_hits_ground, const OpticalLengths& rho) {
+  return lengths_to_infinity(p, a.radius, view_hits_ground ? -a.mu : a.mu, rho);
 }
 
 // Optical lengths between two points of the view, from the observer-side one (a) to b, as
-// differences of lengths to infinity: along the view when it escapes, along the reversed
-// view (upward from b through a) when it meets the ground.
-OpticalLengths lengths_between(const AtmosphereParameters& p, const Point& a, const Point& b,
+// differences of their lengths to infinity (view_lengths_to_infinity).
+OpticalLengths lengths_between(const OpticalLengths& la, const OpticalLengths& lb,
                                bool view_hits_ground) {
-  const OpticalLengths la = view_hits_ground ? lengths_to_infinity(p, a.radius, -a.mu)
-                                             : lengths_to_infinity(p, a.radius, a.mu);
-  const OpticalLengths lb = view_hits_ground ? lengths_to_infinity(p, b.radius, -b.mu)
-                                             : lengths_to_infinity(p, b.radius, b.mu);
   const double sign = view_hits_ground ? -1.0 : 1.0;
   return {std::max(0.0, sign * (la.rayleigh_m - lb.rayleigh_m)),
           std::max(0.0, sign * (la.mie_m - lb.mie_m))};
@@ -80,6 +96,9 @@ bool single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry
   };
   const Point start = point_at(segment.start);
   const double sample_length = (end - segment.start) / samples;
+  // The observer-side end's lengths to infinity, once for all samples.
+  const OpticalLengths start_lengths =
+      view_lengths_to_infinity(p, start, line_hits_ground, densities(p, start.radius));
 
   const double* beta_rayleigh = atmosphere.rayleigh_scattering_per_m.data();
   const double* beta_mie_extinction = atmosphere.mie_extinction_per_m.data();
@@ -91,14 +110,19 @@ bool single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry
   for (int i = 0; i < samples; ++i) {
     const double d = segment.start + (i + 0.5) * sample_length;
     const Point x = point_at(d);
-    const auto to_sun = optical_lengths_to_infinity(p, x.radius, ray.mu_s_at(d, x.radius));
-    if (!to_sun) continue;  // in the Earth's shadow
-    const OpticalLengths view = lengths_between(p, start, x, line_hits_ground);
-    const double lr = view.rayleigh_m + to_sun->rayleigh_m, lm = view.mie_m + to_sun->mie_m;
+    const double mu_s = ray.mu_s_at(d, x.radius);
+    // x.radius >= the ground radius (point_at), as optical_lengths_to_infinity assumes.
+    if (ray_hits_ground(x.radius, mu_s, p.earth_radius_m)) continue;  // in the Earth's shadow
+    // The densities at x serve its length to the sun, its length along the view and the
+    // sample's weights.
+    const OpticalLengths rho = densities(p, x.radius);
+    const OpticalLengths to_sun = lengths_to_infinity(p, x.radius, mu_s, rho);
+    const OpticalLengths view = lengths_between(
+        start_lengths, view_lengths_to_infinity(p, x, line_hits_ground, rho), line_hits_ground);
+    const double lr = view.rayleigh_m + to_sun.rayleigh_m, lm = view.mie_m + to_sun.mie_m;
     transmittance_from_lengths(n_wavelengths, beta_rayleigh, beta_mie_extinction, lr, lm, t);
-    const double altitude = x.radius - p.earth_radius_m;
-    const double weight_rayleigh = sample_length * std::exp(-altitude / p.rayleigh_scale_height_m);
-    const double weight_mie = sample_length * std::exp(-altitude / p.mie_scale_height_m);
+    const double weight_rayleigh = sample_length * rho.rayleigh_m;
+    const double weight_mie = sample_length * rho.mie_m;
     add_scaled_pair(n_wavelengths, t, weight_rayleigh, weight_mie, rayleigh_integral, mie_integral);
   }
 
@@ -111,7 +135,12 @@ bool single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry
                                   beta_mie_scattering[w] * phase_mie * mie_integral[w]);
   }
   if (!transmittance_out.empty()) {
-    transmittance_into(atmosphere, lengths_between(p, start, point_at(end), line_hits_ground),
+    const Point last = point_at(end);
+    transmittance_into(atmosphere,
+                       lengths_between(start_lengths,
+                                       view_lengths_to_infinity(p, last, line_hits_ground,
+                                                                densities(p, last.radius)),
+                                       line_hits_ground),
                        transmittance_out.data());
   }
   return segment.hits_ground && end >= segment.end;

@@ -68,7 +68,8 @@ struct ScaledPerez {
 
 class PreethamSunState final : public SunState {
  public:
-  PreethamSunState(const SunPosition& sun, double turbidity) : SunState(sun) {
+  PreethamSunState(const SunPosition& sun, double turbidity)
+      : SunState(sun), sun_direction(sun.unit_vector()) {
     const double zenith = sun.zenith_rad;
     const auto make = [&](const preetham::PerezCoefficients& p, double zenith_value) {
       return ScaledPerez{p, zenith_value / preetham::perez(p, 1.0, zenith)};
@@ -83,6 +84,7 @@ class PreethamSunState final : public SunState {
   }
   std::size_t memory_bytes() const override { return sizeof(*this); }
 
+  Vec3 sun_direction;  // once per sun, not per query
   ScaledPerez luminance, chroma_x, chroma_y;
 };
 
@@ -165,8 +167,11 @@ PreethamModel::LuminanceChromaticity PreethamModel::luminance_chromaticity(
 void PreethamModel::fit_radiance(const SunState& sun, bool clamp_negative,
                                  std::span<const ViewDirection> views, SpectralBatch& out) const {
   const PreethamSunState& state = as_preetham_state(sun);
-  const Vec3 sun_direction = state.sun().unit_vector();
+  const Vec3& sun_direction = state.sun_direction;
   const std::size_t n = s0_.size();
+  const double* s0 = s0_.data();
+  const double* s1 = s1_.data();
+  const double* s2 = s2_.data();
   for (std::size_t i = 0; i < views.size(); ++i) {
     const Vec3 d = views[i].unit_vector();
     const LuminanceChromaticity v = evaluate(state, d.z, dot(d, sun_direction));
@@ -174,11 +179,15 @@ void PreethamModel::fit_radiance(const SunState& sun, bool clamp_negative,
     // L = k (S0 + M1 S1 + M2 S2) with 683 k (Y_S0 + M1 Y_S1 + M2 Y_S2) = Y (cd/m2).
     const double k =
         v.luminance_cd_m2 / (kMaxLuminousEfficacy * (y_s0_ + m.m1 * y_s1_ + m.m2 * y_s2_));
+    // The weights of the three basis spectra, once per view: the wavelength loop is three
+    // multiply-adds per wavelength over contiguous arrays, which the compiler vectorises.
+    const double k1 = k * m.m1, k2 = k * m.m2;
     auto spectrum = out.spectrum(i);
+    double* l = spectrum.data();
     // For a low sun, views near the horizon towards it get chromaticities far from the
     // daylight locus, where the basis combination turns negative at the short wavelengths
     // (fit_domain.h).
-    for (std::size_t w = 0; w < n; ++w) spectrum[w] = k * (s0_[w] + m.m1 * s1_[w] + m.m2 * s2_[w]);
+    for (std::size_t w = 0; w < n; ++w) l[w] = k * s0[w] + k1 * s1[w] + k2 * s2[w];
     out.status[i] = apply_fit_domain(spectrum, clamp_negative);
   }
 }
