@@ -5,6 +5,8 @@
 #include <limits>
 #include <numeric>
 
+#include "api/evaluation/averaging_period_quadrature.h"
+#include "api/evaluation/broadband_model_altitude.h"
 #include "api/irradiance/broadband_plane_irradiance.h"
 #include "models/atmosphere/spctral2.h"
 #include "models/core/numeric.h"
@@ -17,6 +19,17 @@ std::optional<double> measured(const storage::IrradianceSample& s, std::size_t c
   return component == 0 ? s.ghi_w_m2 : component == 1 ? s.dhi_w_m2 : s.dni_w_m2;
 }
 
+// The sun at the sample's site at an instant (NREL SPA, no refraction, as for captures).
+SolarPosition sun_at(const storage::IrradianceSample& s, double time_utc_s) {
+  SolarPositionInput input;
+  input.unix_time_utc_s = time_utc_s;
+  input.latitude_deg = s.latitude_deg;
+  input.longitude_deg = s.longitude_deg;
+  input.elevation_m = s.elevation_m;
+  input.refraction = false;
+  return solar_position(input);
+}
+
 std::optional<double> modelled_of(const ModelledIrradiance& m, std::size_t component) {
   return component == 0 ? m.ghi_w_m2 : component == 1 ? m.dhi_w_m2 : m.dni_w_m2;
 }
@@ -27,37 +40,47 @@ std::vector<ModelledIrradiance> modelled_broadband_irradiance(
     const SkyModel& model, const std::vector<storage::IrradianceSample>& samples) {
   std::vector<std::size_t> indices(model.wavelengths().size());
   std::iota(indices.begin(), indices.end(), std::size_t{0});
-  const Viewpoint ground{};
   std::vector<ModelledIrradiance> modelled;
   modelled.reserve(samples.size());
   for (const storage::IrradianceSample& s : samples) {
-    SolarPositionInput input;
-    input.unix_time_utc_s = s.time_utc_s;
-    input.latitude_deg = s.latitude_deg;
-    input.longitude_deg = s.longitude_deg;
-    input.elevation_m = s.elevation_m;
-    input.refraction = false;
-    const SolarPosition position = solar_position(input);
+    const Viewpoint site{model_altitude_for_site(model.descriptor(), s.elevation_m).altitude_m};
     ModelledIrradiance m;
-    m.sun_zenith_deg = position.zenith_deg;
-    if (!(position.zenith_deg < 90.0)) {
+    m.sun_zenith_deg = sun_at(s, representative_time_utc_s(s.time_utc_s, s.averaging_s)).zenith_deg;
+    if (!(m.sun_zenith_deg < 90.0)) {
       modelled.push_back(m);
       continue;
     }
-    const SunPosition sun{position.zenith_deg * kDegree, position.azimuth_deg * kDegree};
-    const auto state = model.prepare_sun(sun);
-    const HorizontalIrradiance h = horizontal_irradiance(model, *state, ground, true, true, "time");
-    const BroadbandConditions conditions{
-        .sun_zenith_rad = sun.zenith_rad,
-        .altitude_m = ground.altitude_m,
-        .atmosphere = model.config().atmosphere,
-        .earth_sun_distance_factor =
-            spctral2::earth_sun_distance_factor(day_of_year_utc(s.time_utc_s))};
-    const BroadbandExtension extension(model.wavelengths(), indices, conditions);
-    const BroadbandHorizontalIrradiance b = broadband_horizontal_irradiance(extension, h);
-    m.ghi_w_m2 = b.global_w_m2;
-    m.dhi_w_m2 = b.diffuse_w_m2;
-    m.dni_w_m2 = b.direct_normal_w_m2;
+    // The mean over the period the sample averages (averaging_period_quadrature.h); a node with
+    // the sun below the horizon adds nothing.
+    std::optional<double> ghi = 0.0, dhi = 0.0, dni = 0.0;
+    // A component the model did not answer at one node is not answered for the sample.
+    const auto add = [](std::optional<double>& sum, double weight, std::optional<double> value) {
+      if (sum && value && std::isfinite(*value))
+        *sum += weight * *value;
+      else
+        sum.reset();
+    };
+    for (const AveragingNode& node : averaging_nodes(s.time_utc_s, s.averaging_s)) {
+      const SolarPosition position = sun_at(s, node.time_utc_s);
+      if (!(position.zenith_deg < 90.0)) continue;
+      const SunPosition sun{position.zenith_deg * kDegree, position.azimuth_deg * kDegree};
+      const auto state = model.prepare_sun(sun);
+      const HorizontalIrradiance h = horizontal_irradiance(model, *state, site, true, true, "time");
+      const BroadbandConditions conditions{
+          .sun_zenith_rad = sun.zenith_rad,
+          .altitude_m = site.altitude_m,
+          .atmosphere = model.config().atmosphere,
+          .earth_sun_distance_factor =
+              spctral2::earth_sun_distance_factor(day_of_year_utc(node.time_utc_s))};
+      const BroadbandExtension extension(model.wavelengths(), indices, conditions);
+      const BroadbandHorizontalIrradiance b = broadband_horizontal_irradiance(extension, h);
+      add(ghi, node.weight, b.global_w_m2);
+      add(dhi, node.weight, b.diffuse_w_m2);
+      add(dni, node.weight, b.direct_normal_w_m2);
+    }
+    m.ghi_w_m2 = ghi;
+    m.dhi_w_m2 = dhi;
+    m.dni_w_m2 = dni;
     modelled.push_back(m);
   }
   return modelled;

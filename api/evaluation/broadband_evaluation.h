@@ -5,10 +5,14 @@
 // was measured:
 //  - the sun is computed from the instant and the site (NREL SPA, no refraction, as for
 //    captures: models/evaluation/capture_preparation.h), the Earth-Sun distance from the date;
-//  - the model answers at the ground of its own atmosphere (altitude 0, as the capture
-//    evaluation), with the absorbers of its configuration (precipitable water, ozone);
+//  - the model answers at the site's elevation where its descriptor answers that altitude, at
+//    its ground otherwise (broadband_model_altitude.h), with the absorbers of its configuration
+//    (precipitable water, ozone);
+//  - a sample that averages a period (averaging_s) is compared with the model's mean over that
+//    period, labelled at its end (averaging_period_quadrature.h);
 //  - a sample is compared, per component it measured, when the sun is above the horizon
-//    (zenith below 90 degrees); its error is model minus measured, W/m2;
+//    (zenith below 90 degrees) at its instant, or at the middle of the period it averages; its
+//    error is model minus measured, W/m2;
 //  - per component, the RMSE and the mean bias over the samples compared (absent with none).
 // Models without a broadband answer (broadband_unavailable_reason: Preetham, Hosek-Wilkie) are
 // refused by the caller with an error naming `model`. Thread-safe (const inputs only).
@@ -29,7 +33,7 @@ inline constexpr std::array<const char*, 3> kIrradianceComponents = {"ghi", "dhi
 
 // The model's broadband figures at one sample; absent at night or where it did not answer.
 struct ModelledIrradiance {
-  double sun_zenith_deg = 0;
+  double sun_zenith_deg = 0;  // at the sample's instant, or the middle of its period
   std::optional<double> ghi_w_m2, dhi_w_m2, dni_w_m2;
 };
 

@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "api/error/api_error.h"
+#include "api/evaluation/broadband_model_altitude.h"
+#include "api/evaluation/evaluation_fit.h"
 #include "api/irradiance/broadband_irradiance.h"
 #include "storage/repositories/dataset_repository.h"
 #include "storage/repositories/evaluation_run_repository.h"
@@ -20,9 +22,10 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The requested factories that can go broadband; 422 naming model for one named that cannot.
-std::vector<const ModelFactory*> broadband_factories(const std::vector<std::string>& requested,
-                                                     std::span<const ModelFactory> available) {
+}  // namespace
+
+std::vector<const ModelFactory*> broadband_models(const std::vector<std::string>& requested,
+                                                  std::span<const ModelFactory> available) {
   const bool all = requested.empty() || (requested.size() == 1 && requested[0] == "all");
   std::vector<const ModelFactory*> factories;
   for (const ModelFactory* factory : resolve_models(requested, available)) {
@@ -30,16 +33,14 @@ std::vector<const ModelFactory*> broadband_factories(const std::vector<std::stri
     if (!unavailable) {
       factories.push_back(factory);
     } else if (!all) {
-      throw ApiError(422, "broadband_unavailable", "model",
-                     "model: " + *unavailable +
+      throw ApiError(422, "broadband_unavailable", "models",
+                     "models: " + *unavailable +
                          "; a broadband irradiance dataset is evaluated "
                          "by the models with a broadband answer");
     }
   }
   return factories;
 }
-
-}  // namespace
 
 bool is_broadband_dataset(storage::Database& db, const std::string& dataset) {
   const auto found = storage::DatasetRepository(db).find(dataset);
@@ -49,7 +50,7 @@ bool is_broadband_dataset(storage::Database& db, const std::string& dataset) {
 BroadbandEvaluationReport run_broadband_evaluation(storage::Database& db,
                                                    const EvaluationRequest& request,
                                                    std::span<const ModelFactory> available) {
-  const std::vector<const ModelFactory*> factories = broadband_factories(request.models, available);
+  const std::vector<const ModelFactory*> factories = broadband_models(request.models, available);
   const auto dataset = storage::DatasetRepository(db).find(request.dataset);
   if (!dataset || dataset->kind != storage::kBroadbandIrradianceKind)
     throw std::invalid_argument("dataset '" + request.dataset +
@@ -64,13 +65,21 @@ BroadbandEvaluationReport run_broadband_evaluation(storage::Database& db,
   storage::EvaluationRunRepository runs(db);
   for (const ModelFactory* factory : factories) {
     const std::string& id = factory->descriptor->id;
-    const ModelConfig config = config_for_model(*factory->descriptor, request.parameters);
+    // A stored fit named by the parameters, expanded now: "latest" is the newest when the run
+    // starts (evaluation_fit.h), as for captures.
+    const nlohmann::json parameters =
+        expand_evaluation_fit(db, request.parameters, *factory->descriptor);
+    const ModelConfig config = config_for_model(*factory->descriptor, parameters);
+    nlohmann::json applied = parameters_for_model(*factory->descriptor, parameters);
+    if (parameters.contains(kFitParameter)) applied[kFitParameter] = parameters[kFitParameter];
+    if (request.parameters.is_object() && request.parameters.contains(kQualityParameter))
+      applied[kQualityParameter] = request.parameters[kQualityParameter];
     storage::NewRun run;
     run.dataset_id = dataset->id;
     run.job_id = request.job_id;
     run.model_id = id;
     run.model_version = factory->descriptor->version;
-    run.parameters = parameters_for_model(*factory->descriptor, request.parameters).dump();
+    run.parameters = applied.dump();
     run.configuration = config.canonical_string();
     run.software_version = request.software_version;
     run.min_wavelength_nm = kBroadbandMinNm;
@@ -81,13 +90,7 @@ BroadbandEvaluationReport run_broadband_evaluation(storage::Database& db,
       const auto start = Clock::now();
       std::shared_ptr<const SkyModel> model;
       // The server's tables when it has them built; otherwise the run builds its own.
-      if (request.provider != nullptr) {
-        try {
-          model = request.provider->model(*factory, config);
-        } catch (const ApiError&) {
-          model = nullptr;
-        }
-      }
+      if (request.provider != nullptr) model = provided_model(*request.provider, *factory, config);
       if (!model) model = factory->create(config, request.options.context);
       BroadbandModelRun result;
       result.run_id = run_id;
@@ -102,16 +105,27 @@ BroadbandEvaluationReport run_broadband_evaluation(storage::Database& db,
       for (const ModelledIrradiance& m : modelled)
         if (m.sun_zenith_deg < 90.0) ++result.samples_sun_up;
       result.evaluate_seconds = seconds_since(evaluate_start);
-      runs.finish(run_id, result.rmse_w_m2.value_or(std::nan("")), result.precompute_seconds,
-                  result.evaluate_seconds,
-                  "broadband 300..4000 nm at each instant (sun from NREL SPA, no refraction); "
-                  "compared with the sun above the horizon",
-                  {});
+      std::vector<double> elevations_m;
+      bool averaged = false;
+      for (const storage::IrradianceSample& s : samples) {
+        elevations_m.push_back(s.elevation_m);
+        averaged = averaged || s.averaging_s.has_value();
+      }
+      const std::string steps =
+          "broadband 300..4000 nm at each instant (sun from NREL SPA, no refraction)\n" +
+          model_altitude_note(*factory->descriptor, elevations_m) + "\n" +
+          (averaged ? "averaged samples: the model's mean over [time - averaging_s, time] "
+                      "(Gauss-Legendre: the midpoint up to 60 s, 3 nodes per started hour)\n"
+                    : "") +
+          "compared with the sun above the horizon";
+      // The components first: a run read as succeeded has them.
       std::vector<storage::IrradianceRunResult> stored;
       for (const BroadbandComponentResult& c : result.components)
         stored.push_back(
             {c.component, c.rmse_w_m2, c.mean_bias_w_m2, c.samples_compared, c.errors_w_m2});
       storage::IrradianceRunResultRepository(db).store(run_id, stored);
+      runs.finish(run_id, result.rmse_w_m2.value_or(std::nan("")), result.precompute_seconds,
+                  result.evaluate_seconds, steps, {});
       report.models.push_back(std::move(result));
     } catch (const std::exception& e) {
       runs.fail(run_id, e.what());

@@ -6,7 +6,11 @@
 // (storage/repositories/irradiance_run_results.h). Parameters as run_evaluation
 // (evaluation_runner.h). Models "all" are the registered models with a broadband answer;
 // naming one without (broadband_unavailable_reason: Preetham, Hosek-Wilkie) is refused before
-// anything runs: ApiError 422 broadband_unavailable naming `model`.
+// anything runs: ApiError 422 broadband_unavailable naming `models`. A stored fit in the
+// parameters ("fit") is expanded when each model's run starts, as for captures
+// (evaluation_fit.h); the run's processing steps say at which altitude the model answered
+// (broadband_model_altitude.h) and how averaged samples were compared
+// (averaging_period_quadrature.h).
 // Thread-safety: uses the given Database from the calling thread only.
 #pragma once
 
@@ -35,6 +39,12 @@ struct BroadbandEvaluationReport {
   std::string dataset;
   std::vector<BroadbandModelRun> models;
 };
+
+// The requested factories, "all" being those with a broadband answer; ApiError 422
+// broadband_unavailable naming `models` for one named that has none; std::invalid_argument for
+// unknown ids (resolve_models).
+std::vector<const ModelFactory*> broadband_models(const std::vector<std::string>& requested,
+                                                  std::span<const ModelFactory> available);
 
 // Whether the dataset exists and is of kind broadband_irradiance.
 bool is_broadband_dataset(storage::Database& db, const std::string& dataset);

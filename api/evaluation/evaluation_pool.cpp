@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "api/evaluation/broadband_evaluation_runner.h"
 #include "storage/repositories/evaluation_ticket_repository.h"
 
 namespace clearsky::api {
@@ -17,16 +18,18 @@ void tell(const EvaluationPool::Finished& finished, const TicketState& done) {
   }
 }
 
-// The ids the ticket lists, in the order run_evaluation runs them; the request's own names
-// when they do not resolve (the run then fails, and the ticket says so).
+// The ids the ticket lists, in the order the run evaluates them ("all" on a broadband
+// irradiance dataset: the models with a broadband answer); the request's own names when they do
+// not resolve (the run then fails, and the ticket says so).
 std::vector<std::string> ticket_model_ids(const std::vector<std::string>& requested,
-                                          std::span<const ModelFactory> available) {
+                                          std::span<const ModelFactory> available, bool broadband) {
   try {
     std::vector<std::string> ids;
-    for (const ModelFactory* factory : resolve_models(requested, available))
+    for (const ModelFactory* factory :
+         broadband ? broadband_models(requested, available) : resolve_models(requested, available))
       ids.push_back(factory->descriptor->id);
     return ids;
-  } catch (const std::invalid_argument&) {
+  } catch (const std::exception&) {
     return requested;
   }
 }
@@ -69,8 +72,9 @@ std::int64_t EvaluationPool::submit(EvaluationRequest request, Finished on_finis
   std::int64_t id = 0;
   {
     storage::Database db = open_database_();
-    id = storage::EvaluationTicketRepository(db).create(request.dataset, request.job_id,
-                                                        ticket_model_ids(request.models, models_));
+    id = storage::EvaluationTicketRepository(db).create(
+        request.dataset, request.job_id,
+        ticket_model_ids(request.models, models_, is_broadband_dataset(db, request.dataset)));
   }
   request.options.capture_threads = options_.capture_threads;
   auto shared_request = std::make_shared<EvaluationRequest>(std::move(request));
@@ -88,7 +92,13 @@ std::int64_t EvaluationPool::submit(EvaluationRequest request, Finished on_finis
                                        const std::string& status) {
       storage::EvaluationTicketRepository(db).record_run(id, model, run_id, status);
     };
-    run_evaluation(db, recorded, models_);
+    // A broadband irradiance series is compared by its own runner (docs/data-api.md
+    // "Evaluations of broadband irradiance"), captures by run_evaluation; the kind is read when
+    // the ticket runs, as the dataset is.
+    if (is_broadband_dataset(db, recorded.dataset))
+      run_broadband_evaluation(db, recorded, models_);
+    else
+      run_evaluation(db, recorded, models_);
     tell(*finished, finish(id, "succeeded", ""));
   };
   task.failed = [this, id, finished](const std::string& error) {

@@ -7,6 +7,9 @@
 // left unrun become `skipped`. Tickets outlive the process and their ids are never reused; what
 // a crash left queued or running reads `interrupted` after the next start
 // (interrupt_unfinished_tickets; docs/data-api.md "Evaluation tickets" and "Durability").
+// A ticket on a broadband irradiance dataset runs run_broadband_evaluation
+// (broadband_evaluation_runner.h), one on captures run_evaluation; both report each model's
+// run to the ticket alike.
 // Thread-safety: every member may be called from any thread.
 #pragma once
 

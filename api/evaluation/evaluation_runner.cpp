@@ -124,11 +124,6 @@ std::vector<const ModelFactory*> resolve_models(const std::vector<std::string>& 
   return factories;
 }
 
-namespace {
-
-// The model of `config` from the provider, waiting while its tables are being built (503
-// model_not_ready); null when the provider refuses it for another reason (a configuration the
-// descriptor rejects, the table memory budget, a failed build).
 std::shared_ptr<const SkyModel> provided_model(const ModelProvider& provider,
                                                const ModelFactory& factory,
                                                const ModelConfig& config) {
@@ -141,6 +136,8 @@ std::shared_ptr<const SkyModel> provided_model(const ModelProvider& provider,
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
   }
 }
+
+namespace {
 
 // evaluate_model (models/evaluation/evaluate_model.h) on the provider's model when there is a
 // provider and it supplies the model: the tables and per-sun states (kept by the model itself)

@@ -100,6 +100,13 @@ ModelConfig config_for_model(const ModelDescriptor& descriptor, const nlohmann::
 std::vector<const ModelFactory*> resolve_models(const std::vector<std::string>& requested,
                                                 std::span<const ModelFactory> available);
 
+// The model of `config` from the provider, waiting while its tables are being built (503
+// model_not_ready); null when the provider refuses it for another reason (a configuration the
+// descriptor rejects, the table memory budget, a failed build).
+std::shared_ptr<const SkyModel> provided_model(const ModelProvider& provider,
+                                               const ModelFactory& factory,
+                                               const ModelConfig& config);
+
 // Runs and stores the evaluation of models among `available` (default: the registered
 // models). Throws std::invalid_argument for an unknown dataset or model or an empty dataset;
 // a model failing is recorded as a failed run, then rethrown.

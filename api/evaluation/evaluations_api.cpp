@@ -9,6 +9,7 @@
 
 #include "api/encode/iso8601_time.h"
 #include "api/error/api_error.h"
+#include "api/evaluation/broadband_evaluation_runner.h"
 #include "api/evaluation/evaluation_fit.h"
 #include "api/http/json_body.h"
 #include "api/parse/iso8601_time.h"
@@ -16,6 +17,7 @@
 #include "api/request/sky_request.h"
 #include "storage/repositories/dataset_repository.h"
 #include "storage/repositories/evaluation_run_repository.h"
+#include "storage/repositories/irradiance_run_results.h"
 
 namespace clearsky::api {
 namespace {
@@ -40,6 +42,39 @@ std::map<std::int64_t, std::string> dataset_names(storage::Database& db) {
   for (const auto& d : storage::DatasetRepository(db).list()) names[d.id] = d.name;
   return names;
 }
+
+// A broadband run's per-component results (W/m2; docs/data-api.md "Evaluations of broadband
+// irradiance"): empty for a run on captures. with_errors adds each sample's error, in the
+// dataset's order by instant (null where not compared).
+nlohmann::ordered_json irradiance_components_json(storage::Database& db, std::int64_t run_id,
+                                                  bool with_errors) {
+  nlohmann::ordered_json components = nlohmann::ordered_json::array();
+  for (const storage::IrradianceRunResult& r :
+       storage::IrradianceRunResultRepository(db).load(run_id)) {
+    nlohmann::ordered_json c{{"component", r.component},
+                             {"rmse_w_m2", optional_number(r.rmse_w_m2)},
+                             {"mean_bias_w_m2", optional_number(r.mean_bias_w_m2)},
+                             {"samples_compared", r.samples_compared}};
+    if (with_errors) {
+      nlohmann::ordered_json errors = nlohmann::ordered_json::array();
+      for (double e : r.errors_w_m2) errors.push_back(optional_number(e));
+      c["errors_w_m2"] = std::move(errors);
+    }
+    components.push_back(std::move(c));
+  }
+  return components;
+}
+
+// The samples a broadband run's pooled RMSE covers: every compared sample of every component
+// (the run row counts captures' samples, none here).
+std::int64_t pooled_samples_compared(const nlohmann::ordered_json& components) {
+  std::int64_t n = 0;
+  for (const auto& c : components) n += c["samples_compared"].get<std::int64_t>();
+  return n;
+}
+
+// What a run's rmse is in: W/m2 on a broadband irradiance series, mW/(m2.sr.nm) on captures.
+const char* rmse_unit(bool broadband) { return broadband ? "W/m2" : "mW/(m2.sr.nm)"; }
 
 // A run's stored parameters (a JSON object text from schema version 4).
 nlohmann::ordered_json stored_parameters_json(const std::string& text) {
@@ -148,12 +183,6 @@ EvaluationRequest parse_evaluation_request(storage::Database& db, const std::str
   if (!dataset)
     throw ApiError(404, "unknown_dataset", "dataset",
                    "dataset: no dataset named '" + request.dataset + "'");
-  // Broadband series are evaluated by `clearsky evaluate` (docs/data-api.md "Evaluations of
-  // broadband irradiance"); the queued runs compare captures.
-  if (dataset->kind == storage::kBroadbandIrradianceKind)
-    throw ApiError(422, "broadband_dataset", "dataset",
-                   "dataset: '" + request.dataset +
-                       "' is a broadband irradiance series, evaluated with clearsky evaluate");
   const nlohmann::json models = j.value("models", nlohmann::json("all"));
   if (models.is_string()) {
     request.models = {models.get<std::string>()};
@@ -165,9 +194,13 @@ EvaluationRequest parse_evaluation_request(storage::Database& db, const std::str
   } else {
     throw invalid_parameter("models", "\"all\" or a non-empty array of model ids");
   }
+  // On a broadband irradiance series "all" is the models with a broadband answer, and one
+  // named without is refused here (422 naming models) rather than when the ticket runs.
+  const bool broadband = dataset->kind == storage::kBroadbandIrradianceKind;
   std::vector<const ModelFactory*> factories;
   try {
-    factories = resolve_models(request.models, available);
+    factories = broadband ? broadband_models(request.models, available)
+                          : resolve_models(request.models, available);
   } catch (const std::invalid_argument& e) {
     throw ApiError(404, "unknown_model", "models", std::string("models: ") + e.what());
   }
@@ -231,10 +264,20 @@ ListPage list_evaluations(storage::Database& db, const EvaluationFilter& filter)
   where.until_unix_s = filter.until_unix_s;
   const auto runs = storage::EvaluationRunRepository(db).list(
       where, page.limit, page.cursor ? std::optional(id_from_cursor(*page.cursor)) : std::nullopt);
+  std::map<std::int64_t, bool> broadband_datasets;
+  for (const auto& d : storage::DatasetRepository(db).list())
+    broadband_datasets[d.id] = d.kind == storage::kBroadbandIrradianceKind;
   ListPage out;
   out.limit = page.limit;
   for (const storage::RunRecord& run : runs.rows) {
     const auto dataset = names.find(run.dataset_id);
+    const bool broadband = broadband_datasets[run.dataset_id];
+    nlohmann::ordered_json components =
+        broadband ? irradiance_components_json(db, run.id, false) : nlohmann::ordered_json::array();
+    const nlohmann::ordered_json samples_compared =
+        broadband && run.status == "succeeded"
+            ? nlohmann::ordered_json(pooled_samples_compared(components))
+            : optional_value(run.samples_compared);
     out.items.push_back(
         {{"id", run.id},
          {"dataset", dataset == names.end() ? nlohmann::ordered_json(nullptr)
@@ -244,7 +287,9 @@ ListPage list_evaluations(storage::Database& db, const EvaluationFilter& filter)
          {"started", run.started_utc},
          {"finished", optional_value(run.finished_utc)},
          {"rmse", optional_number(run.rmse)},
-         {"samples_compared", optional_value(run.samples_compared)},
+         {"rmse_unit", rmse_unit(broadband)},
+         {"samples_compared", samples_compared},
+         {"irradiance_components", std::move(components)},
          {"job", optional_value(run.job_id)}});
   }
   if (runs.more) out.next_cursor = id_cursor(runs.rows.back().id);
@@ -298,6 +343,10 @@ nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_i
         404, "unknown_capture", "capture",
         "capture: run " + std::to_string(run_id) + " has no capture '" + *options.capture + "'");
   const auto dataset = names.find(run->dataset_id);
+  const auto dataset_record =
+      dataset == names.end() ? std::nullopt : storage::DatasetRepository(db).find(dataset->second);
+  const bool broadband =
+      dataset_record && dataset_record->kind == storage::kBroadbandIrradianceKind;
   nlohmann::ordered_json out = {
       {"id", run->id},
       {"dataset", dataset == names.end() ? nlohmann::ordered_json(nullptr)
@@ -316,8 +365,15 @@ nlohmann::ordered_json show_evaluation(storage::Database& db, std::int64_t run_i
   out["started"] = run->started_utc;
   out["finished"] = optional_value(run->finished_utc);
   out["rmse"] = optional_number(run->rmse);
+  out["rmse_unit"] = rmse_unit(broadband);
+  out["irradiance_components"] =
+      broadband ? irradiance_components_json(db, run->id, options.samples != SampleDetail::none)
+                : nlohmann::ordered_json::array();
   out["out_of_domain"] = run->out_of_domain;
-  out["samples_compared"] = optional_value(run->samples_compared);
+  out["samples_compared"] =
+      broadband && run->status == "succeeded"
+          ? nlohmann::ordered_json(pooled_samples_compared(out["irradiance_components"]))
+          : optional_value(run->samples_compared);
   out["samples_excluded"] = optional_value(run->samples_excluded);
   out["samples_clamped"] = optional_value(run->samples_clamped);
   out["captures_unanswered"] = optional_value(run->captures_unanswered);

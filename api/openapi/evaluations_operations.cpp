@@ -74,9 +74,22 @@ Json schemas() {
     "type": "string",
     "enum": ["running", "succeeded", "failed"]
   },
+  "IrradianceComponentResult": {
+    "type": "object",
+    "required": ["component", "rmse_w_m2", "mean_bias_w_m2", "samples_compared"],
+    "additionalProperties": false,
+    "description": "One measured component of a broadband irradiance dataset against the model's broadband (300..4000 nm) figure (docs/data-api.md \"Evaluations of broadband irradiance\").",
+    "properties": {
+      "component": {"type": "string", "enum": ["ghi", "dhi", "dni"], "description": "Global horizontal, diffuse horizontal or direct normal irradiance."},
+      "rmse_w_m2": {"type": "number", "minimum": 0, "nullable": true, "description": "RMSE over the samples compared, W/m2; null when none was compared."},
+      "mean_bias_w_m2": {"type": "number", "nullable": true, "description": "Mean of model minus measured over the samples compared, W/m2; null when none was compared."},
+      "samples_compared": {"type": "integer", "minimum": 0, "description": "Samples of this component compared (the sun above the horizon at the instant, or at the middle of an averaged sample's period)."},
+      "errors_w_m2": {"type": "array", "items": {"type": "number", "nullable": true}, "description": "With samples=true or spectra (GET /v1/evaluations/{id}): each sample's error, model minus measured, W/m2, in the dataset's order by instant; null where not compared."}
+    }
+  },
   "EvaluationSummary": {
     "type": "object",
-    "required": ["id", "dataset", "model", "status", "started", "finished", "rmse", "samples_compared", "job"],
+    "required": ["id", "dataset", "model", "status", "started", "finished", "rmse", "rmse_unit", "samples_compared", "irradiance_components", "job"],
     "additionalProperties": false,
     "properties": {
       "id": {"type": "integer", "minimum": 1},
@@ -85,10 +98,17 @@ Json schemas() {
       "status": {"$ref": "#/components/schemas/RunStatus"},
       "started": {"type": "string", "format": "date-time"},
       "finished": {"type": "string", "format": "date-time", "nullable": true},
-      "rmse": {"type": "number", "nullable": true, "description": "mW/(m2.sr.nm) over the run's wavelength range."},
+      "rmse": {"type": "number", "nullable": true, "description": "In rmse_unit: mW/(m2.sr.nm) over the run's wavelength range on captures; W/m2 on a broadband irradiance dataset, all compared components pooled."},
+      "rmse_unit": {"$ref": "#/components/schemas/RmseUnit"},
       "samples_compared": {"type": "integer", "minimum": 0, "nullable": true, "description": "The samples the RMSE covers; null for runs stored before it was kept."},
+      "irradiance_components": {"type": "array", "items": {"$ref": "#/components/schemas/IrradianceComponentResult"}, "description": "On a broadband irradiance dataset, per measured component (ghi, dhi, dni in that order); empty for a run on captures."},
       "job": {"type": "integer", "nullable": true, "description": "The scheduled job that ran it."}
     }
+  },
+  "RmseUnit": {
+    "type": "string",
+    "enum": ["mW/(m2.sr.nm)", "W/m2"],
+    "description": "The unit of the run's rmse: spectral radiance on captures, irradiance on a broadband irradiance dataset."
   },
   "EvaluationList": {
     "type": "array",
@@ -137,7 +157,7 @@ Json schemas() {
   },
   "Evaluation": {
     "type": "object",
-    "required": ["id", "dataset", "model", "model_version", "parameters", "software_version", "wavelength_range_nm", "job", "status", "error", "started", "finished", "rmse", "out_of_domain", "samples_compared", "samples_excluded", "samples_clamped", "captures_unanswered", "timings", "processing_steps", "captures", "history"],
+    "required": ["id", "dataset", "model", "model_version", "parameters", "software_version", "wavelength_range_nm", "job", "status", "error", "started", "finished", "rmse", "rmse_unit", "irradiance_components", "out_of_domain", "samples_compared", "samples_excluded", "samples_clamped", "captures_unanswered", "timings", "processing_steps", "captures", "history"],
     "additionalProperties": false,
     "properties": {
       "id": {"type": "integer", "minimum": 1},
@@ -153,7 +173,9 @@ Json schemas() {
       "error": {"type": "string", "nullable": true},
       "started": {"type": "string", "format": "date-time"},
       "finished": {"type": "string", "format": "date-time", "nullable": true},
-      "rmse": {"type": "number", "nullable": true},
+      "rmse": {"type": "number", "nullable": true, "description": "In rmse_unit."},
+      "rmse_unit": {"$ref": "#/components/schemas/RmseUnit"},
+      "irradiance_components": {"type": "array", "items": {"$ref": "#/components/schemas/IrradianceComponentResult"}, "description": "On a broadband irradiance dataset, per measured component (ghi, dhi, dni in that order), with each sample's error when samples=true; empty for a run on captures. processing_steps says at which altitude the model answered (the site's elevation, or its ground when its descriptor does not answer that altitude) and how averaged samples were compared."},
       "out_of_domain": {"type": "string", "enum": ["exclude", "clamp"], "description": "What was done with samples the model could not answer."},
       "samples_compared": {"type": "integer", "minimum": 0, "nullable": true, "description": "The samples the RMSE covers (null for runs stored before it was kept); the history compares runs over the same samples only."},
       "samples_excluded": {"type": "integer", "minimum": 0, "nullable": true},
@@ -243,7 +265,7 @@ Json schemas() {
 const char* kJobExample =
     R"json({"id": 1, "name": "nightly", "schedule": "0 3 * * *", "dataset": "synthetic", "models": ["preetham", "hosek"], "parameters": {"turbidity": 3}, "paused": false, "created": "2026-11-23T19:42:24.655Z", "last_run": null, "next_run": "2026-11-24T03:00:00Z", "skipped_count": 0, "last_skipped": null, "last_result": []})json";
 const char* kRunExample =
-    R"json({"id": 1, "dataset": "synthetic", "model": "preetham", "model_version": "1", "parameters": {"turbidity": 3}, "software_version": "0.1.0", "wavelength_range_nm": [360.0, 720.0], "job": null, "status": "succeeded", "error": null, "started": "2026-11-23T19:42:21.655Z", "finished": "2026-11-23T19:42:21.656Z", "rmse": 123.0398240797635, "out_of_domain": "exclude", "samples_compared": 81, "samples_excluded": 0, "samples_clamped": 0, "captures_unanswered": 0, "timings": {"precompute_seconds": 3.9713e-05, "evaluate_seconds": 0.000182782}, "processing_steps": ["2013-05-27___11.45.00: sample 0 (zenith 77.8849 deg, azimuth 0.0000 deg) replaced by the mean of its ring neighbours 1 and 31", "2013-05-27___11.45.00: sun azimuth estimated from mirror symmetry: 116.077 deg (computed 136.077 deg, 201 candidates, +-20.0 deg in 0.20 deg steps)"], "captures": [{"label": "2013-05-27___11.45.00", "time": "2013-05-27T11:45:00-04:00", "sun_zenith": 26.651259213110777, "sun_azimuth": 116.07696990085265, "rmse": 123.0398240797635, "values_compared": 2511, "samples_compared": 81, "excluded": [], "clamped": []}], "history": {"previous_run": null, "previous_rmse": null, "rmse_changed": null}})json";
+    R"json({"id": 1, "dataset": "synthetic", "model": "preetham", "model_version": "1", "parameters": {"turbidity": 3}, "software_version": "0.1.0", "wavelength_range_nm": [360.0, 720.0], "job": null, "status": "succeeded", "error": null, "started": "2026-11-23T19:42:21.655Z", "finished": "2026-11-23T19:42:21.656Z", "rmse": 123.0398240797635, "rmse_unit": "mW/(m2.sr.nm)", "irradiance_components": [], "out_of_domain": "exclude", "samples_compared": 81, "samples_excluded": 0, "samples_clamped": 0, "captures_unanswered": 0, "timings": {"precompute_seconds": 3.9713e-05, "evaluate_seconds": 0.000182782}, "processing_steps": ["2013-05-27___11.45.00: sample 0 (zenith 77.8849 deg, azimuth 0.0000 deg) replaced by the mean of its ring neighbours 1 and 31", "2013-05-27___11.45.00: sun azimuth estimated from mirror symmetry: 116.077 deg (computed 136.077 deg, 201 candidates, +-20.0 deg in 0.20 deg steps)"], "captures": [{"label": "2013-05-27___11.45.00", "time": "2013-05-27T11:45:00-04:00", "sun_zenith": 26.651259213110777, "sun_azimuth": 116.07696990085265, "rmse": 123.0398240797635, "values_compared": 2511, "samples_compared": 81, "excluded": [], "clamped": []}], "history": {"previous_run": null, "previous_rmse": null, "rmse_changed": null}})json";
 
 Json job_path_parameter() {
   return parse(
@@ -274,7 +296,7 @@ Json operations() {
         "headers": {"Link": {"$ref": "#/components/headers/Link"}},
         "content": {"application/json": {
           "schema": {"$ref": "#/components/schemas/EvaluationList"},
-          "example": [{"id": 1, "dataset": "synthetic", "model": "preetham", "status": "succeeded", "started": "2026-11-23T19:42:21.655Z", "finished": "2026-11-23T19:42:21.656Z", "rmse": 123.0398240797635, "samples_compared": 81, "job": null}]
+          "example": [{"id": 1, "dataset": "synthetic", "model": "preetham", "status": "succeeded", "started": "2026-11-23T19:42:21.655Z", "finished": "2026-11-23T19:42:21.656Z", "rmse": 123.0398240797635, "rmse_unit": "mW/(m2.sr.nm)", "samples_compared": 81, "irradiance_components": [], "job": null}]
         }}
       },
       "400": {"description": "An unknown parameter, an invalid time, status or job."},
@@ -285,7 +307,7 @@ Json operations() {
     "operationId": "createEvaluation",
     "tags": ["evaluations"],
     "summary": "Start an evaluation",
-    "description": "Evaluates models against a stored dataset on the background evaluation workers (--evaluation-workers). The body is checked before it is queued; 202 with a ticket whose state gives the run ids.",
+    "description": "Evaluates models against a stored dataset on the background evaluation workers (--evaluation-workers). The body is checked before it is queued; 202 with a ticket whose state gives the run ids. On a broadband irradiance dataset each model's broadband GHI, DHI and DNI are compared with the measured series (docs/data-api.md \"Evaluations of broadband irradiance\"); models all means those with a broadband answer.",
     "requestBody": {
       "required": true,
       "content": {"application/json": {
@@ -305,6 +327,7 @@ Json operations() {
       "400": {"description": "A body that is not a JSON object, an unknown member, no dataset, or an invalid model list or parameter."},
       "404": {"description": "No such dataset (unknown_dataset) or model (unknown_model), or no stored fit matches parameters.fit (unknown_fit, parameter fit)."},
       "409": {"description": "parameters.fit names a fit that is not succeeded (fit_not_succeeded) or of a model not requested (fit_model_mismatch); parameter fit."},
+      "422": {"description": "A broadband irradiance dataset with a model named that has no broadband answer, Preetham or Hosek-Wilkie (broadband_unavailable, parameter models)."},
       "503": {"description": "The evaluation queue is full (--evaluation-queue; code busy)."}
     }
   },
@@ -385,7 +408,8 @@ Json operations() {
       },
       "400": {"description": "A body that is not a JSON object, an unknown member, no name or schedule, an invalid schedule, model list or parameter."},
       "404": {"description": "No such dataset or model, or no stored fit matches parameters.fit (unknown_fit)."},
-      "409": {"description": "A job of that name exists (code conflict), or parameters.fit names a fit that is not succeeded (fit_not_succeeded) or of a model not requested (fit_model_mismatch; parameter fit)."}
+      "409": {"description": "A job of that name exists (code conflict), or parameters.fit names a fit that is not succeeded (fit_not_succeeded) or of a model not requested (fit_model_mismatch; parameter fit)."},
+      "422": {"description": "A broadband irradiance dataset with a model named that has no broadband answer, Preetham or Hosek-Wilkie (broadband_unavailable, parameter models)."}
     }
   },
   "getJob": {

@@ -94,7 +94,7 @@ void add_evaluate_command(CLI::App& app, const std::string& software_version) {
       try {
         broadband = api::run_broadband_evaluation(db, request, registered_models());
       } catch (const api::ApiError& e) {
-        if (e.parameter() == "model") throw CLI::ValidationError("--models", e.reason());
+        if (e.parameter() == "models") throw CLI::ValidationError("--models", e.reason());
         throw;
       }
       if (options->json) {

@@ -159,6 +159,35 @@ EvaluationTicket ticket_of(const nlohmann::json& json) {
   return ticket;
 }
 
+namespace {
+
+// The run's RMSE in the member its unit names: rmse_unit W/m2 (a broadband irradiance dataset)
+// or mW/(m2.sr.nm) (captures, and servers that predate rmse_unit).
+void set_rmse(const nlohmann::json& json, std::optional<double>& mw_m2_sr_nm,
+              std::optional<double>& w_m2) {
+  const auto unit = optional_member<std::string>(json, "rmse_unit");
+  (unit && *unit == "W/m2" ? w_m2 : mw_m2_sr_nm) = optional_member<double>(json, "rmse");
+}
+
+std::vector<IrradianceComponentResult> irradiance_components_of(const nlohmann::json& json) {
+  std::vector<IrradianceComponentResult> out;
+  if (!json.contains("irradiance_components")) return out;
+  for (const nlohmann::json& c : member<nlohmann::json>(json, "irradiance_components")) {
+    IrradianceComponentResult r;
+    r.component = member<std::string>(c, "component");
+    r.rmse_w_m2 = optional_member<double>(c, "rmse_w_m2");
+    r.mean_bias_w_m2 = optional_member<double>(c, "mean_bias_w_m2");
+    r.samples_compared = member<std::int64_t>(c, "samples_compared");
+    if (c.contains("errors_w_m2"))
+      for (const nlohmann::json& e : c["errors_w_m2"])
+        r.errors_w_m2.push_back(e.is_number() ? std::optional(e.get<double>()) : std::nullopt);
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+}  // namespace
+
 EvaluationSummary evaluation_summary_of(const nlohmann::json& json) {
   EvaluationSummary summary;
   summary.id = member<std::int64_t>(json, "id");
@@ -167,8 +196,9 @@ EvaluationSummary evaluation_summary_of(const nlohmann::json& json) {
   summary.status = member<std::string>(json, "status");
   summary.started = member<std::string>(json, "started");
   summary.finished = optional_member<std::string>(json, "finished");
-  summary.rmse_mw_m2_sr_nm = optional_member<double>(json, "rmse");
+  set_rmse(json, summary.rmse_mw_m2_sr_nm, summary.rmse_w_m2);
   summary.samples_compared = optional_member<std::int64_t>(json, "samples_compared");
+  summary.irradiance_components = irradiance_components_of(json);
   summary.job = optional_member<std::int64_t>(json, "job");
   return summary;
 }
@@ -187,7 +217,8 @@ Evaluation evaluation_of(const nlohmann::json& json) {
   run.error = optional_member<std::string>(json, "error");
   run.started = member<std::string>(json, "started");
   run.finished = optional_member<std::string>(json, "finished");
-  run.rmse_mw_m2_sr_nm = optional_member<double>(json, "rmse");
+  set_rmse(json, run.rmse_mw_m2_sr_nm, run.rmse_w_m2);
+  run.irradiance_components = irradiance_components_of(json);
   run.out_of_domain = member<std::string>(json, "out_of_domain");
   run.samples_compared = optional_member<std::int64_t>(json, "samples_compared");
   run.samples_excluded = optional_member<std::int64_t>(json, "samples_excluded");

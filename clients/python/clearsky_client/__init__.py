@@ -9,6 +9,7 @@ Example:
 
 from .client import Client
 from .data_results import (AerosolInversion, Dataset, DatasetSummary, Evaluation, EvaluationSummary,
+                           IrradianceComponentResult,
                            EvaluationTicket, Fit, Import, Job, Page)
 from .errors import ClearskyError
 from .exr_image import SkydomeImage, read_skydome
@@ -23,5 +24,5 @@ __all__ = [
     "ModelInfo", "ModelParameter", "Radiance", "Rgb", "Irradiance", "IrradianceComponent",
     "IrradianceSeries", "SkyMatrix",
     "SkydomeFile", "SkydomeImage", "read_skydome", "DatasetSummary", "Dataset", "Import",
-    "EvaluationTicket", "EvaluationSummary", "Evaluation", "Fit", "AerosolInversion", "Job",
+    "EvaluationTicket", "EvaluationSummary", "Evaluation", "IrradianceComponentResult", "Fit", "AerosolInversion", "Job",
 ]

@@ -177,9 +177,33 @@ class AerosolInversion:
 
 
 @dataclass(frozen=True)
+class IrradianceComponentResult:
+    """One measured component (ghi, dhi, dni) of a broadband irradiance dataset against the
+    model's broadband figure: RMSE and mean bias (model minus measured) in W/m2, None when no
+    sample was compared; ``errors_w_m2`` per sample (by instant, None where not compared) when
+    the run was read with samples=True."""
+
+    component: str
+    rmse_w_m2: Optional[float]
+    mean_bias_w_m2: Optional[float]
+    samples_compared: int
+    errors_w_m2: Optional[List[Optional[float]]] = None
+
+    @classmethod
+    def from_json(cls, j: Dict[str, Any]) -> "IrradianceComponentResult":
+        return cls(j["component"], j.get("rmse_w_m2"), j.get("mean_bias_w_m2"),
+                   j["samples_compared"], j.get("errors_w_m2"))
+
+
+def _irradiance_components(j: Dict[str, Any]) -> List[IrradianceComponentResult]:
+    return [IrradianceComponentResult.from_json(c) for c in j.get("irradiance_components", [])]
+
+
+@dataclass(frozen=True)
 class EvaluationSummary:
-    """A run in GET /v1/evaluations; rmse in mW/(m2.sr.nm) over 360..720 nm (None until
-    finished)."""
+    """A run in GET /v1/evaluations; rmse in ``rmse_unit`` (mW/(m2.sr.nm) over 360..720 nm on
+    captures, W/m2 on a broadband irradiance dataset; None until finished), and on a broadband
+    dataset its ``irradiance_components``."""
 
     id: int
     dataset: str
@@ -188,17 +212,21 @@ class EvaluationSummary:
     rmse: Optional[float]
     samples_compared: Optional[int]
     job: Optional[int]
+    rmse_unit: str = "mW/(m2.sr.nm)"
+    irradiance_components: List[IrradianceComponentResult] = field(default_factory=list)
 
     @classmethod
     def from_json(cls, j: Dict[str, Any]) -> "EvaluationSummary":
         return cls(j["id"], j["dataset"], j["model"], j["status"], j.get("rmse"),
-                   j.get("samples_compared"), j.get("job"))
+                   j.get("samples_compared"), j.get("job"),
+                   j.get("rmse_unit", "mW/(m2.sr.nm)"), _irradiance_components(j))
 
 
 @dataclass(frozen=True)
 class Evaluation:
     """GET /v1/evaluations/{id}: one run with its per-capture RMSE (``captures``; with
-    samples=True each capture's samples too)."""
+    samples=True each capture's samples too), or on a broadband irradiance dataset its
+    per-component results in W/m2 (``irradiance_components``; ``rmse_unit`` says which)."""
 
     id: int
     dataset: str
@@ -210,11 +238,14 @@ class Evaluation:
     samples_compared: Optional[int]
     captures: List[Dict[str, Any]]
     raw: Dict[str, Any] = field(repr=False)
+    rmse_unit: str = "mW/(m2.sr.nm)"
+    irradiance_components: List[IrradianceComponentResult] = field(default_factory=list)
 
     @classmethod
     def from_json(cls, j: Dict[str, Any]) -> "Evaluation":
         return cls(j["id"], j["dataset"], j["model"], j["model_version"], j["parameters"],
-                   j["status"], j.get("rmse"), j.get("samples_compared"), list(j["captures"]), j)
+                   j["status"], j.get("rmse"), j.get("samples_compared"), list(j["captures"]), j,
+                   j.get("rmse_unit", "mW/(m2.sr.nm)"), _irradiance_components(j))
 
 
 @dataclass(frozen=True)

@@ -8,7 +8,7 @@ import unittest
 from datetime import datetime, timezone
 
 from clearsky_client import ClearskyError, Client, RetryPolicy
-from clearsky_client.data_results import next_cursor_of
+from clearsky_client.data_results import Evaluation, EvaluationSummary, next_cursor_of
 from clearsky_client.retry import parse_retry_after
 
 
@@ -33,6 +33,41 @@ class RetryAfter(unittest.TestCase):
         self.assertIsNone(policy.wait_before_retry(500, 1.0, 1, 0.0))   # not a retried status
         with self.assertRaises(ValueError):
             RetryPolicy(max_attempts=0)
+
+
+class BroadbandEvaluationResults(unittest.TestCase):
+    """A run on a broadband irradiance dataset as GET /v1/evaluations/{id}?samples=true and the
+    list answer it (docs/data-api.md "Evaluations of broadband irradiance")."""
+
+    COMPONENTS = [{"component": "ghi", "rmse_w_m2": 37.3, "mean_bias_w_m2": -34.2,
+                   "samples_compared": 2, "errors_w_m2": [None, -30.1, -38.3]},
+                  {"component": "dni", "rmse_w_m2": None, "mean_bias_w_m2": None,
+                   "samples_compared": 0, "errors_w_m2": [None, None, None]}]
+
+    def test_run_and_summary_read_the_components(self) -> None:
+        run = Evaluation.from_json({
+            "id": 4, "dataset": "roof", "model": "nishita93", "model_version": "1",
+            "parameters": {}, "status": "succeeded", "rmse": 37.3, "rmse_unit": "W/m2",
+            "samples_compared": 2, "captures": [], "irradiance_components": self.COMPONENTS})
+        self.assertEqual(run.rmse_unit, "W/m2")
+        self.assertEqual([c.component for c in run.irradiance_components], ["ghi", "dni"])
+        self.assertEqual(run.irradiance_components[0].mean_bias_w_m2, -34.2)
+        self.assertEqual(run.irradiance_components[0].errors_w_m2, [None, -30.1, -38.3])
+        self.assertIsNone(run.irradiance_components[1].rmse_w_m2)
+        summary = EvaluationSummary.from_json({
+            "id": 4, "dataset": "roof", "model": "nishita93", "status": "succeeded", "rmse": 37.3,
+            "rmse_unit": "W/m2", "samples_compared": 2, "job": None,
+            "irradiance_components": [dict(c, errors_w_m2=None) for c in self.COMPONENTS]})
+        self.assertEqual(summary.irradiance_components[0].rmse_w_m2, 37.3)
+        self.assertEqual(summary.irradiance_components[1].samples_compared, 0)
+
+    def test_a_run_on_captures_has_none(self) -> None:
+        summary = EvaluationSummary.from_json({
+            "id": 1, "dataset": "kider", "model": "preetham", "status": "succeeded",
+            "rmse": 88.7, "rmse_unit": "mW/(m2.sr.nm)", "samples_compared": 81, "job": None,
+            "irradiance_components": []})
+        self.assertEqual(summary.rmse_unit, "mW/(m2.sr.nm)")
+        self.assertEqual(summary.irradiance_components, [])
 
 
 class LinkHeader(unittest.TestCase):

@@ -2,7 +2,8 @@
 // broadband_evaluation_runner.h) on a real database: a series that Nishita 1993 made itself
 // (broadband GHI and DNI at its default atmosphere) is evaluated with an RMSE of 0 and stored
 // with its per-sample errors; a different beta is seen; a night sample is not compared; a model
-// without a broadband answer is refused naming `model`.
+// without a broadband answer is refused naming `models`; a sample averaging an hour is compared
+// with the model's mean over that hour; the model answers at the site's elevation.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -108,8 +109,75 @@ TEST(BroadbandEvaluation, AModelWithoutABroadbandAnswerIsRefusedNamingModel) {
   } catch (const ApiError& e) {
     EXPECT_EQ(e.status(), 422);
     EXPECT_EQ(e.code(), "broadband_unavailable");
-    EXPECT_EQ(e.parameter(), "model");
+    EXPECT_EQ(e.parameter(), "models");
   }
+}
+
+// A sample averaging the hour before 10:30 EDT: the measured value is the model's own mean over
+// that hour, made here independently by the trapezoid rule on 121 instants (30 s apart), so the
+// evaluation's 3 Gauss-Legendre nodes must find it to a small fraction of a W/m2; compared as
+// an instantaneous sample at the label, the morning's rise (about 90 W/m2 of GHI that hour)
+// shows as a bias of tens of W/m2.
+TEST(BroadbandEvaluation, AnAveragedSampleIsComparedWithTheModelsMeanOverItsPeriod) {
+  clearsky::testing::TempDir dir;
+  storage::Database db = storage::open_database(dir.path / "sky.db");
+  const auto model = factory_of("nishita93").create(ModelConfig{}, {});
+  const double label = 1369665000.0;  // 2013-05-27T10:30:00-04:00
+  const double period_s = 3600.0;
+  storage::IrradianceSample site = rhodes_instants()[0];
+  std::vector<storage::IrradianceSample> instants;
+  for (int i = 0; i <= 120; ++i) {
+    storage::IrradianceSample s = site;
+    s.time_utc_s = label - period_s + 30.0 * i;
+    instants.push_back(s);
+  }
+  const auto dense = modelled_broadband_irradiance(*model, instants);
+  double ghi_mean = 0, dni_mean = 0;
+  for (int i = 0; i <= 120; ++i) {
+    const double w = (i == 0 || i == 120) ? 0.5 / 120 : 1.0 / 120;
+    ghi_mean += w * *dense[i].ghi_w_m2;
+    dni_mean += w * *dense[i].dni_w_m2;
+  }
+  storage::IrradianceSample averaged = site;
+  averaged.time_utc_s = label;
+  averaged.averaging_s = period_s;
+  averaged.ghi_w_m2 = ghi_mean;
+  averaged.dni_w_m2 = dni_mean;
+  const auto modelled = modelled_broadband_irradiance(*model, {averaged});
+  // The trapezoid's own error on 30 s steps is below 0.01 W/m2 (h^2/12 of the curvature).
+  EXPECT_NEAR(*modelled[0].ghi_w_m2, ghi_mean, 0.05);
+  EXPECT_NEAR(*modelled[0].dni_w_m2, dni_mean, 0.05);
+  EXPECT_GT(*dense.back().ghi_w_m2 - *dense.front().ghi_w_m2, 50.0);
+
+  const std::int64_t dataset = storage::DatasetRepository(db).find_or_create(
+      "hourly", "irradiance", storage::kBroadbandIrradianceKind);
+  storage::IrradianceSample instantaneous = averaged;
+  instantaneous.averaging_s.reset();
+  storage::IrradianceSampleRepository(db).insert(dataset, {averaged});
+  EvaluationRequest request;
+  request.dataset = "hourly";
+  request.models = {"nishita93"};
+  const BroadbandModelRun run =
+      run_broadband_evaluation(db, request, registered_models()).models[0];
+  EXPECT_LT(*run.components[0].rmse_w_m2, 0.05);
+  EXPECT_EQ(run.components[0].samples_compared, 1);
+
+  // The same value taken as instantaneous at the label: the model at 10:30 is above the hour's
+  // mean, by about half the hour's rise.
+  const auto at_label = modelled_broadband_irradiance(*model, {instantaneous});
+  EXPECT_GT(*at_label[0].ghi_w_m2 - ghi_mean, 20.0);
+}
+
+// The site's elevation: Nishita 1993 at 3000 m has less air and aerosol above it than at sea
+// level, so more direct sun.
+TEST(BroadbandEvaluation, TheModelAnswersAtTheSitesElevation) {
+  const auto model = factory_of("nishita93").create(ModelConfig{}, {});
+  storage::IrradianceSample low = rhodes_instants()[1];
+  low.elevation_m = 0;
+  storage::IrradianceSample high = low;
+  high.elevation_m = 3000;
+  const auto modelled = modelled_broadband_irradiance(*model, {low, high});
+  EXPECT_GT(*modelled[1].dni_w_m2, *modelled[0].dni_w_m2 + 10.0);
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 // Tests of the job scheduler (server/scheduler/scheduler.h) with simulated time: a due job
 // runs once and gets its next run, downtime is caught up at most once, a job still running is
 // not started again, paused jobs wait, and a new scheduler on the same database file (a
-// restart) runs a job that fell due during the downtime exactly once.
+// restart) runs a job that fell due during the downtime exactly once; a job on a broadband
+// irradiance series evaluates it at each occurrence, and its history lists the runs with their
+// per-component results.
 #include "server/scheduler/scheduler.h"
 
 #include <gtest/gtest.h>
@@ -9,10 +11,14 @@
 #include <chrono>
 #include <thread>
 
+#include "api/evaluation/broadband_evaluation.h"
+#include "api/evaluation/evaluations_api.h"
 #include "api/jobs/jobs_api.h"
+#include "models/registry.h"
 #include "storage/repositories/capture_repository.h"
 #include "storage/repositories/dataset_repository.h"
 #include "storage/repositories/evaluation_run_repository.h"
+#include "storage/repositories/irradiance_sample_repository.h"
 #include "storage/schema/migrations.h"
 #include "tests/models/evaluation/function_model.h"
 #include "tests/support/temp_dir.h"
@@ -167,6 +173,48 @@ TEST(Scheduler, AnUnreadableNextRunIsRecomputedNotRun) {
   Scheduler scheduler(f.opener, pool, "test");
   EXPECT_EQ(scheduler.tick(kT0 + 600).started, 0);
   EXPECT_EQ(*f.record(id).next_run_utc, "2026-11-21T12:00:00Z");
+}
+
+TEST(Scheduler, AJobOnABroadbandSeriesEvaluatesItAtEachOccurrence) {
+  Fixture f;
+  // Noon EDT at Rhodes Hall, GHI as Nishita 1993 gives it there at its defaults.
+  storage::IrradianceSample s;
+  s.time_utc_s = 1369670400.0;
+  s.utc_offset_minutes = -240;
+  s.latitude_deg = 42.443449;
+  s.longitude_deg = -76.481962;
+  s.elevation_m = 250;
+  const auto nishita = find_model("nishita93")->create(ModelConfig{}, {});
+  s.ghi_w_m2 = *api::modelled_broadband_irradiance(*nishita, {s})[0].ghi_w_m2;
+  storage::IrradianceSampleRepository(f.db).insert(
+      storage::DatasetRepository(f.db).find_or_create("roof", "irradiance",
+                                                      storage::kBroadbandIrradianceKind),
+      {s});
+  const std::int64_t id = api::create_job(f.db,
+                                          R"({"name": "roof-hourly", "schedule": "0 * * * *",
+                                              "dataset": "roof", "models": ["nishita93"]})",
+                                          registered_models(), kT0)
+                              .body["id"];
+  api::EvaluationPool pool(f.opener, registered_models());
+  Scheduler scheduler(f.opener, pool, "test");
+  EXPECT_EQ(scheduler.tick(kT0 + 3600).started, 1);  // 12:00
+  pool.wait_idle();
+  EXPECT_EQ(scheduler.tick(kT0 + 2 * 3600).started, 1);  // 13:00
+  pool.wait_idle();
+  api::Parameters query("GET /v1/evaluations");
+  query.add("job", std::to_string(id));
+  const api::ListPage history = api::list_evaluations(f.db, api::parse_evaluation_filter(query));
+  ASSERT_EQ(history.items.size(), 2u);
+  for (const auto& run : history.items) {
+    EXPECT_EQ(run["status"], "succeeded");
+    EXPECT_EQ(run["rmse_unit"], "W/m2");
+    ASSERT_EQ(run["irradiance_components"].size(), 1u);
+    EXPECT_EQ(run["irradiance_components"][0]["component"], "ghi");
+    EXPECT_NEAR(run["irradiance_components"][0]["rmse_w_m2"].get<double>(), 0.0, 1e-9);
+  }
+  const auto shown = api::show_job(f.db, id);
+  ASSERT_EQ(shown["last_result"].size(), 1u);
+  EXPECT_NEAR(shown["last_result"][0]["rmse"].get<double>(), 0.0, 1e-9);
 }
 
 TEST(Scheduler, StartAndStopTheThread) {

@@ -149,6 +149,17 @@ struct EvaluationTicket {
   std::optional<std::string> error;
   bool done() const { return status != "queued" && status != "running"; }
 };
+// One measured component of a broadband irradiance dataset against the model's broadband figure
+// (docs/data-api.md "Evaluations of broadband irradiance"): W/m2, absent when no sample was
+// compared; errors_w_m2 per sample by instant (absent where not compared) when the run was read
+// with samples.
+struct IrradianceComponentResult {
+  std::string component;  // "ghi", "dhi" or "dni"
+  std::optional<double> rmse_w_m2;
+  std::optional<double> mean_bias_w_m2;  // model minus measured
+  std::int64_t samples_compared = 0;
+  std::vector<std::optional<double>> errors_w_m2;
+};
 struct EvaluationSummary {
   std::int64_t id = 0;
   std::string dataset;
@@ -156,8 +167,12 @@ struct EvaluationSummary {
   std::string status;  // "running", "succeeded", "failed"
   std::string started;
   std::optional<std::string> finished;
+  // The run's RMSE in its unit (rmse_unit): on captures mW/(m2.sr.nm), on a broadband
+  // irradiance dataset W/m2 (all compared components pooled); the other one is absent.
   std::optional<double> rmse_mw_m2_sr_nm;
+  std::optional<double> rmse_w_m2;
   std::optional<std::int64_t> samples_compared;
+  std::vector<IrradianceComponentResult> irradiance_components;  // broadband datasets only
   std::optional<std::int64_t> job;
 };
 struct EvaluationFilter : PageRequest {
@@ -186,8 +201,11 @@ struct Evaluation {
   std::optional<std::string> error;
   std::string started;
   std::optional<std::string> finished;
-  // The paper's RMSE over 360..720 nm, mW/(m2.sr.nm) (README.md "Conventions").
+  // The paper's RMSE over 360..720 nm, mW/(m2.sr.nm) (README.md "Conventions"); on a broadband
+  // irradiance dataset rmse_w_m2 instead (all compared components pooled) with each component.
   std::optional<double> rmse_mw_m2_sr_nm;
+  std::optional<double> rmse_w_m2;
+  std::vector<IrradianceComponentResult> irradiance_components;
   std::string out_of_domain;  // "exclude" or "clamp"
   std::optional<std::int64_t> samples_compared, samples_excluded, samples_clamped;
   std::vector<std::string> processing_steps;
