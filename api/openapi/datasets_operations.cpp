@@ -258,7 +258,7 @@ Json schemas() {
 }
 
 const char* kImportExample =
-    R"json({"id": 1, "dataset": "synthetic", "format": "kider", "source": "path", "path": "/tmp/oa/synth", "upload_bytes": null, "status": "succeeded", "progress": {"phase": "committed", "bytes_read": 4830932, "bytes_total": 4830932, "entries_read": 81, "entries_total": 81, "files_read": 81, "captures_added": 1, "samples_added": 81}, "timings": {"created": "2026-11-23T19:42:13.347Z", "started": "2026-11-23T19:42:13.348Z", "finished": "2026-11-23T19:42:13.562Z"}, "report": {"dataset": "synthetic", "added": ["2013-05-27___11.45.00"], "unchanged": [], "samples_added": 81, "seconds": 0.214297728}, "error": null, "location": "/v1/imports/1"})json";
+    R"json({"id": 1, "dataset": "synthetic", "format": "kider", "source": "path", "path": "/tmp/oa/synth", "upload_bytes": null, "status": "succeeded", "progress": {"phase": "committed", "bytes_read": 4830932, "bytes_total": 4830932, "entries_read": 81, "entries_total": 81, "files_read": 81, "captures_added": 1, "samples_added": 81}, "timings": {"created": "2026-11-23T19:42:13.347Z", "started": "2026-11-23T19:42:13.348Z", "finished": "2026-11-23T19:42:13.562Z"}, "report": {"dataset": "synthetic", "kind": "sky_radiance", "added": ["2013-05-27___11.45.00"], "unchanged": [], "samples_added": 81, "seconds": 0.214297728}, "error": null, "location": "/v1/imports/1"})json";
 
 Json operations() {
   Json ops = parse(R"json({
