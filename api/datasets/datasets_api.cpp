@@ -161,6 +161,7 @@ void check_dataset_name(const std::string& name) {
 
 nlohmann::ordered_json import_report_json(const storage::ImportReport& report) {
   return {{"dataset", report.dataset},
+          {"kind", storage::kSkyRadianceKind},
           {"added", report.added},
           {"unchanged", report.unchanged},
           {"samples_added", report.samples_added},

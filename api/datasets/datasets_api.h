@@ -69,7 +69,8 @@ nlohmann::ordered_json import_dataset(
     storage::Database& db, const std::string& name, const std::string& format,
     const ImportSource& source,
     const std::function<void(const storage::ImportProgress&)>& progress = {});
-// The import report as JSON (the API's and `clearsky import --json`'s).
+// The import report of captures as JSON (the API's and `clearsky import --json`'s): kind
+// sky_radiance, which tells it from a broadband irradiance import's (import_irradiance_samples).
 nlohmann::ordered_json import_report_json(const storage::ImportReport& report);
 // Checks the format before an import is queued (400 naming "format"; import_format.h).
 void check_import_format(const std::string& format);

@@ -5,8 +5,8 @@
 //                 "latitude", "longitude", "elevation_m"}, ...]}
 // ghi, dhi, dni (W/m2) and averaging_s (s) are each optional, a null or an absent member being
 // a value not measured; the site is in each sample when the file has none, and only then.
-// Refusals are 400 invalid_body naming the member (samples[11].ghi, site.latitude), through the
-// one client JSON parser (api/http/json_body.h) and irradiance_rows.h for the values.
+// Refusals are 400 invalid_body naming the member (samples[11].ghi, site.latitude): the body,
+// site and time through site_and_samples_json.h, the values through irradiance_rows.h.
 #pragma once
 
 #include <string_view>

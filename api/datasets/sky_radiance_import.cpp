@@ -2,12 +2,11 @@
 #include "api/datasets/sky_radiance_import.h"
 
 #include <chrono>
-#include <fstream>
 
+#include "api/datasets/import_file_text.h"
 #include "api/datasets/import_format.h"
 #include "api/datasets/sky_radiance_csv.h"
 #include "api/datasets/sky_radiance_json.h"
-#include "api/error/api_error.h"
 
 namespace clearsky::api {
 
@@ -15,21 +14,9 @@ std::vector<MeasuredCapture> read_sky_radiance_file(const std::filesystem::path&
                                                     std::string_view format,
                                                     const storage::ImportByteLimits& limits,
                                                     const std::string& shown_as) {
-  const bool json = format == kSkyRadianceJsonFormat;
-  const std::int64_t limit = limits.max_entry_bytes;
-  const std::string limit_name = "max_entry_bytes";
-  std::error_code error;
-  const std::uintmax_t size = std::filesystem::file_size(file, error);
-  if (error) throw std::runtime_error(shown_as + ": cannot be read");
-  if (size > static_cast<std::uintmax_t>(limit))
-    throw ApiError(413, "too_large", limit_name,
-                   shown_as + ": " + std::to_string(size) + " bytes, above " + limit_name + " (" +
-                       std::to_string(limit) + " bytes)");
-  std::string text(size, '\0');
-  std::ifstream in(file, std::ios::binary);
-  if (!in.read(text.data(), static_cast<std::streamsize>(size)))
-    throw std::runtime_error(shown_as + ": cannot be read");
-  return json ? parse_sky_radiance_json(text) : parse_sky_radiance_csv(text);
+  const std::string text = read_import_file_text(file, limits, shown_as);
+  return format == kSkyRadianceJsonFormat ? parse_sky_radiance_json(text)
+                                          : parse_sky_radiance_csv(text);
 }
 
 storage::ImportReport import_sky_radiance(

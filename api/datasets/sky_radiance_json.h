@@ -4,8 +4,8 @@
 //                 "latitude", "longitude", "elevation_m"}, ...]}  (the site when the file has
 //                                                                  none, and only then)
 // Numbers are JSON numbers, time a string. Refusals are 400 invalid_body naming the member
-// (samples[11].radiance, site.latitude), through the one client JSON parser
-// (api/http/json_body.h) and sky_radiance_rows.h for the values.
+// (samples[11].radiance, site.latitude): the body, site and time through
+// site_and_samples_json.h, the values through sky_radiance_rows.h.
 #pragma once
 
 #include <string_view>

@@ -111,20 +111,45 @@ Json schemas() {
     "properties": {"deleted": {"type": "string", "description": "The dataset's name."}}
   },
   "ImportReport": {
+    "description": "What an import added: captures for the sky radiance formats and Kider archives (kind sky_radiance), samples for the broadband irradiance formats (kind broadband_irradiance).",
+    "oneOf": [
+      {"$ref": "#/components/schemas/CaptureImportReport"},
+      {"$ref": "#/components/schemas/IrradianceImportReport"}
+    ],
+    "discriminator": {
+      "propertyName": "kind",
+      "mapping": {
+        "sky_radiance": "#/components/schemas/CaptureImportReport",
+        "broadband_irradiance": "#/components/schemas/IrradianceImportReport"
+      }
+    }
+  },
+  "CaptureImportReport": {
     "type": "object",
-    "description": "What an import added (null in an import's state until it succeeds). Captures (added, unchanged) for the sky radiance formats; kind broadband_irradiance with samples_unchanged, first_time and last_time for the broadband irradiance formats. One object with the members of both shapes, so that null stays expressible in OpenAPI 3.0 (nullable needs a type beside it, which a oneOf of the two shapes cannot carry).",
-    "nullable": true,
-    "required": ["dataset", "samples_added", "seconds"],
+    "description": "The import of captures of spectral sky radiance (Kider archives, sky-radiance-csv, sky-radiance-json).",
+    "required": ["dataset", "kind", "added", "unchanged", "samples_added", "seconds"],
     "additionalProperties": false,
     "properties": {
       "dataset": {"type": "string"},
-      "added": {"type": "array", "items": {"type": "string"}, "description": "Capture labels added (sky radiance formats)."},
-      "unchanged": {"type": "array", "items": {"type": "string"}, "description": "Capture labels already stored with the same content (sky radiance formats)."},
-      "kind": {"type": "string", "enum": ["broadband_irradiance"], "description": "Broadband irradiance formats only."},
+      "kind": {"type": "string", "enum": ["sky_radiance"]},
+      "added": {"type": "array", "items": {"type": "string"}, "description": "Capture labels added."},
+      "unchanged": {"type": "array", "items": {"type": "string"}, "description": "Capture labels already stored with the same content."},
       "samples_added": {"type": "integer", "minimum": 0},
-      "samples_unchanged": {"type": "integer", "minimum": 0, "description": "Samples identical to one the dataset holds (broadband irradiance formats)."},
-      "first_time": {"type": "string", "format": "date-time"},
-      "last_time": {"type": "string", "format": "date-time"},
+      "seconds": {"type": "number", "minimum": 0}
+    }
+  },
+  "IrradianceImportReport": {
+    "type": "object",
+    "description": "The import of a broadband irradiance series (irradiance-csv, irradiance-json).",
+    "required": ["dataset", "kind", "samples_added", "samples_unchanged", "seconds"],
+    "additionalProperties": false,
+    "properties": {
+      "dataset": {"type": "string"},
+      "kind": {"type": "string", "enum": ["broadband_irradiance"]},
+      "samples_added": {"type": "integer", "minimum": 0},
+      "samples_unchanged": {"type": "integer", "minimum": 0, "description": "Samples identical to one the dataset holds."},
+      "first_time": {"type": "string", "format": "date-time", "description": "Of the earliest sample; absent without samples."},
+      "last_time": {"type": "string", "format": "date-time", "description": "Of the latest sample; absent without samples."},
       "seconds": {"type": "number", "minimum": 0}
     }
   },
@@ -178,7 +203,12 @@ Json schemas() {
           "finished": {"type": "string", "format": "date-time", "nullable": true}
         }
       },
-      "report": {"$ref": "#/components/schemas/ImportReport"},
+      "report": {
+        "type": "object",
+        "nullable": true,
+        "description": "What the import added; null until it succeeds.",
+        "allOf": [{"$ref": "#/components/schemas/ImportReport"}]
+      },
       "error": {"$ref": "#/components/schemas/ImportError"},
       "location": {"type": "string", "description": "/v1/imports/{id}"}
     }
@@ -228,7 +258,7 @@ Json schemas() {
 }
 
 const char* kImportExample =
-    R"json({"id": 1, "dataset": "synthetic", "format": "kider", "source": "path", "path": "/tmp/oa/synth", "upload_bytes": null, "status": "succeeded", "progress": {"phase": "committed", "bytes_read": 4830932, "bytes_total": 4830932, "entries_read": 81, "entries_total": 81, "files_read": 81, "captures_added": 1, "samples_added": 81}, "timings": {"created": "2026-11-23T19:42:13.347Z", "started": "2026-11-23T19:42:13.348Z", "finished": "2026-11-23T19:42:13.562Z"}, "report": {"dataset": "synthetic", "added": ["2013-05-27___11.45.00"], "unchanged": [], "samples_added": 81, "seconds": 0.214297728}, "error": null, "location": "/v1/imports/1"})json";
+    R"json({"id": 1, "dataset": "synthetic", "format": "kider", "source": "path", "path": "/tmp/oa/synth", "upload_bytes": null, "status": "succeeded", "progress": {"phase": "committed", "bytes_read": 4830932, "bytes_total": 4830932, "entries_read": 81, "entries_total": 81, "files_read": 81, "captures_added": 1, "samples_added": 81}, "timings": {"created": "2026-11-23T19:42:13.347Z", "started": "2026-11-23T19:42:13.348Z", "finished": "2026-11-23T19:42:13.562Z"}, "report": {"dataset": "synthetic", "kind": "sky_radiance", "added": ["2013-05-27___11.45.00"], "unchanged": [], "samples_added": 81, "seconds": 0.214297728}, "error": null, "location": "/v1/imports/1"})json";
 
 Json operations() {
   Json ops = parse(R"json({

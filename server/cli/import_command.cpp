@@ -3,26 +3,22 @@
 // transaction, synchronously: the importer the server's import jobs run (storage/importers/),
 // with its progress printed to stderr (at most twice a second, and at each phase) unless
 // --json, whose report is the API's (api/datasets/datasets_api.h).
-#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <limits>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 
 #include "api/datasets/datasets_api.h"
 #include "api/datasets/import_format.h"
-#include "api/datasets/import_site_clock.h"
 #include "api/datasets/irradiance_import.h"
 #include "api/datasets/sky_radiance_import.h"
-#include "api/error/api_error.h"
 #include "server/cli/commands.h"
 #include "server/cli/database_option.h"
+#include "server/cli/import_options.h"
 #include "storage/importers/kider_importer.h"
 #include "storage/importers/kider_pyranometer.h"
-#include "storage/repositories/dataset_name.h"
 
 namespace clearsky::cli {
 
@@ -44,6 +40,28 @@ void print_progress(const storage::ImportProgress& p) {
             << p.samples_added << " samples) added\n";
 }
 
+// The files of an open format, CSV or JSON by their extension (docs/measurement-formats.md).
+void add_open_format_files(CLI::App& command, std::vector<std::string>& files) {
+  command.add_option("files", files, "CSV (.csv) or JSON (.json) files")
+      ->required()
+      ->check(CLI::ExistingFile);
+}
+
+std::string_view open_format_of(const std::string& file, std::string_view csv_format,
+                                std::string_view json_format) {
+  const std::string extension = std::filesystem::path(file).extension().string();
+  if (extension != ".csv" && extension != ".json")
+    throw CLI::ValidationError("files", file + ": neither .csv nor .json");
+  return extension == ".csv" ? csv_format : json_format;
+}
+
+// The operator's own files: no import limits beyond the machine's.
+storage::ImportByteLimits operator_file_limits() {
+  storage::ImportByteLimits limits;
+  limits.max_entry_bytes = limits.max_import_bytes = std::numeric_limits<std::int64_t>::max();
+  return limits;
+}
+
 // `clearsky import sky-radiance FILE... [--name NAME] [--db PATH] [--json]`: files of the open
 // format (docs/measurement-formats.md), CSV or JSON by their extension, in one transaction each.
 void add_sky_radiance_import(CLI::App& import) {
@@ -51,32 +69,21 @@ void add_sky_radiance_import(CLI::App& import) {
       "sky-radiance", "Files of the open sky-radiance format (.csv or .json), checked whole");
   struct Options {
     std::vector<std::string> files;
-    std::string name;
-    std::string db = kDefaultDatabasePath;
+    ImportDatasetOptions dataset;
     bool json = false;
   };
   auto options = std::make_shared<Options>();
-  command->add_option("files", options->files, "CSV (.csv) or JSON (.json) files")
-      ->required()
-      ->check(CLI::ExistingFile);
-  command->add_option("--name", options->name, "Dataset name")->required();
-  add_database_option(*command, options->db);
+  add_open_format_files(*command, options->files);
+  add_import_dataset_options(*command, options->dataset);
   command->add_flag("--json", options->json, "Print the import reports as JSON");
   command->callback([options] {
-    api::check_dataset_name(options->name);
-    storage::Database db = open_cli_database(options->db);
+    api::check_dataset_name(options->dataset.name);
+    storage::Database db = open_cli_database(options->dataset.db);
     for (const std::string& file : options->files) {
-      const std::filesystem::path path(file);
-      const std::string extension = path.extension().string();
-      if (extension != ".csv" && extension != ".json")
-        throw CLI::ValidationError("files", file + ": neither .csv nor .json");
       const std::string_view format =
-          extension == ".csv" ? api::kSkyRadianceCsvFormat : api::kSkyRadianceJsonFormat;
-      // The operator's own files: no import limits beyond the machine's.
-      storage::ImportByteLimits limits;
-      limits.max_entry_bytes = limits.max_import_bytes = std::numeric_limits<std::int64_t>::max();
-      const storage::ImportReport report =
-          api::import_sky_radiance(db, options->name, path, format, limits, file);
+          open_format_of(file, api::kSkyRadianceCsvFormat, api::kSkyRadianceJsonFormat);
+      const storage::ImportReport report = api::import_sky_radiance(
+          db, options->dataset.name, file, format, operator_file_limits(), file);
       if (options->json) {
         std::cout << api::import_report_json(report).dump(2) << '\n';
         continue;
@@ -96,31 +103,20 @@ void add_irradiance_import(CLI::App& import) {
       "irradiance", "Files of the open broadband irradiance format (.csv or .json), checked whole");
   struct Options {
     std::vector<std::string> files;
-    std::string name;
-    std::string db = kDefaultDatabasePath;
+    ImportDatasetOptions dataset;
   };
   auto options = std::make_shared<Options>();
-  command->add_option("files", options->files, "CSV (.csv) or JSON (.json) files")
-      ->required()
-      ->check(CLI::ExistingFile);
-  command->add_option("--name", options->name, "Dataset name")->required();
-  add_database_option(*command, options->db);
+  add_open_format_files(*command, options->files);
+  add_import_dataset_options(*command, options->dataset);
   command->callback([options] {
-    api::check_dataset_name(options->name);
-    storage::Database db = open_cli_database(options->db);
+    api::check_dataset_name(options->dataset.name);
+    storage::Database db = open_cli_database(options->dataset.db);
     for (const std::string& file : options->files) {
-      const std::filesystem::path path(file);
-      const std::string extension = path.extension().string();
-      if (extension != ".csv" && extension != ".json")
-        throw CLI::ValidationError("files", file + ": neither .csv nor .json");
       const std::string_view format =
-          extension == ".csv" ? api::kIrradianceCsvFormat : api::kIrradianceJsonFormat;
-      // The operator's own files: no import limits beyond the machine's.
-      storage::ImportByteLimits limits;
-      limits.max_entry_bytes = limits.max_import_bytes = std::numeric_limits<std::int64_t>::max();
+          open_format_of(file, api::kIrradianceCsvFormat, api::kIrradianceJsonFormat);
       std::cout << api::import_irradiance_samples(
-                       db, options->name, api::kIrradianceDatasetFormat,
-                       api::read_irradiance_file(path, format, limits, file))
+                       db, options->dataset.name, api::kIrradianceDatasetFormat,
+                       api::read_irradiance_file(file, format, operator_file_limits(), file))
                        .dump(2)
                 << '\n';
     }
@@ -137,44 +133,24 @@ void add_pyranometer_import(CLI::App& import) {
       "Kider et al. 2014 pyranometer records (YYYY.MM.DD.HH.MM.SS.txt, pyranometer_full_day.txt)");
   struct Options {
     std::vector<std::string> paths;
-    std::string name;
-    std::string db = kDefaultDatabasePath;
+    ImportDatasetOptions dataset;
     std::optional<std::string> first_record;
-    std::map<std::string, std::string> site_clock;
+    ImportSiteClockOptions site_clock;
   };
   auto options = std::make_shared<Options>();
   command->add_option("paths", options->paths, "Record files or folders")
       ->required()
       ->check(CLI::ExistingPath);
-  command->add_option("--name", options->name, "Dataset name")->required();
-  add_database_option(*command, options->db);
+  add_import_dataset_options(*command, options->dataset);
   command->add_option_function<std::string>(
       "--first-record", [options](const std::string& value) { options->first_record = value; },
       "Local time of the day file's first record, YYYY-MM-DDThh:mm:ss (default: the earliest "
       "per-capture record given with it)");
-  for (const auto& [name, what] :
-       {std::pair<std::string, std::string>{"lat", "Site latitude (default: Cornell)"},
-        {"lon", "Site longitude (default: Cornell)"},
-        {"elevation", "Site elevation, m (default: 250)"},
-        {"utc-offset", "UTC offset of the records' clock (default: -04:00)"}}) {
-    const std::string parameter = name == "utc-offset" ? "utc_offset" : name;
-    command->add_option_function<std::string>(
-        "--" + name,
-        [options, parameter](const std::string& value) { options->site_clock[parameter] = value; },
-        what);
-  }
+  add_import_site_clock_options(*command, options->site_clock, "UTC offset of the records' clock");
   command->callback([options] {
-    api::check_dataset_name(options->name);
-    api::Parameters site_clock("clearsky import pyranometer");
-    for (const auto& [name, value] : options->site_clock) site_clock.add(name, value);
-    storage::KiderImportOptions clock;
-    try {
-      clock = api::parse_import_site_clock(site_clock);
-    } catch (const api::ApiError& e) {
-      std::string option = "--" + e.parameter();
-      std::replace(option.begin(), option.end(), '_', '-');
-      throw CLI::ValidationError(option, e.reason());
-    }
+    api::check_dataset_name(options->dataset.name);
+    const storage::KiderImportOptions clock =
+        parse_import_site_clock_options(options->site_clock, "clearsky import pyranometer");
     std::vector<std::filesystem::path> paths(options->paths.begin(), options->paths.end());
     storage::KiderPyranometerRead read;
     try {
@@ -182,9 +158,9 @@ void add_pyranometer_import(CLI::App& import) {
     } catch (const std::invalid_argument& e) {
       throw CLI::ValidationError("paths", e.what());
     }
-    storage::Database db = open_cli_database(options->db);
+    storage::Database db = open_cli_database(options->dataset.db);
     nlohmann::ordered_json report = api::import_irradiance_samples(
-        db, options->name, api::kKiderPyranometerDatasetFormat, read.samples);
+        db, options->dataset.name, api::kKiderPyranometerDatasetFormat, read.samples);
     report["notes"] = read.notes;
     std::cout << report.dump(2) << '\n';
   });
@@ -200,56 +176,27 @@ void add_import_command(CLI::App& app) {
       "Kider et al. 2014 captures: .7z archives, archives of them, or folders of .asd.rad.txt");
   struct Options {
     std::vector<std::string> paths;
-    std::string name = "kider2014";
-    std::string db = kDefaultDatabasePath;
+    ImportDatasetOptions dataset;
     bool json = false;
     // The site and clock of the archives (api/datasets/import_site_clock.h), as given.
-    std::map<std::string, std::string> site_clock;
+    ImportSiteClockOptions site_clock;
   };
   auto options = std::make_shared<Options>();
   kider->add_option("paths", options->paths, "Archives (.7z, tar, zip) or folders")
       ->required()
       ->check(CLI::ExistingPath);
-  kider->add_option("--name", options->name, "Dataset name")
-      ->capture_default_str()
-      ->check(CLI::Validator(
-          [](const std::string& name) {
-            return storage::is_valid_dataset_name(name)
-                       ? std::string()
-                       : "a dataset name is " + std::string(storage::kDatasetNameRule);
-          },
-          "NAME"));
-  add_database_option(*kider, options->db);
-  for (const auto& [name, what] :
-       {std::pair<std::string, std::string>{"lat",
-                                            "Site latitude, North positive (default: "
-                                            "the published captures' site, Cornell)"},
-        {"lon", "Site longitude, East positive (default: Cornell)"},
-        {"elevation", "Site elevation above sea level, m (default: 250)"},
-        {"utc-offset", "UTC offset of the file names' local time (default: -04:00)"}}) {
-    const std::string parameter = name == "utc-offset" ? "utc_offset" : name;
-    kider->add_option_function<std::string>(
-        "--" + name,
-        [options, parameter](const std::string& value) { options->site_clock[parameter] = value; },
-        what);
-  }
+  add_import_dataset_options(*kider, options->dataset, "kider2014");
+  add_import_site_clock_options(*kider, options->site_clock,
+                                "UTC offset of the file names' local time");
   kider->add_flag("--json", options->json, "Print the import report as JSON (no progress lines)");
   add_sky_radiance_import(*import);
   add_irradiance_import(*import);
   add_pyranometer_import(*import);
   kider->callback([options] {
-    storage::Database db = open_cli_database(options->db);
+    storage::Database db = open_cli_database(options->dataset.db);
     storage::KiderImportRequest request;
-    request.dataset_name = options->name;
-    api::Parameters site_clock("clearsky import kider");
-    for (const auto& [name, value] : options->site_clock) site_clock.add(name, value);
-    try {
-      request.options = api::parse_import_site_clock(site_clock);
-    } catch (const api::ApiError& e) {
-      std::string option = "--" + e.parameter();
-      std::replace(option.begin(), option.end(), '_', '-');
-      throw CLI::ValidationError(option, e.reason());
-    }
+    request.dataset_name = options->dataset.name;
+    request.options = parse_import_site_clock_options(options->site_clock, "clearsky import kider");
     for (const auto& p : options->paths) request.paths.emplace_back(p);
     if (!options->json) {
       using Clock = std::chrono::steady_clock;

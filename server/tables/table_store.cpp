@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include "api/error/api_error.h"
+#include "models/core/canonical_config.h"
 #include "models/core/invalid_input.h"
 #include "models/core/numeric.h"
 
@@ -68,7 +70,7 @@ std::string entry_key(const ModelFactory& factory, const std::string& canonical)
 }
 
 std::string entry_key(const ModelFactory& factory, const ModelConfig& config) {
-  return entry_key(factory, config.canonical_string());
+  return entry_key(factory, canonical_config(*factory.descriptor, config).canonical_string());
 }
 
 bool pending(api::ModelState::Status status) {
@@ -181,8 +183,14 @@ std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(
 }
 
 std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory,
-                                                  const ModelConfig& config,
+                                                  const ModelConfig& requested,
                                                   const api::ModelRequester& requester) const {
+  // One entry for the options given at their default and those left out (canonical_config.h);
+  // a configuration without options (most requests) is not copied.
+  std::optional<ModelConfig> without_defaults;
+  if (!requested.options.empty())
+    without_defaults = canonical_config(*factory.descriptor, requested);
+  const ModelConfig& config = without_defaults ? *without_defaults : requested;
   // The default configuration (most requests) skips building its canonical text.
   static const AtmosphereParameters default_atmosphere;
   static const WavelengthGrid default_grid = ModelConfig{}.wavelengths;
@@ -344,7 +352,7 @@ void TableStore::start_builds(
   std::lock_guard lock(mutex_);
   for (const auto& [factory, config] : builds) {
     const std::string key = entry_key(*factory, config);
-    find_or_queue(*factory, config, key, true);
+    find_or_queue(*factory, canonical_config(*factory->descriptor, config), key, true);
     if (std::find(start_keys_.begin(), start_keys_.end(), key) == start_keys_.end())
       start_keys_.push_back(key);
   }
@@ -374,7 +382,8 @@ TableStore::ServedModel TableStore::model_or_fallback(const ModelFactory& factor
 void TableStore::prebuild(const ModelFactory& factory, const ModelConfig& config) {
   validate_config(*factory.descriptor, config);
   std::lock_guard lock(mutex_);
-  find_or_queue(factory, config, entry_key(factory, config), true);
+  find_or_queue(factory, canonical_config(*factory.descriptor, config), entry_key(factory, config),
+                true);
 }
 
 bool TableStore::ready() const {

@@ -112,6 +112,8 @@ TEST(DatasetsApi, UploadedArchiveImportsOnceAndReimportIsUnchanged) {
   storage::Database db = storage::open_database(dir.path / "db.sqlite");
   const std::string bytes = file_bytes(clearsky::testing::shared_data_dir() / kArchive);
   const auto report = upload(db, dir.path / "uploads", bytes, 8u << 20);
+  // Its kind tells it from the report of a broadband irradiance import (OpenAPI ImportReport).
+  EXPECT_EQ(report["kind"], "sky_radiance");
   ASSERT_EQ(report["added"].size(), 1u);
   EXPECT_EQ(report["added"][0], "2013-05-27___11.45.00");
   EXPECT_EQ(report["samples_added"], 81);

@@ -14,24 +14,14 @@
 #include "api/error/api_error.h"
 #include "api/parse/iso8601_time.h"
 #include "storage/schema/migrations.h"
+#include "tests/support/api_refusal.h"
 #include "tests/support/temp_dir.h"
 
 namespace clearsky::api {
 namespace {
 
-struct Refusal {
-  int status = 0;
-  std::string parameter, message;
-};
-template <typename F>
-Refusal refusal_of(F&& call) {
-  try {
-    call();
-  } catch (const ApiError& e) {
-    return {e.status(), e.parameter(), e.what()};
-  }
-  return {};
-}
+using Refusal = clearsky::testing::ApiRefusal;
+using clearsky::testing::refusal_of;
 
 const std::string kHeader = "time,latitude,longitude,elevation_m,ghi,dhi,dni\n";
 

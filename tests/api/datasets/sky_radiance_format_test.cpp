@@ -15,6 +15,7 @@
 #include "api/error/api_error.h"
 #include "api/parse/iso8601_time.h"
 #include "models/core/numeric.h"
+#include "tests/support/api_refusal.h"
 #include "tests/support/temp_dir.h"
 
 namespace clearsky::api {
@@ -23,20 +24,8 @@ namespace {
 const std::string kHeader =
     "time,latitude,longitude,elevation_m,view_zenith,view_azimuth,wavelength_nm,radiance\n";
 
-// The error a call throws (status, parameter and message), or status 0.
-struct Refusal {
-  int status = 0;
-  std::string parameter, message;
-};
-template <typename F>
-Refusal refusal_of(F&& call) {
-  try {
-    call();
-  } catch (const ApiError& e) {
-    return {e.status(), e.parameter(), e.what()};
-  }
-  return {};
-}
+using Refusal = clearsky::testing::ApiRefusal;
+using clearsky::testing::refusal_of;
 
 TEST(SkyRadianceCsv, RowsAreGroupedIntoCapturesByTimeAndDirectionsByView) {
   // Two instants written in two offsets; rows in any order, columns in another order.

@@ -384,6 +384,16 @@ def run(checker, workdir):
            headers={"Content-Type": "image/png"})
     c.call("importDataset", 400, query="name=open", body=csv, token=TOKEN,
            headers={"Content-Type": "application/octet-stream"})
+    # A broadband irradiance series: its report is ImportReport's other shape (kind
+    # broadband_irradiance), checked once the import has settled.
+    series = (b"time,latitude,longitude,elevation_m,ghi\n"
+              b"2024-06-21T10:00:00+02:00,48.8566,2.3522,35,650\n")
+    queued = c.call("importDataset", 202, query="name=series&format=irradiance-csv", body=series,
+                    token=TOKEN, headers={"Content-Type": "text/csv"})
+    settled = wait_for(c, "getImport", {"id": queued["id"]},
+                       lambda state: state["status"] in ("succeeded", "failed"))
+    if settled["status"] != "succeeded" or settled["report"]["kind"] != "broadband_irradiance":
+        raise RuntimeError(f"the irradiance import did not succeed: {settled}")
     c.call("listDatasets", 200)
     c.call("listDatasets", 400, query="verbose=1")
     dataset = {"name": c.example("getDataset", "name")}

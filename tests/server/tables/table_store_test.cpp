@@ -1,5 +1,6 @@
 // The table store: single-flight builds, 503 with Retry-After while building, readiness of the
-// default tables, and eviction of non-default configurations.
+// default tables, eviction of non-default configurations, and one entry for an option given at
+// its default and the option left out.
 #include "server/tables/table_store.h"
 
 #include <gtest/gtest.h>
@@ -7,6 +8,8 @@
 #include <thread>
 
 #include "api/error/api_error.h"
+#include "models/measured_aerosols/aerosol_inversion_source.h"
+#include "models/measured_aerosols/measured_aerosols.h"
 #include "tests/support/test_sky_model.h"
 
 namespace clearsky::server {
@@ -153,6 +156,51 @@ TEST(TableStore, SunStatesComeFromTheModelsOwnPreparation) {
   EXPECT_DOUBLE_EQ(store.sun_state(model, b)->sun().azimuth_rad, 1.5);
   EXPECT_THROW(store.sun_state(model, SunPosition{3.0, 0.0}), std::invalid_argument)
       << "a sun the model refuses is refused through the store";
+}
+
+}  // namespace
+}  // namespace clearsky::server
+
+namespace clearsky::server {
+namespace {
+
+// An option given at its default selects the tables of the option left out: one entry, one
+// build (models/core/canonical_config.h).
+TEST(TableStore, AnOptionAtItsDefaultSharesTheEntryOfTheOptionLeftOut) {
+  TableStore::Options options;
+  options.build_wait = std::chrono::milliseconds(120000);
+  TableStore store(test_factories(), options);
+  const auto& f = store.factories()[0];
+  const int before = test_sky_builds();
+  const auto left_out = store.model(f, with_options({{"build_ms", 1}}));
+  const auto at_default = store.model(f, with_options({{"build_ms", 1}, {"gain", 1.0}}));
+  EXPECT_EQ(at_default, left_out);
+  EXPECT_EQ(test_sky_builds() - before, 1);
+  EXPECT_TRUE(store.config_state(f, with_options({{"build_ms", 1}, {"gain", 1.0}})));
+  EXPECT_EQ(store.table_bytes().at("testsky"), 1234u);
+}
+
+// measured_aerosols with aerosols=0 (the shipped inversion) and without aerosols: one entry of
+// the table store, whose tables are counted once.
+TEST(TableStore, MeasuredAerosolsZeroIsTheOptionLeftOut) {
+  TableStore::Options options;
+  options.build_wait = std::chrono::milliseconds(120000);
+  TableStore store({measured_aerosols_factory()}, options);
+  const auto& f = store.factories()[0];
+  // Small tables (a build well under a second), three wavelengths.
+  ModelConfig left_out;
+  left_out.wavelengths = WavelengthGrid::points({440.0, 550.0, 680.0});
+  left_out.options = {{"scattering_orders", 2},
+                      {"table_r_size", 8},
+                      {"table_mu_size", 32},
+                      {"table_mu_s_size", 8},
+                      {"table_nu_size", 4}};
+  ModelConfig zero = left_out;
+  zero.options[kAerosolsOption] = 0;
+  const auto first = store.model(f, zero);
+  const auto second = store.model(f, left_out);
+  EXPECT_EQ(second, first);
+  EXPECT_EQ(store.table_bytes().at("measured_aerosols"), first->table_bytes());
 }
 
 }  // namespace
