@@ -14,25 +14,13 @@
 #include "storage/repositories/dataset_repository.h"
 #include "storage/repositories/irradiance_run_results.h"
 #include "storage/schema/migrations.h"
+#include "tests/support/rhodes_irradiance_instants.h"
 #include "tests/support/temp_dir.h"
 
 namespace clearsky::api {
 namespace {
 
-// 2013-05-27 at Rhodes Hall: 09:30 and 12:00 EDT, and 02:00 EDT (night).
-std::vector<storage::IrradianceSample> rhodes_instants() {
-  std::vector<storage::IrradianceSample> samples;
-  for (double t : {1369661400.0, 1369670400.0, 1369634400.0}) {
-    storage::IrradianceSample s;
-    s.time_utc_s = t;
-    s.utc_offset_minutes = -240;
-    s.latitude_deg = 42.443449;
-    s.longitude_deg = -76.481962;
-    s.elevation_m = 250;
-    samples.push_back(s);
-  }
-  return samples;
-}
+using clearsky::testing::rhodes_irradiance_instants;
 
 const ModelFactory& factory_of(const std::string& id) {
   const ModelFactory* factory = find_model(id);
@@ -43,7 +31,7 @@ const ModelFactory& factory_of(const std::string& id) {
 TEST(BroadbandEvaluation, AModelsOwnSeriesHasNoErrorAndANightSampleIsNotCompared) {
   clearsky::testing::TempDir dir;
   storage::Database db = storage::open_database(dir.path / "sky.db");
-  std::vector<storage::IrradianceSample> samples = rhodes_instants();
+  std::vector<storage::IrradianceSample> samples = rhodes_irradiance_instants();
   const auto model = factory_of("nishita93").create(ModelConfig{}, {});
   const auto modelled = modelled_broadband_irradiance(*model, samples);
   ASSERT_TRUE(modelled[0].ghi_w_m2);
@@ -94,7 +82,7 @@ TEST(BroadbandEvaluation, AModelsOwnSeriesHasNoErrorAndANightSampleIsNotCompared
 TEST(BroadbandEvaluation, AModelWithoutABroadbandAnswerIsRefusedNamingModel) {
   clearsky::testing::TempDir dir;
   storage::Database db = storage::open_database(dir.path / "sky.db");
-  std::vector<storage::IrradianceSample> samples = rhodes_instants();
+  std::vector<storage::IrradianceSample> samples = rhodes_irradiance_instants();
   samples[0].ghi_w_m2 = 650;
   storage::IrradianceSampleRepository(db).insert(
       storage::DatasetRepository(db).find_or_create("roof", "irradiance",
@@ -124,7 +112,7 @@ TEST(BroadbandEvaluation, AnAveragedSampleIsComparedWithTheModelsMeanOverItsPeri
   const auto model = factory_of("nishita93").create(ModelConfig{}, {});
   const double label = 1369665000.0;  // 2013-05-27T10:30:00-04:00
   const double period_s = 3600.0;
-  storage::IrradianceSample site = rhodes_instants()[0];
+  storage::IrradianceSample site = rhodes_irradiance_instants()[0];
   std::vector<storage::IrradianceSample> instants;
   for (int i = 0; i <= 120; ++i) {
     storage::IrradianceSample s = site;
@@ -172,7 +160,7 @@ TEST(BroadbandEvaluation, AnAveragedSampleIsComparedWithTheModelsMeanOverItsPeri
 // level, so more direct sun.
 TEST(BroadbandEvaluation, TheModelAnswersAtTheSitesElevation) {
   const auto model = factory_of("nishita93").create(ModelConfig{}, {});
-  storage::IrradianceSample low = rhodes_instants()[1];
+  storage::IrradianceSample low = rhodes_irradiance_instants()[1];
   low.elevation_m = 0;
   storage::IrradianceSample high = low;
   high.elevation_m = 3000;

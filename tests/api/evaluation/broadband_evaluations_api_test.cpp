@@ -18,6 +18,7 @@
 #include "storage/repositories/dataset_repository.h"
 #include "storage/repositories/irradiance_sample_repository.h"
 #include "storage/schema/migrations.h"
+#include "tests/support/rhodes_irradiance_instants.h"
 #include "tests/support/temp_dir.h"
 
 namespace clearsky::api {
@@ -26,16 +27,7 @@ namespace {
 // 09:30, 12:00 and 02:00 EDT on 2013-05-27 at Rhodes Hall: GHI and DNI as Nishita 1993 gives
 // them at its defaults (the night sample 0).
 void store_nishita_series(storage::Database& db, const std::string& name) {
-  std::vector<storage::IrradianceSample> samples;
-  for (double t : {1369661400.0, 1369670400.0, 1369634400.0}) {
-    storage::IrradianceSample s;
-    s.time_utc_s = t;
-    s.utc_offset_minutes = -240;
-    s.latitude_deg = 42.443449;
-    s.longitude_deg = -76.481962;
-    s.elevation_m = 250;
-    samples.push_back(s);
-  }
+  std::vector<storage::IrradianceSample> samples = clearsky::testing::rhodes_irradiance_instants();
   const auto model = find_model("nishita93")->create(ModelConfig{}, {});
   const auto modelled = modelled_broadband_irradiance(*model, samples);
   for (std::size_t i = 0; i < samples.size(); ++i) {

@@ -17,6 +17,7 @@
 #include "storage/repositories/irradiance_sample_repository.h"
 #include "tests/server/http/hostile_clients.h"
 #include "tests/server/http/watched_serve_process.h"
+#include "tests/support/rhodes_irradiance_instants.h"
 
 namespace clearsky::server {
 namespace {
@@ -33,16 +34,7 @@ nlohmann::json json_of(const httplib::Result& r) {
 // 1993 gives them at its defaults.
 void store_nishita_series(const std::filesystem::path& file) {
   storage::Database db = storage::Database::open(file);
-  std::vector<storage::IrradianceSample> samples;
-  for (double t : {1369661400.0, 1369670400.0, 1369634400.0}) {
-    storage::IrradianceSample s;
-    s.time_utc_s = t;
-    s.utc_offset_minutes = -240;
-    s.latitude_deg = 42.443449;
-    s.longitude_deg = -76.481962;
-    s.elevation_m = 250;
-    samples.push_back(s);
-  }
+  std::vector<storage::IrradianceSample> samples = clearsky::testing::rhodes_irradiance_instants();
   const auto model = find_model("nishita93")->create(ModelConfig{}, {});
   const auto modelled = api::modelled_broadband_irradiance(*model, samples);
   for (std::size_t i = 0; i < samples.size(); ++i) {
