@@ -9,6 +9,7 @@
 #include "api/evaluation/evaluations_api.h"
 #include "api/http/json_body.h"
 #include "api/jobs/cron_schedule.h"
+#include "api/jobs/job_refit.h"
 #include "storage/repositories/dataset_repository.h"
 #include "storage/repositories/evaluation_run_repository.h"
 
@@ -37,10 +38,14 @@ nlohmann::ordered_json optional_text(const std::optional<std::string>& text) {
   return *text;
 }
 
-nlohmann::ordered_json job_json(storage::Database& db, const storage::JobRecord& job) {
-  std::string dataset_name;
+std::string dataset_name_of(storage::Database& db, std::int64_t dataset_id) {
   for (const auto& d : storage::DatasetRepository(db).list())
-    if (d.id == job.dataset_id) dataset_name = d.name;
+    if (d.id == dataset_id) return d.name;
+  return {};
+}
+
+nlohmann::ordered_json job_json(storage::Database& db, const storage::JobRecord& job) {
+  const std::string dataset_name = dataset_name_of(db, job.dataset_id);
   nlohmann::ordered_json models;
   if (job.models == "all") {
     models = "all";
@@ -68,12 +73,15 @@ nlohmann::ordered_json job_json(storage::Database& db, const storage::JobRecord&
           {"models", std::move(models)},
           {"parameters", job.parameters.empty() ? nlohmann::ordered_json::object()
                                                 : nlohmann::ordered_json::parse(job.parameters)},
+          {"refit",
+           job.refit.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json::parse(job.refit)},
           {"paused", job.paused},
           {"created", job.created_utc},
           {"last_run", optional_text(job.last_run_utc)},
           {"next_run", optional_text(job.next_run_utc)},
           {"skipped_count", job.skipped_count},
           {"last_skipped", optional_text(job.last_skipped_utc)},
+          {"last_fit", last_fit_json(db, job)},
           {"last_result", std::move(last_result)}};
 }
 
@@ -98,7 +106,7 @@ CreatedResource create_job(storage::Database& db, const std::string& body,
   if (!j.is_object()) throw ApiError::about(400, "invalid_body", "body", "must be a JSON object");
   for (const auto& [name, value] : j.items())
     if (name != "name" && name != "schedule" && name != "dataset" && name != "models" &&
-        name != "parameters")
+        name != "parameters" && name != "refit")
       throw unknown_parameter(name, "POST /v1/jobs");
   if (!j.contains("name") || !j["name"].is_string() || j["name"].get<std::string>().empty())
     throw missing_parameter("name", "a unique job name");
@@ -113,6 +121,11 @@ CreatedResource create_job(storage::Database& db, const std::string& body,
     throw invalid_parameter("schedule",
                             std::string(e.what()).substr(std::string("schedule: ").size()));
   }
+  const bool refits = j.contains("refit") && !j["refit"].is_null();
+  // Each occurrence evaluates with its own new fit (job_refit.h): no other fit besides.
+  if (refits && j.contains("parameters") && j["parameters"].is_object() &&
+      j["parameters"].contains("fit"))
+    throw conflicting_parameters("refit", "parameters.fit");
   // The evaluation part is checked as POST /v1/evaluations checks it.
   nlohmann::json evaluation{{"dataset", j.value("dataset", nlohmann::json())},
                             {"models", j.value("models", nlohmann::json("all"))}};
@@ -126,6 +139,12 @@ CreatedResource create_job(storage::Database& db, const std::string& body,
   }
   job.parameters =
       j.contains("parameters") && !j["parameters"].is_null() ? j["parameters"].dump() : "";
+  // The fit of each occurrence is checked as POST /v1/fits checks it (job_refit.h).
+  if (refits) {
+    parse_job_refit(db, j["refit"], request.dataset, request.models,
+                    j.value("parameters", nlohmann::json()), "");
+    job.refit = j["refit"].dump();
+  }
   job.next_run_utc = next_run_text(job.schedule, now_unix_s);
   storage::JobRepository jobs(db);
   for (const auto& existing : jobs.list())
@@ -174,16 +193,23 @@ nlohmann::ordered_json delete_job(storage::Database& db, std::int64_t id) {
   return {{"deleted", id}};
 }
 
+std::string job_dataset_name(storage::Database& db, const storage::JobRecord& job) {
+  return dataset_name_of(db, job.dataset_id);
+}
+
 EvaluationRequest job_evaluation_request(storage::Database& db, const storage::JobRecord& job,
-                                         const std::string& software_version) {
+                                         const std::string& software_version,
+                                         std::optional<std::int64_t> fit_id) {
   EvaluationRequest request;
-  for (const auto& d : storage::DatasetRepository(db).list())
-    if (d.id == job.dataset_id) request.dataset = d.name;
+  request.dataset = dataset_name_of(db, job.dataset_id);
   if (request.dataset.empty())
     throw std::invalid_argument("job " + job.name + ": its dataset no longer exists");
   request.models = split_models(job.models);
-  request.parameters = parse_evaluation_parameters(
-      job.parameters.empty() ? nlohmann::json() : nlohmann::json::parse(job.parameters));
+  nlohmann::json parameters =
+      job.parameters.empty() ? nlohmann::json() : nlohmann::json::parse(job.parameters);
+  // The occurrence's own fit (job_refit.h): applies to the fitted model only.
+  if (fit_id) parameters["fit"] = *fit_id;
+  request.parameters = parse_evaluation_parameters(parameters);
   request.software_version = software_version;
   request.job_id = job.id;
   return request;

@@ -1,10 +1,13 @@
 // /v1/jobs, transport-free: scheduled evaluations (docs/architecture.md "The scheduler"). A job
 // evaluates models against a stored dataset on a 5-field UTC cron schedule (cron_schedule.h);
 // the scheduler (server/scheduler) runs it (docs/data-api.md "Jobs"). JSON:
-//   create body: {"name", "schedule", "dataset", "models": "all" or [ids], "parameters": {...}}
-//                (parameters as POST /v1/evaluations; optional)
+//   create body: {"name", "schedule", "dataset", "models": "all" or [ids], "parameters": {...},
+//                "refit": {...}} (parameters as POST /v1/evaluations; refit the body of POST
+//                /v1/fits without dataset, job_refit.h; both optional)
 //   a job:  {"id", "name", "schedule", "dataset", "models": [ids] or "all", "parameters",
-//            "paused", "created", "last_run", "next_run" (ISO 8601 UTC or null),
+//            "refit" (or null), "paused", "created", "last_run", "next_run" (ISO 8601 UTC or
+//            null), "skipped_count", "last_skipped", "last_fit" (job_refit.h: the fit of the
+//            newest occurrence, or null),
 //            "last_result": [{"run", "model", "status", "started", "rmse"}] (the newest run of each
 //            model the job evaluated)}
 // The list is by name, paged (api/paging/list_page.h). Creating computes the next run from
@@ -16,6 +19,7 @@
 
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -38,10 +42,15 @@ nlohmann::ordered_json pause_job(storage::Database& db, std::int64_t id);
 nlohmann::ordered_json resume_job(storage::Database& db, std::int64_t id, double now_unix_s);
 nlohmann::ordered_json delete_job(storage::Database& db, std::int64_t id);
 
-// The evaluation a job runs (its dataset by name, models, parameters, job id); throws
-// std::invalid_argument when its dataset is gone or its parameters no longer parse.
+// The name of the job's dataset; empty when it is gone.
+std::string job_dataset_name(storage::Database& db, const storage::JobRecord& job);
+
+// The evaluation a job runs (its dataset by name, models, parameters, job id; with fit_id, the
+// fit its occurrence made as the parameters' "fit"); throws std::invalid_argument when its
+// dataset is gone or its parameters no longer parse.
 EvaluationRequest job_evaluation_request(storage::Database& db, const storage::JobRecord& job,
-                                         const std::string& software_version);
+                                         const std::string& software_version,
+                                         std::optional<std::int64_t> fit_id = std::nullopt);
 
 // Job times as stored: ISO 8601 UTC to the second ("2026-11-21T10:00:00Z").
 std::string job_time_text(std::int64_t unix_s);

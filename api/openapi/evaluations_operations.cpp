@@ -214,7 +214,42 @@ Json schemas() {
       "schedule": {"type": "string", "description": "5-field cron schedule in UTC: minute hour day-of-month month day-of-week."},
       "dataset": {"type": "string"},
       "models": {"allOf": [{"$ref": "#/components/schemas/ModelSelection"}], "default": "all"},
-      "parameters": {"$ref": "#/components/schemas/EvaluationParameters"}
+      "parameters": {"$ref": "#/components/schemas/EvaluationParameters"},
+      "refit": {"$ref": "#/components/schemas/JobRefit"}
+    }
+  },
+  "JobRefit": {
+    "type": "object",
+    "nullable": true,
+    "required": ["model"],
+    "additionalProperties": false,
+    "description": "The fit each occurrence runs before evaluating (docs/fits.md \"In evaluations and jobs\"): the body of POST /v1/fits without dataset (the job's dataset is fitted), checked at creation as POST /v1/fits checks it, a 400 naming refit.<member>. The model must be among the job's models; the job's parameters may not give fit or a parameter the fit frees. Each occurrence evaluates with \"fit\" = the new fit's id (the fitted model only); a failed fit fails the occurrence, nothing is evaluated. null: the job does not re-fit.",
+    "properties": {
+      "model": {"type": "string", "description": "The model to fit, one of the job's models."},
+      "free": {"type": "array", "items": {"type": "string"}, "description": "As in FitRequest."},
+      "bounds": {"type": "object", "additionalProperties": {"type": "array", "items": {"type": "number"}, "minItems": 2, "maxItems": 2}, "description": "As in FitRequest."},
+      "grid": {"type": "array", "items": {"type": "integer", "minimum": 1, "maximum": 101}, "description": "As in FitRequest."},
+      "captures": {"type": "array", "items": {"type": "string"}, "description": "As in FitRequest."},
+      "parameters": {"$ref": "#/components/schemas/EvaluationParameters"},
+      "search_options": {"type": "object", "additionalProperties": {"type": "number"}, "description": "As in FitRequest."},
+      "per_capture": {"type": "boolean", "default": false},
+      "cross_validate": {"type": "boolean", "default": false},
+      "max_evaluations": {"type": "integer", "minimum": 0, "maximum": 10000, "default": 200},
+      "fold_evaluations": {"type": "integer", "minimum": 0, "maximum": 10000, "default": 60}
+    }
+  },
+  "JobFit": {
+    "type": "object",
+    "nullable": true,
+    "required": ["id", "status", "rmse_after", "values", "error"],
+    "additionalProperties": false,
+    "description": "The fit the job's newest occurrence made (GET /v1/fits/{id} has all of it); null before the first occurrence, for a job without refit, or once the fit went with its dataset.",
+    "properties": {
+      "id": {"type": "integer", "minimum": 1},
+      "status": {"type": "string", "enum": ["queued", "running", "succeeded", "failed", "interrupted"], "description": "failed: the occurrence failed and evaluated nothing."},
+      "rmse_after": {"type": "number", "nullable": true, "description": "Null until the fit succeeded."},
+      "values": {"type": "object", "nullable": true, "additionalProperties": {"type": "number"}, "description": "The fitted values; null until the fit succeeded."},
+      "error": {"type": "string", "nullable": true, "description": "Why the fit failed or was interrupted."}
     }
   },
   "JobResult": {
@@ -231,7 +266,7 @@ Json schemas() {
   },
   "Job": {
     "type": "object",
-    "required": ["id", "name", "schedule", "dataset", "models", "parameters", "paused", "created", "last_run", "next_run", "skipped_count", "last_skipped", "last_result"],
+    "required": ["id", "name", "schedule", "dataset", "models", "parameters", "refit", "paused", "created", "last_run", "next_run", "skipped_count", "last_skipped", "last_fit", "last_result"],
     "additionalProperties": false,
     "properties": {
       "id": {"type": "integer", "minimum": 1},
@@ -240,13 +275,15 @@ Json schemas() {
       "dataset": {"type": "string"},
       "models": {"$ref": "#/components/schemas/ModelSelection"},
       "parameters": {"$ref": "#/components/schemas/EvaluationParameters"},
+      "refit": {"$ref": "#/components/schemas/JobRefit"},
       "paused": {"type": "boolean"},
       "created": {"type": "string", "format": "date-time"},
       "last_run": {"type": "string", "format": "date-time", "nullable": true},
       "next_run": {"type": "string", "format": "date-time", "nullable": true, "description": "Computed from now at creation and on resume (a paused job does not catch up)."},
       "skipped_count": {"type": "integer", "minimum": 0, "description": "Due occurrences skipped because the job's previous run was still queued or running (one job never runs twice at once)."},
       "last_skipped": {"type": "string", "format": "date-time", "nullable": true, "description": "When the last skipped occurrence was due to start (the scheduler's clock, UTC); null: none skipped."},
-      "last_result": {"type": "array", "items": {"$ref": "#/components/schemas/JobResult"}, "description": "The newest run of each model the job evaluated."}
+      "last_fit": {"$ref": "#/components/schemas/JobFit"},
+      "last_result": {"type": "array", "items": {"$ref": "#/components/schemas/JobResult"}, "description": "The newest run of each model the job evaluated; a re-fitting job's runs record their fit in their parameters."}
     }
   },
   "JobList": {
@@ -263,7 +300,7 @@ Json schemas() {
 }
 
 const char* kJobExample =
-    R"json({"id": 1, "name": "nightly", "schedule": "0 3 * * *", "dataset": "synthetic", "models": ["preetham", "hosek"], "parameters": {"turbidity": 3}, "paused": false, "created": "2026-11-23T19:42:24.655Z", "last_run": null, "next_run": "2026-11-24T03:00:00Z", "skipped_count": 0, "last_skipped": null, "last_result": []})json";
+    R"json({"id": 1, "name": "nightly", "schedule": "0 3 * * *", "dataset": "synthetic", "models": ["preetham", "hosek"], "parameters": {"turbidity": 3}, "refit": null, "paused": false, "created": "2026-11-23T19:42:24.655Z", "last_run": null, "next_run": "2026-11-24T03:00:00Z", "skipped_count": 0, "last_skipped": null, "last_fit": null, "last_result": []})json";
 const char* kRunExample =
     R"json({"id": 1, "dataset": "synthetic", "model": "preetham", "model_version": "1", "parameters": {"turbidity": 3}, "software_version": "0.1.0", "wavelength_range_nm": [360.0, 720.0], "job": null, "status": "succeeded", "error": null, "started": "2026-11-23T19:42:21.655Z", "finished": "2026-11-23T19:42:21.656Z", "rmse": 123.0398240797635, "rmse_unit": "mW/(m2.sr.nm)", "irradiance_components": [], "out_of_domain": "exclude", "samples_compared": 81, "samples_excluded": 0, "samples_clamped": 0, "captures_unanswered": 0, "timings": {"precompute_seconds": 3.9713e-05, "evaluate_seconds": 0.000182782}, "processing_steps": ["2013-05-27___11.45.00: sample 0 (zenith 77.8849 deg, azimuth 0.0000 deg) replaced by the mean of its ring neighbours 1 and 31", "2013-05-27___11.45.00: sun azimuth estimated from mirror symmetry: 116.077 deg (computed 136.077 deg, 201 candidates, +-20.0 deg in 0.20 deg steps)"], "captures": [{"label": "2013-05-27___11.45.00", "time": "2013-05-27T11:45:00-04:00", "sun_zenith": 26.651259213110777, "sun_azimuth": 116.07696990085265, "rmse": 123.0398240797635, "values_compared": 2511, "samples_compared": 81, "excluded": [], "clamped": []}], "history": {"previous_run": null, "previous_rmse": null, "rmse_changed": null}})json";
 

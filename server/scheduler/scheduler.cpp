@@ -7,6 +7,7 @@
 
 #include "api/error/api_error.h"
 #include "api/jobs/cron_schedule.h"
+#include "api/jobs/job_refit.h"
 #include "api/jobs/jobs_api.h"
 #include "api/parse/iso8601_time.h"
 #include "storage/repositories/job_repository.h"
@@ -17,9 +18,42 @@ Scheduler::Scheduler(api::EvaluationPool::OpenDatabase open_database, api::Evalu
                      std::string software_version)
     : open_database_(std::move(open_database)),
       pool_(pool),
-      software_version_(std::move(software_version)) {}
+      software_version_(std::move(software_version)),
+      fits_(open_database_, api::WorkerPoolOptions{.workers = 1, .task_noun = "job fits"}) {}
 
-Scheduler::~Scheduler() { stop(); }
+Scheduler::~Scheduler() {
+  stop();
+  cancel_fits_ = true;
+  fits_.stop();
+}
+
+void Scheduler::wait_for_fits() { fits_.wait_idle(); }
+
+void Scheduler::leave_in_flight(std::int64_t job_id) {
+  std::lock_guard lock(in_flight_->mutex);
+  in_flight_->jobs.erase(job_id);
+}
+
+void Scheduler::submit_evaluation(api::EvaluationRequest request, const storage::JobRecord& job) {
+  const std::int64_t job_id = job.id;
+  const std::string name = job.name;
+  pool_.submit(std::move(request),
+               [in_flight = in_flight_, job_id, name](const api::TicketState& done) {
+                 if (done.status != "succeeded")
+                   spdlog::error("job {} ({}): evaluation failed: {}", job_id, name, done.error);
+                 std::lock_guard lock(in_flight->mutex);
+                 in_flight->jobs.erase(job_id);
+               });
+}
+
+void Scheduler::refit_then_evaluate(storage::Database& db, const storage::JobRecord& job,
+                                    const api::FitRequest& fit) {
+  const std::int64_t fit_id = api::record_queued_fit(db, fit);
+  storage::JobRepository(db).set_last_fit(job.id, fit_id);
+  api::run_fit(db, fit, fit_id);
+  spdlog::info("job {} ({}): fit {} succeeded; evaluating with it", job.id, job.name, fit_id);
+  submit_evaluation(api::job_evaluation_request(db, job, software_version_, fit_id), job);
+}
 
 std::set<std::int64_t> Scheduler::in_flight() const {
   std::lock_guard lock(in_flight_->mutex);
@@ -75,20 +109,34 @@ TickReport Scheduler::tick(std::int64_t now_unix_s) {
     if (!jobs.claim_run(job.id, *job.next_run_utc, api::job_time_text(now_unix_s), next_text))
       continue;
     try {
-      api::EvaluationRequest request = api::job_evaluation_request(db, job, software_version_);
-      {
-        std::lock_guard lock(in_flight_->mutex);
-        in_flight_->jobs.insert(job.id);
+      if (job.refit.empty()) {
+        api::EvaluationRequest request = api::job_evaluation_request(db, job, software_version_);
+        {
+          std::lock_guard lock(in_flight_->mutex);
+          in_flight_->jobs.insert(job.id);
+        }
+        submit_evaluation(std::move(request), job);
+      } else {
+        api::FitRequest fit =
+            api::job_fit_request(db, job, api::job_dataset_name(db, job), software_version_);
+        fit.cancel = &cancel_fits_;
+        {
+          std::lock_guard lock(in_flight_->mutex);
+          in_flight_->jobs.insert(job.id);
+        }
+        const std::int64_t job_id = job.id;
+        const std::string name = job.name;
+        api::WorkerTask task;
+        task.run = [this, job, fit](storage::Database& worker_db) {
+          refit_then_evaluate(worker_db, job, fit);
+        };
+        task.failed = [this, job_id, name](const std::string& error) {
+          spdlog::error("job {} ({}): fit failed, nothing evaluated: {}", job_id, name, error);
+          leave_in_flight(job_id);
+        };
+        task.dropped = [this, job_id] { leave_in_flight(job_id); };
+        fits_.submit(std::move(task));
       }
-      const std::int64_t job_id = job.id;
-      const std::string name = job.name;
-      pool_.submit(
-          std::move(request), [in_flight = in_flight_, job_id, name](const api::TicketState& done) {
-            if (done.status != "succeeded")
-              spdlog::error("job {} ({}): evaluation failed: {}", job_id, name, done.error);
-            std::lock_guard lock(in_flight->mutex);
-            in_flight->jobs.erase(job_id);
-          });
       spdlog::info("job {} ({}): started; next run {}", job.id, job.name,
                    next_text.value_or("never"));
       ++report.started;

@@ -8,7 +8,7 @@ namespace {
 
 constexpr const char* kJobSelect =
     "SELECT id, name, schedule, dataset_id, models, parameters, paused, created_utc, last_run_utc, "
-    "next_run_utc, skipped_count, last_skipped_utc"
+    "next_run_utc, skipped_count, last_skipped_utc, refit, last_fit_id"
     " FROM jobs";
 
 JobRecord read_job(const Statement& row) {
@@ -25,16 +25,22 @@ JobRecord read_job(const Statement& row) {
   if (!row.is_null(9)) job.next_run_utc = row.column_text(9);
   job.skipped_count = row.column_int64(10);
   if (!row.is_null(11)) job.last_skipped_utc = row.column_text(11);
+  if (!row.is_null(12)) job.refit = row.column_text(12);
+  if (!row.is_null(13)) job.last_fit_id = row.column_int64(13);
   return job;
 }
 
 }  // namespace
 
 std::int64_t JobRepository::create(const JobRecord& job) {
-  auto statement = db_.prepare(
-      "INSERT INTO jobs (name, schedule, dataset_id, models, parameters, paused, created_utc, "
-      "next_run_utc)"
-      " VALUES (?, ?, ?, ?, ?, ?, ?, ?)");
+  // The refit column (schema version 11) only when the job re-fits: a job without one is
+  // written as before, also to the older schemas the migration tests fill.
+  auto statement =
+      db_.prepare(job.refit.empty()
+                      ? "INSERT INTO jobs (name, schedule, dataset_id, models, parameters, paused, "
+                        "created_utc, next_run_utc) VALUES (?, ?, ?, ?, ?, ?, ?, ?)"
+                      : "INSERT INTO jobs (name, schedule, dataset_id, models, parameters, paused, "
+                        "created_utc, next_run_utc, refit) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
   statement.bind(1, job.name)
       .bind(2, job.schedule)
       .bind(3, job.dataset_id)
@@ -46,6 +52,7 @@ std::int64_t JobRepository::create(const JobRecord& job) {
     statement.bind(8, *job.next_run_utc);
   else
     statement.bind_null(8);
+  if (!job.refit.empty()) statement.bind(9, job.refit);
   statement.run();
   return db_.last_insert_rowid();
 }
@@ -94,6 +101,13 @@ bool JobRepository::record_run(std::int64_t id, const std::string& last_run_utc,
   else
     statement.bind_null(2);
   statement.bind(3, id);
+  statement.run();
+  return db_.changes() > 0;
+}
+
+bool JobRepository::set_last_fit(std::int64_t id, std::int64_t fit_id) {
+  auto statement = db_.prepare("UPDATE jobs SET last_fit_id = ? WHERE id = ?");
+  statement.bind(1, fit_id).bind(2, id);
   statement.run();
   return db_.changes() > 0;
 }

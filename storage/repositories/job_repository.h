@@ -29,6 +29,10 @@ struct JobRecord {
   // Due occurrences skipped because the previous run was still going (schema version 8).
   std::int64_t skipped_count = 0;
   std::optional<std::string> last_skipped_utc;
+  // The fit request run before each occurrence, as JSON; empty: none (schema version 11).
+  std::string refit;
+  // The fit the newest occurrence made (schema version 11).
+  std::optional<std::int64_t> last_fit_id;
 };
 
 class JobRepository {
@@ -54,6 +58,8 @@ class JobRepository {
   // time and sets the next run, in one statement. False when the job is gone.
   bool record_skip(std::int64_t id, const std::string& skipped_utc,
                    const std::optional<std::string>& next_run_utc);
+  // The fit an occurrence of a re-fitting job made. False when the job is gone.
+  bool set_last_fit(std::int64_t id, std::int64_t fit_id);
   bool remove(std::int64_t id);
 
  private:

@@ -3,8 +3,8 @@
 // per-capture results, and scheduled evaluation jobs; dataset imports; from version 4, ids never
 // reused and run parameters as JSON (docs/data-api.md); from version 7, atmosphere fits
 // (docs/fits.md); from version 9, users' aerosol inversions; from version 10, datasets of
-// broadband irradiance time series. Times are ISO
-// 8601 UTC text except capture and irradiance sample instants (unix seconds).
+// broadband irradiance time series; from version 11, jobs that re-fit their dataset. Times are
+// ISO 8601 UTC text except capture and irradiance sample instants (unix seconds).
 #include "storage/schema/migrations.h"
 
 #include <string>
@@ -440,6 +440,16 @@ CREATE TABLE evaluation_irradiance_results (
   errors_w_m2 BLOB NOT NULL,
   PRIMARY KEY (run_id, component)
 );
+)sql",
+      // Version 11 (docs/data-api.md "Jobs", docs/fits.md "In evaluations and jobs"): a job may
+      // re-fit its dataset at each occurrence before evaluating it. `refit` is the fit request
+      // (the body of POST /v1/fits without its dataset, as the API received it; NULL: the job
+      // does not re-fit), kept apart from the evaluation parameters, which POST /v1/evaluations
+      // checks; `last_fit_id` is the fit its newest occurrence made (NULL before the first or
+      // once the fit is gone with its dataset).
+      R"sql(
+ALTER TABLE jobs ADD COLUMN refit TEXT;
+ALTER TABLE jobs ADD COLUMN last_fit_id INTEGER REFERENCES fits(id) ON DELETE SET NULL;
 )sql",
   };
   return migrations;

@@ -508,12 +508,17 @@ class Client:
     # --- jobs ----------------------------------------------------------------------------------
 
     def create_job(self, name: str, schedule: str, dataset: str, models: Models = "all",
-                   parameters: Optional[Mapping[str, ParameterValue]] = None) -> Job:
+                   parameters: Optional[Mapping[str, ParameterValue]] = None,
+                   refit: Optional[Mapping[str, Any]] = None) -> Job:
         """POST /v1/jobs (token): evaluates the models against the dataset on a 5-field UTC cron
-        schedule ("0 3 * * *"); 409 when the name is taken."""
-        body = {"name": name, "schedule": schedule, "dataset": dataset,
-                "models": models if isinstance(models, str) else list(models),
-                "parameters": dict(parameters or {})}
+        schedule ("0 3 * * *"); 409 when the name is taken. ``refit``: the body of POST /v1/fits
+        without dataset (docs/fits.md "In evaluations and jobs"): each occurrence first fits
+        the dataset, then evaluates with the new fit (``Job.last_fit``)."""
+        body: Dict[str, Any] = {"name": name, "schedule": schedule, "dataset": dataset,
+                                "models": models if isinstance(models, str) else list(models),
+                                "parameters": dict(parameters or {})}
+        if refit is not None:
+            body["refit"] = dict(refit)
         return Job.from_json(self._transport.request("POST", "/v1/jobs", json_body=body,
                                                      authorize=True).json())
 

@@ -266,9 +266,14 @@ class Job:
     # Due occurrences skipped because the previous run was still going, and the last one.
     skipped_count: int = 0
     last_skipped: Optional[str] = None
+    # The fit request each occurrence runs first, and the fit the newest one made
+    # ({"id", "status", "rmse_after", "values", "error"}); None when the job does not re-fit.
+    refit: Optional[Dict[str, Any]] = None
+    last_fit: Optional[Dict[str, Any]] = None
 
     @classmethod
     def from_json(cls, j: Dict[str, Any]) -> "Job":
         return cls(j["id"], j["name"], j["schedule"], j["dataset"], j["models"],
                    j["parameters"], j["paused"], j.get("next_run"), j.get("last_run"), j,
-                   j.get("skipped_count", 0), j.get("last_skipped"))
+                   j.get("skipped_count", 0), j.get("last_skipped"), j.get("refit"),
+                   j.get("last_fit"))

@@ -453,6 +453,17 @@ class ClientAgainstWriter(unittest.TestCase):
         self.assertFalse(self.client.resume_job(job.id).paused)
         self.assertEqual(self.client.delete_job(second.id), second.id)
         self.assertRefused(lambda: self.client.get_job(second.id), 404, "unknown_job", "id")
+        # A job that re-fits the dataset before each evaluation (docs/fits.md "In evaluations
+        # and jobs"): the fit request as given, no fit before its first occurrence.
+        refitting = self.client.create_job("refit", "0 5 * * *", "synthetic", ["preetham"],
+                                           refit={"model": "preetham", "free": ["turbidity"]})
+        self.assertEqual(refitting.refit, {"model": "preetham", "free": ["turbidity"]})
+        self.assertIsNone(refitting.last_fit)
+        self.assertRefused(lambda: self.client.create_job("bad-refit", "0 5 * * *", "synthetic",
+                                                          ["preetham"],
+                                                          refit={"model": "nonsense"}),
+                           400, "invalid_parameter", "refit.model")
+        self.assertEqual(self.client.delete_job(refitting.id), refitting.id)
 
         self.assertEqual(self.client.delete_dataset("from-path"), "from-path")
         self.assertRefused(lambda: self.client.get_dataset("from-path"), 404, "unknown_dataset",

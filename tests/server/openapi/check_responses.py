@@ -493,6 +493,14 @@ def run(checker, workdir):
     c.call("pauseJob", 200, job, token=TOKEN)
     c.call("resumeJob", 200, job, token=TOKEN)
     c.call("pauseJob", 404, {"id": 999}, token=TOKEN)
+    # A job re-fitting its dataset (docs/data-api.md "Jobs"): refit answered, last_fit null;
+    # a refit POST /v1/fits refuses is a 400 naming refit.model.
+    refitting = dict(c.body_example("createJob"), name="refitting", parameters={},
+                     refit={"model": "preetham", "free": ["turbidity"]})
+    refitting_job = c.call("createJob", 201, body=refitting, token=TOKEN)
+    c.call("createJob", 400, body=dict(refitting, name="bad-refit", refit={"model": "nonsense"}),
+           token=TOKEN)
+    c.call("deleteJob", 200, {"id": refitting_job["id"]}, token=TOKEN)
     c.call("deleteJob", 401, job)
     c.call("deleteJob", 200, job, token=TOKEN)
     c.call("deleteJob", 200, {"id": second_job["id"]}, token=TOKEN)
