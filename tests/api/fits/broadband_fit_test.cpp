@@ -9,6 +9,7 @@
 #include "api/evaluation/broadband_evaluation.h"
 #include "models/core/invalid_input.h"
 #include "models/registry.h"
+#include "tests/support/rhodes_irradiance_instants.h"
 
 namespace clearsky::api {
 namespace {
@@ -18,15 +19,8 @@ constexpr double kMadeBeta = 0.1;
 // 2013-05-27 at Rhodes Hall, 08:00 to 18:00 EDT every hour.
 std::vector<storage::IrradianceSample> rhodes_day() {
   std::vector<storage::IrradianceSample> samples;
-  for (int hour = 8; hour <= 18; ++hour) {
-    storage::IrradianceSample s;
-    s.time_utc_s = 1369656000.0 + (hour - 8) * 3600.0;  // 08:00 EDT
-    s.utc_offset_minutes = -240;
-    s.latitude_deg = 42.443449;
-    s.longitude_deg = -76.481962;
-    s.elevation_m = 250;
-    samples.push_back(s);
-  }
+  for (int hour = 8; hour <= 18; ++hour)  // from 08:00 EDT
+    samples.push_back(clearsky::testing::rhodes_hall_sample(1369656000.0 + (hour - 8) * 3600.0));
   return samples;
 }
 
