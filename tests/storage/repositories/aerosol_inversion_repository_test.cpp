@@ -10,6 +10,7 @@
 
 #include "storage/repositories/dataset_repository.h"
 #include "storage/schema/migrations.h"
+#include "tests/support/database_at_schema_version.h"
 
 namespace clearsky::storage {
 namespace {
@@ -40,9 +41,7 @@ NewAerosolInversion egbert(const std::string& name) {
 TEST(AerosolInversionRepository, MigratesThePreviousVersionWithItsRowsUntouched) {
   const int before = aerosol_migration_version();
   ASSERT_GE(before, 8);
-  Database db = Database::open(":memory:");
-  const auto& all = schema_migrations();
-  migrate(db, std::vector<std::string_view>(all.begin(), all.begin() + before));
+  Database db = clearsky::testing::database_at_schema_version(before);
   DatasetRepository(db).find_or_create("set", "kider2014");
   EXPECT_THROW(db.execute("SELECT 1 FROM aerosol_inversions"), SqliteError);
   EXPECT_EQ(migrate(db), latest_schema_version() - before);

@@ -8,16 +8,12 @@
 #include "storage/repositories/dataset_repository.h"
 #include "storage/repositories/irradiance_sample_repository.h"
 #include "storage/schema/migrations.h"
+#include "tests/support/database_at_schema_version.h"
 
 namespace clearsky::storage {
 namespace {
 
-Database at_version(int version) {
-  Database db = Database::open(":memory:");
-  const auto& all = schema_migrations();
-  migrate(db, std::vector<std::string_view>(all.begin(), all.begin() + version));
-  return db;
-}
+using clearsky::testing::database_at_schema_version;
 
 IrradianceSample rhodes_sample(double time_utc_s) {
   IrradianceSample sample;
@@ -30,7 +26,7 @@ IrradianceSample rhodes_sample(double time_utc_s) {
 }
 
 TEST(SchemaVersion10, MigratesAVersion8DatabaseWithItsDatasetsOfKindSkyRadiance) {
-  Database db = at_version(8);
+  Database db = database_at_schema_version(8);
   db.execute(
       "INSERT INTO datasets (name, format, created_utc) VALUES ('rhodes', 'kider2014', 'x')");
   EXPECT_THROW(db.execute("SELECT 1 FROM irradiance_samples"), SqliteError);
@@ -44,7 +40,7 @@ TEST(SchemaVersion10, MigratesAVersion8DatabaseWithItsDatasetsOfKindSkyRadiance)
 }
 
 TEST(SchemaVersion10, StoresASeriesWithMissingComponentsInTimeOrder) {
-  Database db = at_version(10);
+  Database db = database_at_schema_version(10);
   DatasetRepository datasets(db);
   const std::int64_t id =
       datasets.find_or_create("roof", "irradiance-csv", kBroadbandIrradianceKind);
@@ -76,7 +72,7 @@ TEST(SchemaVersion10, StoresASeriesWithMissingComponentsInTimeOrder) {
 }
 
 TEST(SchemaVersion10, RefusesASampleWithoutAnyComponentAndADatasetOfAnotherKind) {
-  Database db = at_version(10);
+  Database db = database_at_schema_version(10);
   DatasetRepository datasets(db);
   const std::int64_t id =
       datasets.find_or_create("roof", "irradiance-csv", kBroadbandIrradianceKind);
@@ -88,7 +84,7 @@ TEST(SchemaVersion10, RefusesASampleWithoutAnyComponentAndADatasetOfAnotherKind)
 }
 
 TEST(SchemaVersion10, SamplesGoWithTheirDataset) {
-  Database db = at_version(10);
+  Database db = database_at_schema_version(10);
   DatasetRepository datasets(db);
   const std::int64_t id =
       datasets.find_or_create("roof", "irradiance-csv", kBroadbandIrradianceKind);

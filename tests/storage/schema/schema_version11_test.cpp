@@ -7,16 +7,12 @@
 #include "storage/repositories/dataset_repository.h"
 #include "storage/repositories/job_repository.h"
 #include "storage/schema/migrations.h"
+#include "tests/support/database_at_schema_version.h"
 
 namespace clearsky::storage {
 namespace {
 
-Database at_version(int version) {
-  Database db = Database::open(":memory:");
-  const auto& all = schema_migrations();
-  migrate(db, std::vector<std::string_view>(all.begin(), all.begin() + version));
-  return db;
-}
+using clearsky::testing::database_at_schema_version;
 
 std::int64_t insert_fit(Database& db, std::int64_t dataset_id) {
   auto statement = db.prepare(
@@ -29,7 +25,7 @@ std::int64_t insert_fit(Database& db, std::int64_t dataset_id) {
 }
 
 TEST(SchemaVersion11, MigratesAVersion10DatabaseWithItsJobsReFittingNothing) {
-  Database db = at_version(10);
+  Database db = database_at_schema_version(10);
   db.execute(
       "INSERT INTO datasets (name, format, created_utc) VALUES ('rhodes', 'kider2014', 'x');"
       "INSERT INTO jobs (name, schedule, dataset_id, models, parameters, paused, created_utc)"
@@ -44,7 +40,7 @@ TEST(SchemaVersion11, MigratesAVersion10DatabaseWithItsJobsReFittingNothing) {
 }
 
 TEST(SchemaVersion11, AJobKeepsItsFitRequestAndLastFitUntilTheFitGoes) {
-  Database db = at_version(latest_schema_version());
+  Database db = database_at_schema_version(latest_schema_version());
   const std::int64_t dataset = DatasetRepository(db).find_or_create("made", "kider2014");
   JobRecord job;
   job.name = "refit";

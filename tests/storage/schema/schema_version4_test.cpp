@@ -12,16 +12,12 @@
 #include "storage/schema/legacy_run_parameters.h"
 #include "storage/schema/migrations.h"
 #include "tests/models/evaluation/function_model.h"
+#include "tests/support/database_at_schema_version.h"
 
 namespace clearsky::storage {
 namespace {
 
-Database at_version(int version) {
-  Database db = Database::open(":memory:");
-  const auto& all = schema_migrations();
-  migrate(db, std::vector<std::string_view>(all.begin(), all.begin() + version));
-  return db;
-}
+using clearsky::testing::database_at_schema_version;
 
 NewRun new_run(std::int64_t dataset, std::optional<std::int64_t> job = std::nullopt) {
   NewRun run;
@@ -62,7 +58,7 @@ TEST(LegacyRunParameters, KeepsWhatDiffersFromTheDefaultsAsShortestNumbers) {
 }
 
 TEST(SchemaVersion4, ConvertsRunsKeepingTheirResultsAndJobs) {
-  Database db = at_version(3);
+  Database db = database_at_schema_version(3);
   const std::int64_t dataset = DatasetRepository(db).find_or_create("set", "kider2014");
   const std::int64_t capture = CaptureRepository(db).insert(
       dataset,

@@ -14,16 +14,12 @@
 #include "storage/schema/migrations.h"
 #include "storage/sqlite/blob.h"
 #include "tests/models/evaluation/function_model.h"
+#include "tests/support/database_at_schema_version.h"
 
 namespace clearsky::storage {
 namespace {
 
-Database at_version(int version) {
-  Database db = Database::open(":memory:");
-  const auto& all = schema_migrations();
-  migrate(db, std::vector<std::string_view>(all.begin(), all.begin() + version));
-  return db;
-}
+using clearsky::testing::database_at_schema_version;
 
 NewRun new_run(std::int64_t dataset, const std::string& out_of_domain = "exclude") {
   NewRun run;
@@ -67,7 +63,7 @@ TEST(SampleHandlingText, RoundTripsAndRefusesOtherText) {
 }
 
 TEST(SchemaVersion5, ConvertsRunsWithEverySampleCompared) {
-  Database db = at_version(4);
+  Database db = database_at_schema_version(4);
   const std::int64_t dataset = DatasetRepository(db).find_or_create("set", "kider2014");
   const std::int64_t a = add_capture(db, dataset, "a");
   const std::int64_t b = add_capture(db, dataset, "b");

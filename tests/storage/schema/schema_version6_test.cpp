@@ -7,19 +7,15 @@
 #include "storage/repositories/evaluation_run_repository.h"
 #include "storage/repositories/evaluation_ticket_repository.h"
 #include "storage/schema/migrations.h"
+#include "tests/support/database_at_schema_version.h"
 
 namespace clearsky::storage {
 namespace {
 
-Database at_version(int version) {
-  Database db = Database::open(":memory:");
-  const auto& all = schema_migrations();
-  migrate(db, std::vector<std::string_view>(all.begin(), all.begin() + version));
-  return db;
-}
+using clearsky::testing::database_at_schema_version;
 
 TEST(SchemaVersion6, MigratesAVersion5DatabaseWithItsRunsUntouched) {
-  Database db = at_version(5);
+  Database db = database_at_schema_version(5);
   const std::int64_t dataset = DatasetRepository(db).find_or_create("set", "kider2014");
   NewRun run;
   run.dataset_id = dataset;
@@ -45,7 +41,7 @@ TEST(SchemaVersion6, MigratesAVersion5DatabaseWithItsRunsUntouched) {
 }
 
 TEST(SchemaVersion6, TicketIdsAreNeverReused) {
-  Database db = at_version(6);
+  Database db = database_at_schema_version(6);
   EvaluationTicketRepository tickets(db);
   const std::int64_t first = tickets.create("set", std::nullopt, {"preetham"});
   const std::int64_t second = tickets.create("set", 7, {"hosek"});

@@ -9,16 +9,12 @@
 #include "storage/repositories/evaluation_ticket_repository.h"
 #include "storage/repositories/fit_repository.h"
 #include "storage/schema/migrations.h"
+#include "tests/support/database_at_schema_version.h"
 
 namespace clearsky::storage {
 namespace {
 
-Database at_version(int version) {
-  Database db = Database::open(":memory:");
-  const auto& all = schema_migrations();
-  migrate(db, std::vector<std::string_view>(all.begin(), all.begin() + version));
-  return db;
-}
+using clearsky::testing::database_at_schema_version;
 
 NewFit preetham_fit(std::int64_t dataset) {
   NewFit fit;
@@ -31,7 +27,7 @@ NewFit preetham_fit(std::int64_t dataset) {
 }
 
 TEST(SchemaVersion7, MigratesAVersion6DatabaseWithItsTicketsUntouched) {
-  Database db = at_version(6);
+  Database db = database_at_schema_version(6);
   DatasetRepository(db).find_or_create("set", "kider2014");
   const std::int64_t ticket = EvaluationTicketRepository(db).create("set", 3, {"preetham"});
   EXPECT_THROW(db.execute("SELECT 1 FROM fits"), SqliteError);
@@ -46,7 +42,7 @@ TEST(SchemaVersion7, MigratesAVersion6DatabaseWithItsTicketsUntouched) {
 }
 
 TEST(SchemaVersion7, AFitIsRecordedRunningThenFinished) {
-  Database db = at_version(7);
+  Database db = database_at_schema_version(7);
   const std::int64_t dataset = DatasetRepository(db).find_or_create("set", "kider2014");
   FitRepository fits(db);
   const std::int64_t id = fits.start(preetham_fit(dataset));
@@ -80,7 +76,7 @@ TEST(SchemaVersion7, AFitIsRecordedRunningThenFinished) {
 }
 
 TEST(SchemaVersion7, ListsNewestFirstAndInterruptsWhatACrashLeft) {
-  Database db = at_version(7);
+  Database db = database_at_schema_version(7);
   const std::int64_t dataset = DatasetRepository(db).find_or_create("set", "kider2014");
   FitRepository fits(db);
   const std::int64_t a = fits.start(preetham_fit(dataset));
