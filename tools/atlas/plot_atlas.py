@@ -29,15 +29,17 @@ matplotlib.rcParams["svg.fonttype"] = "none"
 
 
 def load(paths):
+    """The models of every file, a later file's model replacing an earlier one's (a re-run after
+    a model changed); each model keeps its own run's scope, dataset and threads."""
     models = {}
-    meta = {}
     for path in paths:
         with open(path, encoding="utf-8") as f:
             doc = json.load(f)
         meta = {k: v for k, v in doc.items() if k != "models"}
+        meta["file"] = os.path.basename(path)
         for m in doc["models"]:
-            models[m["model"]] = m
-    return meta, list(models.values())
+            models[m["model"]] = dict(m, run=meta)
+    return list(models.values())
 
 
 def build_cost(s):
@@ -150,12 +152,15 @@ def row(m, s, level=None):
         f"{pct(s['luminance_error']['p95'])} / {pct(s['luminance_error']['max'])}", rmse])) + " |"
 
 
-def tables(meta, models):
-    lines = [f"Scope `{meta.get('scope')}`, dataset `{meta.get('dataset') or '-'}`, "
-             f"precompute threads {meta.get('precompute_threads')}.", ""]
+def tables(models):
+    lines = []
     for m in models:
         g = m["geometry"]
+        run = m["run"]
         lines += [f"### {m['model']}", "",
+                  f"Run: `{run['file']}`, scope `{run.get('scope')}`, dataset "
+                  f"`{run.get('dataset') or '-'}`, precompute threads "
+                  f"{run.get('precompute_threads')}. "
                   f"Reference: {options_text(m['reference'])} ({m['reference_reason']}). "
                   f"Geometry: suns {g['sun_zeniths_deg']} deg, altitudes {g['altitudes_m']} m, "
                   f"{g['views']} views."]
@@ -200,12 +205,12 @@ def main(argv):
         return 2
     out = argv[-1]
     os.makedirs(out, exist_ok=True)
-    meta, models = load(argv[1:-1])
+    models = load(argv[1:-1])
     for m in models:
         model_figure(m, out)
     all_figure(models, out)
     with open(os.path.join(out, "tables.md"), "w", encoding="utf-8") as f:
-        f.write(tables(meta, models))
+        f.write(tables(models))
     return 0
 
 
