@@ -41,7 +41,7 @@ struct QualitySetting {
   // tools/quality/measure_quality_levels.py; 0 for the reference itself.
   std::optional<double> p95_relative_error;
   std::optional<double> max_relative_error;
-  std::optional<double> build_seconds;  // the level's table build, 40 wavelengths (the CSV says how measured)
+  std::optional<double> build_seconds;  // the level's table build, 40 wavelengths (see its CSV)
   std::optional<double> table_bytes;    // its tables' bytes, 40 wavelengths
 };
 
