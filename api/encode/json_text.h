@@ -1,6 +1,6 @@
 // JSON text written straight into a string, byte for byte as nlohmann::json's dump() writes the
 // same values: for hot answers (GET /v1/radiance) whose DOM cost more than their computation
-// (callgrind: building, dumping and freeing the DOM was three quarters of the handler). Numbers
+// (callgrind: building, dumping and freeing the DOM was over half of the handler). Numbers
 // go through nlohmann's own double formatting (Grisu2, which is not always the shortest decimal:
 // std::to_chars would differ on some doubles), so an answer's bytes and ETag never change.
 #pragma once

@@ -2,8 +2,9 @@
 // into one string (json_text.h) with the bytes nlohmann::json's DOM gave: {"altitude_m",
 // "bin_width_nm" (bin grids), "fit" (when one applied), "grid", "model", "model_version",
 // quality members (quality.h), "samples": [{"radiance", "view_azimuth_deg", "view_zenith_deg"}],
-// "sun", "unit", "wavelengths_nm"}, keys in the DOM's sorted order. The DOM took three quarters
-// of the handler's instructions for one view (callgrind of BM_RadianceHandler_Preetham);
+// "sun", "unit", "wavelengths_nm"}, keys in the DOM's sorted order. The DOM took about 65% of
+// the handler's instructions for one view on Preetham, 54% on Bruneton (callgrind;
+// docs/performance.md "A radiance request through the server");
 // tests/api/encode/radiance_json_test.cpp holds the two to the same bytes.
 #pragma once
 
