@@ -5,6 +5,7 @@
 // (view_zenith_deg,view_azimuth_deg,wavelength_nm,radiance_w_m2_sr_nm).
 
 #include "api/encode/csv_number.h"
+#include "api/encode/radiance_json.h"
 #include "api/fits/stored_fit_values.h"
 #include "api/handlers/handlers.h"
 #include "api/handlers/sky_radiance_query.h"
@@ -55,28 +56,9 @@ ApiResponse radiance(const ApiContext& context, const ApiRequest& request) {
     response.body = std::move(body);
     return response;
   }
-  nlohmann::json samples = nlohmann::json::array();
-  for (std::size_t v = 0; v < batch.size(); ++v) {
-    const auto spectrum = batch.spectrum(v);
-    nlohmann::json values = nlohmann::json::array();
-    for (std::size_t i : m.indices) values.push_back(finite(spectrum[i]));
-    samples.push_back({{"view_zenith_deg", views.zenith_deg[v]},
-                       {"view_azimuth_deg", views.azimuth_deg[v]},
-                       {"radiance", std::move(values)}});
-  }
-  const WavelengthGrid& grid = m.model->wavelengths();
-  nlohmann::json body = {{"model", factory.descriptor->id},
-                         {"model_version", factory.descriptor->version},
-                         {"sun", sun_json(sun)},
-                         {"altitude_m", viewpoint.altitude_m},
-                         {"unit", "W/(m2.sr.nm)"},
-                         {"grid", grid.kind() == WavelengthGrid::Kind::bins ? "bins" : "points"},
-                         {"wavelengths_nm", m.wavelengths_nm},
-                         {"samples", std::move(samples)}};
-  if (grid.kind() == WavelengthGrid::Kind::bins) body["bin_width_nm"] = grid.bin_width_nm();
-  add_quality_members(body, quality, m.served_quality);
-  add_fit_member(body, sky.fit);
-  response.body = body.dump();
+  response.body =
+      radiance_json({*factory.descriptor, sun, viewpoint, m.model->wavelengths(), m.wavelengths_nm,
+                     m.indices, views, batch, quality, m.served_quality, sky.fit});
   return response;
 }
 

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "api/http/api_types.h"
+#include "api/request/quality_statement.h"
 
 namespace clearsky::api {
 
@@ -56,7 +57,7 @@ void add_quality_headers(std::vector<std::pair<std::string, std::string>>& heade
                          const RequestQuality& quality, QualityLevel served) {
   headers.emplace_back("Clearsky-Quality", std::string(to_string(quality.level)));
   headers.emplace_back("Clearsky-Served-Quality", std::string(to_string(served)));
-  headers.emplace_back("Clearsky-Quality-Detail", quality_summary(quality, served));
+  headers.emplace_back("Clearsky-Quality-Detail", quality_statement(quality, served).summary);
   // An answer from a cheaper level than asked changes once the asked level's tables are built:
   // no cache may keep it (the route's caching policy leaves a Cache-Control set here alone).
   if (served != quality.level) headers.emplace_back("Cache-Control", "no-store");

@@ -69,8 +69,24 @@ std::string entry_key(const ModelFactory& factory, const std::string& canonical)
   return factory.descriptor->id + "|" + factory.descriptor->version + "|" + canonical;
 }
 
+// A configuration whose options at their default were dropped (canonical_config.h) that is the
+// default one (most requests): its canonical text is known without writing it again.
+bool is_default_config(const ModelConfig& canonical) {
+  static const AtmosphereParameters default_atmosphere;
+  static const WavelengthGrid default_grid = ModelConfig{}.wavelengths;
+  return canonical.options.empty() && canonical.atmosphere == default_atmosphere &&
+         canonical.wavelengths == default_grid;
+}
+
+std::string canonical_text(const ModelConfig& canonical) {
+  return is_default_config(canonical) ? default_canonical_string() : canonical.canonical_string();
+}
+
+// Writing a configuration's text through its ostringstreams was a sixth of a radiance request's
+// instructions (callgrind of a server under wrk: model_or_fallback looks its configuration up on
+// every standard request), and the default configuration's text never changes.
 std::string entry_key(const ModelFactory& factory, const ModelConfig& config) {
-  return entry_key(factory, canonical_config(*factory.descriptor, config).canonical_string());
+  return entry_key(factory, canonical_text(canonical_config(*factory.descriptor, config)));
 }
 
 bool pending(api::ModelState::Status status) {
@@ -192,10 +208,7 @@ std::shared_ptr<const SkyModel> TableStore::model(const ModelFactory& factory,
     without_defaults = canonical_config(*factory.descriptor, requested);
   const ModelConfig& config = without_defaults ? *without_defaults : requested;
   // The default configuration (most requests) skips building its canonical text.
-  static const AtmosphereParameters default_atmosphere;
-  static const WavelengthGrid default_grid = ModelConfig{}.wavelengths;
-  const bool plain = config.options.empty() && config.atmosphere == default_atmosphere &&
-                     config.wavelengths == default_grid;
+  const bool plain = is_default_config(config);
   // Any other configuration is checked against the descriptor before it is queued, so that a
   // caller that did not parse it from a request (evaluations, jobs, tests) gets a 400 naming the
   // parameter at once instead of a failed build (the build checks it again, once per build:

@@ -1,8 +1,9 @@
 // The per-request bookkeeping around every answer (docs/http-api.md): finding the route of a
 // path in the route table, the strong ETag of a typical 1.3 KB radiance answer, counting the
 // request in the metrics, and the whole /v1/radiance handler on the server's TableStore (its
-// parameters, quality level, model lookup and JSON answer). Each was measured with callgrind on
-// a running server before it was made cheaper (CHANGELOG); these keep the figures in view.
+// parameters, quality level, model lookup and JSON answer) on Preetham and Hosek. Each was
+// measured with callgrind on a running server before it was made cheaper (CHANGELOG); these
+// keep the figures in view.
 #include <benchmark/benchmark.h>
 #include <prometheus/counter.h>
 #include <prometheus/registry.h>
@@ -76,6 +77,27 @@ void BM_RadianceHandler_Preetham(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(api::radiance(context, request));
 }
 BENCHMARK(BM_RadianceHandler_Preetham)->Unit(benchmark::kMicrosecond);
+
+// The same on Hosek, the request tests/bench/load.sh sends (its sun state is computed for every
+// request: most of what is left). Its standard level has a draft fallback, whose lookup wrote
+// the configuration's canonical text through ostringstreams on every request (a sixth of the
+// request's instructions in callgrind of a server under wrk) until the default configuration's
+// text was reused; and the JSON answer was an nlohmann DOM (api/encode/radiance_json.h).
+void BM_RadianceHandler_Hosek(benchmark::State& state) {
+  server::TableStore store({*find_model("hosek")}, server::TableStore::Options{});
+  const api::ApiContext context{store, api::Limits{}};
+  const api::ApiRequest request{"GET",
+                                "/v1/radiance",
+                                {{"model", "hosek"},
+                                 {"sun_zenith", "40"},
+                                 {"sun_azimuth", "135"},
+                                 {"view_zenith", "50"},
+                                 {"view_azimuth", "200"}},
+                                ""};
+  benchmark::DoNotOptimize(api::radiance(context, request));  // the model built once
+  for (auto _ : state) benchmark::DoNotOptimize(api::radiance(context, request));
+}
+BENCHMARK(BM_RadianceHandler_Hosek)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace clearsky
