@@ -17,8 +17,8 @@ Area service_area() {
     },
     "TableStatus": {
       "type": "string",
-      "description": "State of a model's default tables.",
-      "enum": ["queued", "precomputing", "ready", "failed"]
+      "description": "State of a model's default tables; not_built when neither built at start nor asked for (measured_aerosols' until its first standard request, or a default left out of serve --prebuild).",
+      "enum": ["queued", "precomputing", "ready", "failed", "not_built"]
     },
     "ModelReadiness": {
       "type": "object",
