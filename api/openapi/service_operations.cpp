@@ -187,7 +187,7 @@ Area service_area() {
     "operationId": "readyz",
     "tags": ["operations"],
     "summary": "Readiness",
-    "description": "200 when the tables built at start are ready (each served model's draft, then its standard, or serve --prebuild's list: docs/quality-levels.md); 503 while some are built (Bruneton's take minutes on a first start), with each model's state, and 503 (code draining) once the server drains before it stops (SIGTERM; docs/deploy.md).",
+    "description": "200 when the tables built at start are ready (each served model's draft, then its standard but measured_aerosols', built on its first use, or serve --prebuild's list: docs/quality-levels.md); 503 while some are built (Bruneton's take minutes on a first start), with each model's state, and 503 (code draining) once the server drains before it stops (SIGTERM; docs/deploy.md).",
     "responses": {
       "200": {
         "description": "Every model is ready.",

@@ -20,8 +20,8 @@ ApiResponse healthz(const ApiContext&, const ApiRequest& request) {
   return response;
 }
 
-// 200 when the tables built at start are ready (each model's draft and standard, or serve
-// --prebuild's list; docs/quality-levels.md), else 503 with Retry-After; both with each model's
+// 200 when the tables built at start are ready (each model's draft and standard but those built
+// on first use, or serve --prebuild's list; docs/quality-levels.md), else 503 with Retry-After; both with each model's
 // state (its default tables), the state of each quality level built or asked for, and the
 // background pass over its day's per-sun states (buckets built / total) where it has one. A
 // draining server (SIGTERM, docs/deploy.md "Graceful drain") is not
