@@ -17,8 +17,8 @@ Area service_area() {
     },
     "TableStatus": {
       "type": "string",
-      "description": "State of a model's default tables.",
-      "enum": ["queued", "precomputing", "ready", "failed"]
+      "description": "State of a model's default tables; not_built when neither built at start nor asked for (measured_aerosols' until its first standard request, or a default left out of serve --prebuild).",
+      "enum": ["queued", "precomputing", "ready", "failed", "not_built"]
     },
     "ModelReadiness": {
       "type": "object",
@@ -187,7 +187,7 @@ Area service_area() {
     "operationId": "readyz",
     "tags": ["operations"],
     "summary": "Readiness",
-    "description": "200 when the tables built at start are ready (each served model's draft, then its standard, or serve --prebuild's list: docs/quality-levels.md); 503 while some are built (Bruneton's take minutes on a first start), with each model's state, and 503 (code draining) once the server drains before it stops (SIGTERM; docs/deploy.md).",
+    "description": "200 when the tables built at start are ready (each served model's draft, then its standard but measured_aerosols', built on its first use, or serve --prebuild's list: docs/quality-levels.md); 503 while some are built (Bruneton's take minutes on a first start), with each model's state, and 503 (code draining) once the server drains before it stops (SIGTERM; docs/deploy.md).",
     "responses": {
       "200": {
         "description": "Every model is ready.",

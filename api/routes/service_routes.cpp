@@ -20,8 +20,8 @@ ApiResponse healthz(const ApiContext&, const ApiRequest& request) {
   return response;
 }
 
-// 200 when the tables built at start are ready (each model's draft and standard, or serve
-// --prebuild's list; docs/quality-levels.md), else 503 with Retry-After; both with each model's
+// 200 when the tables built at start are ready (each model's draft and standard but those built
+// on first use, or serve --prebuild's list; docs/quality-levels.md), else 503 with Retry-After; both with each model's
 // state (its default tables), the state of each quality level built or asked for, and the
 // background pass over its day's per-sun states (buckets built / total) where it has one. A
 // draining server (SIGTERM, docs/deploy.md "Graceful drain") is not
@@ -38,7 +38,8 @@ ApiResponse readyz(const ApiContext& context, const ApiRequest& request) {
                                   ? context.day_sun_states()
                                   : std::map<std::string, std::pair<std::size_t, std::size_t>>{};
   for (const ModelFactory& f : context.models.factories()) {
-    const ModelState state = context.models.default_state(f);
+    // not_built: a default neither built at start nor asked for (docs/quality-levels.md).
+    const std::optional<ModelState> state = context.models.config_state(f, ModelConfig{});
     nlohmann::json levels = nlohmann::json::object();
     for (QualityLevel level : kQualityLevels) {
       ModelConfig config;
@@ -49,8 +50,8 @@ ApiResponse readyz(const ApiContext& context, const ApiRequest& request) {
                                        {"progress", finite(level_state->progress)}}
                       : nlohmann::json{{"status", "not_built"}, {"progress", 0.0}};
     }
-    models[f.descriptor->id] = {{"status", to_string(state.status)},
-                                {"progress", finite(state.progress)},
+    models[f.descriptor->id] = {{"status", state ? to_string(state->status) : "not_built"},
+                                {"progress", finite(state ? state->progress : 0.0)},
                                 {"levels", std::move(levels)}};
     // The day's per-sun states, built in the background; readiness does not wait for them.
     if (const auto it = day_sun_states.find(f.descriptor->id); it != day_sun_states.end()) {

@@ -47,6 +47,11 @@ struct PrecomputeContext {
   // (SkyModel::prepare_sun); false prepares its state in full, so that its queries run the
   // whole computation (the contract test that checks the declared darkness against it).
   bool dark_sun_at_once = true;
+  // false: a per-sun state prepared only to be stored in the disk cache (the server's background
+  // pass over the day's states, docs/tables-and-memory.md) is not kept in the model's per-sun
+  // memory cache once prepared (SunStateCache::get_or_build), so that the pass does not fill
+  // that cache with states no request asked for.
+  bool keep_sun_state = true;
 
   void report(double fraction, std::string_view stage) const {
     if (progress) progress(fraction, stage);

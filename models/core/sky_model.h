@@ -201,6 +201,11 @@ struct ModelFactory {
   // table resolutions) without precomputing anything: the server admits a build against its
   // table memory budget on it (docs/model-contract.md "Table size"). Null: unknown.
   std::size_t (*estimate_table_bytes)(const ModelConfig& config) = nullptr;
+  // Whether a server builds this model's default (standard) tables when something first asks
+  // for them instead of at start (docs/quality-levels.md "Serving at once"): an optional model
+  // whose tables most servers would hold unused (measured_aerosols, 254.5 MB). Its draft is
+  // still built at start, and its first standard requests are answered from it meanwhile.
+  bool standard_on_first_use = false;
 };
 
 // Checks the atmosphere (AtmosphereParameters::validate, then the ranges of the atmosphere

@@ -50,12 +50,16 @@ class SunStateCache {
   SunStateCache& operator=(const SunStateCache&) = delete;
 
   // The state of `key`, built by `build` (outside the lock) when no request has built or is
-  // building it. Rethrows the build's exception.
-  Pointer get_or_build(const std::string& key, const std::function<Pointer()>& build) {
+  // building it. Rethrows the build's exception. keep = false (PrecomputeContext::keep_sun_state:
+  // the server's background pass, which fills the disk cache) neither keeps a state it builds
+  // once built (callers that joined the build meanwhile still receive it) nor makes a kept one
+  // more recently used.
+  Pointer get_or_build(const std::string& key, const std::function<Pointer()>& build,
+                       bool keep = true) {
     std::unique_lock lock(mutex_);
     if (auto it = entries_.find(key); it != entries_.end()) {
       ++stats_.hits;
-      lru_.splice(lru_.begin(), lru_, it->second.position);
+      if (keep) lru_.splice(lru_.begin(), lru_, it->second.position);
       std::shared_future<Pointer> future = it->second.future;
       lock.unlock();
       return future.get();
@@ -81,6 +85,11 @@ class SunStateCache {
     promise.set_value(state);
     const std::size_t bytes = bytes_of(state);
     lock.lock();
+    if (auto it = entries_.find(key); it != entries_.end() && !keep) {
+      lru_.erase(it->second.position);
+      entries_.erase(it);
+      return state;
+    }
     if (auto it = entries_.find(key); it != entries_.end()) {
       it->second.ready = true;
       it->second.bytes = bytes;

@@ -173,21 +173,25 @@ std::shared_ptr<const SunState> HaberModel::compute_sun_state(
   // Single flight in memory; on a miss the disk table cache first (the key names the blob
   // format, the model version, the configuration and the zenith), then the computation,
   // stored for the next process (haber_dome_blob.h).
-  auto dome = cache_->get_or_build(key.str(), [&]() -> std::shared_ptr<const HaberDome> {
-    const std::string disk_key = "haber-dome/" + std::to_string(kDomeBlobVersion) + "/" + key.str();
-    const std::size_t wavelengths = atmosphere().grid.size();
-    if (context.cache != nullptr) {
-      if (const std::optional<std::string> bytes = context.cache->load(disk_key)) {
-        if (auto loaded = dome_from_bytes(*bytes, grid_.ring_count(), grid_.stored_sectors(),
-                                          wavelengths, grid_.angular_step_rad()))
-          return loaded;
-      }
-    }
-    auto built = build_dome(grid_, atmosphere(), zenith, context);
-    ++domes_computed_;
-    if (context.cache != nullptr) context.cache->store(disk_key, dome_to_bytes(*built));
-    return built;
-  });
+  auto dome = cache_->get_or_build(
+      key.str(),
+      [&]() -> std::shared_ptr<const HaberDome> {
+        const std::string disk_key =
+            "haber-dome/" + std::to_string(kDomeBlobVersion) + "/" + key.str();
+        const std::size_t wavelengths = atmosphere().grid.size();
+        if (context.cache != nullptr) {
+          if (const std::optional<std::string> bytes = context.cache->load(disk_key)) {
+            if (auto loaded = dome_from_bytes(*bytes, grid_.ring_count(), grid_.stored_sectors(),
+                                              wavelengths, grid_.angular_step_rad()))
+              return loaded;
+          }
+        }
+        auto built = build_dome(grid_, atmosphere(), zenith, context);
+        ++domes_computed_;
+        if (context.cache != nullptr) context.cache->store(disk_key, dome_to_bytes(*built));
+        return built;
+      },
+      context.keep_sun_state);
   return std::make_shared<const HaberSunState>(sun, std::move(dome), zenith);
 }
 

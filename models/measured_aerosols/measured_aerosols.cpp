@@ -90,8 +90,13 @@ const ModelDescriptor& measured_aerosols_descriptor() {
 }
 
 ModelFactory measured_aerosols_factory() {
-  return make_model_factory<&measured_aerosols_descriptor, &build_selected,
-                            &BrunetonModel::estimated_table_bytes>();
+  ModelFactory factory = make_model_factory<&measured_aerosols_descriptor, &build_selected,
+                                            &BrunetonModel::estimated_table_bytes>();
+  // A ninth, optional model: its own 254.5 MB Bruneton-engine set (none shared with Bruneton's)
+  // is paid only by a server asked for it (docs/tables-and-memory.md "The server with every
+  // default ready").
+  factory.standard_on_first_use = true;
+  return factory;
 }
 
 const aeronet::PhaseFunctionFile& default_aerosol_inversion() {

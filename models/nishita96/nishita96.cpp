@@ -181,8 +181,9 @@ std::shared_ptr<const SunState> Nishita96Model::compute_sun_state(
   // (nishita96_sun_tables_blob.h). An exact sun (bucket width 0) is not stored: its keys are a
   // continuum, 24 to 47 MB each, which a client could use to fill the disk
   // (docs/tables-and-memory.md "Per-sun states").
-  auto tables =
-      cache_->get_or_build(key.str(), [&]() -> std::shared_ptr<const nishita96::SunTables> {
+  auto tables = cache_->get_or_build(
+      key.str(),
+      [&]() -> std::shared_ptr<const nishita96::SunTables> {
         const bool persist = context.cache != nullptr && bucket_width_rad_ > 0.0;
         const std::string disk_key = "nishita96-sun-tables/" +
                                      std::to_string(nishita96::kSunTablesBlobVersion) + "/" +
@@ -199,7 +200,8 @@ std::shared_ptr<const SunState> Nishita96Model::compute_sun_state(
         ++tables_computed_;
         if (persist) context.cache->store(disk_key, nishita96::sun_tables_to_bytes(*built));
         return built;
-      });
+      },
+      context.keep_sun_state);
   return std::make_shared<const Nishita96SunState>(sun, std::move(tables));
 }
 

@@ -221,6 +221,8 @@ void run_server(const server::ServerConfig& config, const std::string& software_
     ModelConfig on_three_points;
     on_three_points.wavelengths = three.grid();
     for (const ModelFactory& f : tables.factories()) {
+      // Not the 3-point tables of a model whose standard waits for its first use either.
+      if (f.standard_on_first_use) continue;
       if (f.descriptor->min_wavelength_nm <= on_three_points.wavelengths[0] &&
           f.descriptor->max_wavelength_nm >= on_three_points.wavelengths[2]) {
         tables.prebuild(f, on_three_points);
@@ -426,11 +428,13 @@ void add_serve_command(CLI::App& app, const std::string& software_version) {
   command
       ->add_option("--prebuild", config->prebuild,
                    "model:level pairs built at start, e.g. bruneton:standard,haber:draft "
-                   "(default: every model's draft, then its standard; docs/quality-levels.md)")
+                   "(default: every model's draft, then its standard, but measured_aerosols' "
+                   "standard, built on its first use; docs/quality-levels.md)")
       ->delimiter(',');
   command
       ->add_option("--prebuild-three", config->prebuild_three,
-                   "Also build the 3-wavelength tables of rgb method=three at start")
+                   "Also build the 3-wavelength tables of rgb method=three after start, in the "
+                   "background (not measured_aerosols')")
       ->capture_default_str();
   auto* token = command->add_option(
       "--token", config->token,

@@ -61,4 +61,10 @@ bool release_free_heap_memory() {
 #endif
 }
 
+void release_free_heap_memory_now() {
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
+
 }  // namespace clearsky::server

@@ -32,5 +32,8 @@ std::string bound_heap_arenas();
 
 // malloc_trim(0) unless another call did it within the last second; returns whether it ran.
 bool release_free_heap_memory();
+// malloc_trim(0) at once: after a table build, whose intermediates were freed in the arena of
+// the threads that built it (docs/tables-and-memory.md "The server with every default ready").
+void release_free_heap_memory_now();
 
 }  // namespace clearsky::server

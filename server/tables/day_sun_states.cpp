@@ -2,8 +2,6 @@
 #include "server/tables/day_sun_states.h"
 
 #include <spdlog/spdlog.h>
-#include <sys/resource.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -13,6 +11,8 @@
 #include "models/core/model_factory.h"
 #include "models/core/numeric.h"
 #include "models/core/sun_state_cache.h"
+#include "server/memory/heap_bounds.h"
+#include "server/tables/background_priority.h"
 
 namespace clearsky::server {
 
@@ -72,10 +72,9 @@ std::map<std::string, DaySunStates::Progress> DaySunStates::progress() const {
 }
 
 void DaySunStates::run() {
-  // Lowest priority for this thread only (Linux: a thread's nice value is its own,
-  // setpriority(2) on its thread id), so that the HTTP workers get the cores first.
-  if (::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), 19) != 0)
-    spdlog::warn("day sun states: cannot lower the pass's priority");
+  // SCHED_IDLE for this thread only, so that the HTTP workers get the cores first
+  // (background_priority.h); it logs when that is refused.
+  lower_this_thread_to_idle_priority();
   for (const Pass& pass : passes_) {
     if (stop_) return;
     try {
@@ -106,6 +105,8 @@ void DaySunStates::run_pass(const Pass& pass) {
   context.cancel = &stop_;
   context.cache = cache_;
   context.threads = 1;
+  // Into the disk cache, not the model's memory (day_sun_states.h).
+  context.keep_sun_state = false;
   const double width = bucket_width_rad(*pass.factory, pass.config);
   const double last = last_zenith_rad(*pass.factory->descriptor);
   const std::size_t computed_before = model->sun_states_built();
@@ -119,6 +120,8 @@ void DaySunStates::run_pass(const Pass& pass) {
     std::lock_guard lock(mutex_);
     ++progress_[id].built;
   }
+  // The states it computed were freed in its thread's arena.
+  release_free_heap_memory_now();
   spdlog::info(
       "day sun states: {} {} buckets ready in {:.1f} s ({} computed, the rest from the "
       "disk cache)",

@@ -9,8 +9,11 @@
 // configured place, so it cannot order the buckets by a day's clock, and from the zenith down
 // every request's bucket is reached at the latest after the whole pass.
 //
-// The pass runs on one thread at the lowest scheduling priority (nice 19) and computes with one
-// worker (PrecomputeContext::threads = 1), so that HTTP answers never wait for its CPU; it waits
+// The pass runs on one thread at the lowest scheduling priority (SCHED_IDLE:
+// background_priority.h) and computes with one worker (PrecomputeContext::threads = 1), so that
+// HTTP answers never wait for its CPU. It leaves the states in the disk cache only
+// (PrecomputeContext::keep_sun_state = false): the models' memory caches keep those requests
+// use, and a request's bucket the pass built is loaded from disk in milliseconds. It waits
 // for each configuration's tables (it never starts a table build of its own) and stops, cancelling
 // the state under way, when the object is destroyed. A request for a bucket the pass is building
 // waits on that build (the models' per-sun caches are single flight). An exact-sun configuration

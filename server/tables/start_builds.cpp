@@ -20,7 +20,12 @@ std::vector<std::pair<const ModelFactory*, ModelConfig>> start_builds(
       ModelConfig draft = level_config(*f.descriptor, QualityLevel::draft);
       if (draft.canonical_string() != defaults) builds.emplace_back(&f, std::move(draft));
     }
-    for (const ModelFactory& f : served) builds.emplace_back(&f, ModelConfig{});
+    // A model whose standard is built on first use (ModelFactory::standard_on_first_use) gets
+    // only its draft here: its first standard requests are answered from that draft while a
+    // request's build of the standard runs.
+    for (const ModelFactory& f : served) {
+      if (!f.standard_on_first_use) builds.emplace_back(&f, ModelConfig{});
+    }
     return builds;
   }
   for (const std::string& item : prebuild) {

@@ -1,8 +1,9 @@
 // What the server builds at start (docs/quality-levels.md "Serving at once"): by default the
-// draft of every model whose draft differs from its defaults, then every default (standard), so
-// that a table model answers from its draft tables within seconds while its standard tables
-// build; with `serve --prebuild LIST` ("bruneton:standard,haber:draft") exactly the listed
-// model levels, in that order.
+// draft of every model whose draft differs from its defaults, then every default (standard) but
+// those built on first use (ModelFactory::standard_on_first_use: measured_aerosols), so that a
+// table model answers from its draft tables within seconds while its standard tables build;
+// with `serve --prebuild LIST` ("bruneton:standard,haber:draft") exactly the listed model
+// levels, in that order.
 #pragma once
 
 #include <span>

@@ -14,6 +14,8 @@
 #include "models/core/canonical_config.h"
 #include "models/core/invalid_input.h"
 #include "models/core/numeric.h"
+#include "server/memory/heap_bounds.h"
+#include "server/tables/background_priority.h"
 
 namespace clearsky::server {
 
@@ -31,6 +33,8 @@ struct TableStore::Entry {
   bool from_cache = false;
   std::uint64_t last_used = 0;
   std::size_t estimated_bytes = 0;  // counted while the build is pending
+  // Queued by prebuild(): built by the builders at the lowest priority (background_priority.h).
+  bool background = false;
 };
 
 struct TableStore::SunPreparation {
@@ -377,16 +381,32 @@ TableStore::ServedModel TableStore::model_or_fallback(const ModelFactory& factor
                                                       const api::ModelRequester& requester) const {
   if (fallback != nullptr) {
     std::lock_guard lock(mutex_);
-    const auto wanted = entries_.find(entry_key(factory, config));
+    const ModelConfig wanted_config = canonical_config(*factory.descriptor, config);
+    const std::string canonical = wanted_config.canonical_string();
+    const std::string key = entry_key(factory, canonical);
+    auto wanted = entries_.find(key);
+    const auto draft = entries_.find(entry_key(factory, *fallback));
+    const bool draft_ready =
+        draft != entries_.end() && draft->second->status == api::ModelState::Status::ready;
+    // A default not built at start (standard on first use, or left out of --prebuild) with its
+    // draft ready: its build starts now, pinned like every default, on its own thread at the
+    // requests' priority, and this request is answered from the draft at once rather than after
+    // build_wait and a 503 (docs/quality-levels.md "Serving at once").
+    if (wanted == entries_.end() && draft_ready && canonical == default_canonical_string()) {
+      const std::shared_ptr<Entry> entry =
+          find_or_queue(factory, wanted_config, key, true, requester);
+      if (entry->status == api::ModelState::Status::queued) {
+        std::erase(queue_, entry);
+        launch_locked(entry);
+      }
+      wanted = entries_.find(key);
+    }
     // Only while config's own build is under way (queued at start or started by a request):
     // an unknown configuration is asked for as usual, so that its build starts.
     if (wanted != entries_.end() && wanted->second->status != api::ModelState::Status::ready &&
-        wanted->second->status != api::ModelState::Status::failed) {
-      const auto draft = entries_.find(entry_key(factory, *fallback));
-      if (draft != entries_.end() && draft->second->status == api::ModelState::Status::ready) {
-        draft->second->last_used = ++clock_;
-        return {draft->second->model, true};
-      }
+        wanted->second->status != api::ModelState::Status::failed && draft_ready) {
+      draft->second->last_used = ++clock_;
+      return {draft->second->model, true};
     }
   }
   return {model(factory, config, requester), false};
@@ -395,8 +415,11 @@ TableStore::ServedModel TableStore::model_or_fallback(const ModelFactory& factor
 void TableStore::prebuild(const ModelFactory& factory, const ModelConfig& config) {
   validate_config(*factory.descriptor, config);
   std::lock_guard lock(mutex_);
-  find_or_queue(factory, canonical_config(*factory.descriptor, config), entry_key(factory, config),
-                true);
+  const std::string key = entry_key(factory, config);
+  const bool known = entries_.contains(key);
+  const std::shared_ptr<Entry> entry =
+      find_or_queue(factory, canonical_config(*factory.descriptor, config), key, true);
+  if (!known) entry->background = true;
 }
 
 bool TableStore::ready() const {
@@ -490,7 +513,12 @@ void TableStore::builder_loop() {
       queue_.pop_front();
       entry->status = api::ModelState::Status::precomputing;
     }
-    build(*entry);
+    // A background build yields the cores to requests; a start build keeps the normal
+    // priority (readiness waits for it), as does a build a request starts (launch_locked).
+    if (entry->background)
+      run_at_idle_priority([&] { build(*entry); });
+    else
+      build(*entry);
     changed_.notify_all();
   }
 }
@@ -539,6 +567,9 @@ void TableStore::build(Entry& entry) const {
     }
     evict_locked();
   }
+  // The build's intermediates (and the tables an eviction dropped) were freed in the arenas of
+  // its threads: give that memory back rather than keep it for allocations that may not come.
+  release_free_heap_memory_now();
   if (error.empty()) {
     const std::size_t bytes = entry.model->table_bytes();
     spdlog::info("tables: {} ready in {:.3f} s ({}, {} bytes)", id, seconds,

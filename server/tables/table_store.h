@@ -92,7 +92,9 @@ class TableStore final : public api::ModelProvider {
   // std::invalid_argument for an invalid configuration.
   void start_builds(const std::vector<std::pair<const ModelFactory*, ModelConfig>>& builds);
   // Queues another configuration to build in the background and keep (after the defaults;
-  // readiness does not wait for it). std::invalid_argument for an invalid configuration.
+  // readiness does not wait for it), at the lowest CPU priority (background_priority.h) unless a
+  // request needs it before a builder takes it (then on its own thread at the normal priority).
+  // std::invalid_argument for an invalid configuration.
   void prebuild(const ModelFactory& factory, const ModelConfig& config);
   // Whether the tables queued at start are ready: those of start_builds, else every model's
   // default.

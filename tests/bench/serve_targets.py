@@ -10,10 +10,12 @@ Starts the server on an empty table cache and reports:
   /v1/radiance per served model;
 - with --dataset-db, an all-model evaluation of its dataset three times (the first builds the
   per-sun states, the next ones find everything warm): the wall time of each, from the request to
-  the ticket's end.
+  the ticket's end;
+- with --warm-restart, the same start again on the table cache the first server filled: when it
+  was ready and its resident memory then and after one radiance per model.
 
     tests/bench/serve_targets.py --binary build/clearsky [--dataset-db kider.db --dataset kider2014]
-                                 [--models M,...] [--json]
+                                 [--models M,...] [--warm-restart] [--json]
 
 The dataset database is copied, never written. Prints text, or one JSON object with --json.
 """
@@ -115,6 +117,15 @@ def wait_ready(server, timeout_s):
     raise RuntimeError(f"/readyz not 200 after {timeout_s} s")
 
 
+def radiance_per_model(server):
+    """One /v1/radiance per served model (its level may still be building: an answer from its
+    draft or a 503 both count), then the resident memory."""
+    _, body = server.get("/v1/models")
+    for model in [m["id"] for m in json.loads(body)["models"]]:
+        server.get(f"/v1/radiance?model={model}&" + ONE_VIEW, timeout=300)
+    return server.resident_mib()
+
+
 def free_port():
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
@@ -150,6 +161,7 @@ def main():
     parser.add_argument("--dataset", default="kider2014")
     parser.add_argument("--passes", type=int, default=3)
     parser.add_argument("--ready-timeout", type=float, default=900.0)
+    parser.add_argument("--warm-restart", action="store_true")
     parser.add_argument("--json", action="store_true")
     args = parser.parse_args()
 
@@ -164,15 +176,18 @@ def main():
         levels, first_bruneton, ready_s = wait_ready(server, args.ready_timeout)
         out.update(ready_s=ready_s, levels=levels, first_bruneton=first_bruneton)
         out["resident_when_ready_mib"] = server.resident_mib()
-        _, body = server.get("/v1/models")
-        models = [m["id"] for m in json.loads(body)["models"]]
-        for model in models:
-            server.get(f"/v1/radiance?model={model}&" + ONE_VIEW, timeout=300)
-        out["resident_after_one_radiance_per_model_mib"] = server.resident_mib()
+        out["resident_after_one_radiance_per_model_mib"] = radiance_per_model(server)
         if args.dataset_db:
             out["evaluation_passes"] = [evaluation_pass(server, args.dataset)
                                         for _ in range(args.passes)]
             out["resident_after_passes_mib"] = server.resident_mib()
+        if args.warm_restart:
+            server.stop()
+            server = Server(args.binary, workdir, port, extra)
+            _, _, ready_s = wait_ready(server, args.ready_timeout)
+            out["warm_restart"] = {
+                "ready_s": ready_s, "resident_when_ready_mib": server.resident_mib(),
+                "resident_after_one_radiance_per_model_mib": radiance_per_model(server)}
     finally:
         server.stop()
         shutil.rmtree(workdir, ignore_errors=True)
@@ -191,6 +206,8 @@ def main():
         print(f"all-model evaluation pass {i + 1}: {p['seconds']} s, {p['status']}")
     if "resident_after_passes_mib" in out:
         print("resident after the passes (MiB):", out["resident_after_passes_mib"])
+    if "warm_restart" in out:
+        print("warm restart:", out["warm_restart"])
     return 0
 
 

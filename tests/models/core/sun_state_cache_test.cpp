@@ -120,6 +120,24 @@ TEST(SunStateCache, AFailedBuildReachesItsWaitersAndIsNotCached) {
   EXPECT_EQ(*v, 7);
 }
 
+// keep = false (PrecomputeContext::keep_sun_state: the server's pass over the day's states)
+// returns the state it built without keeping it, and does not make a kept state more recent.
+TEST(SunStateCache, AStateBuiltWithoutKeepIsReturnedButNotKept) {
+  SunStateCache<int> cache(2);
+  int builds = 0;
+  const auto build = [&] { return std::make_shared<const int>(++builds); };
+  EXPECT_EQ(*cache.get_or_build("a", build, false), 1);
+  EXPECT_EQ(cache.size(), 0u);
+  EXPECT_EQ(cache.stats().bytes, 0u);
+  EXPECT_EQ(*cache.get_or_build("a", build), 2);  // built again, now kept
+  EXPECT_EQ(*cache.get_or_build("b", build), 3);
+  EXPECT_EQ(*cache.get_or_build("a", build, false), 2);  // a hit, left least recently used
+  EXPECT_EQ(*cache.get_or_build("c", build), 4);         // drops a, not b
+  EXPECT_EQ(*cache.get_or_build("b", build), 3);
+  EXPECT_EQ(*cache.get_or_build("a", build), 5);
+  EXPECT_EQ(builds, 5);
+}
+
 TEST(SunStateCache, BucketCentresAreMultiplesOfTheWidthInsideZeroToPi) {
   const double w = degrees_to_radians(1.0);
   EXPECT_DOUBLE_EQ(sun_zenith_bucket_centre(degrees_to_radians(30.4), w), 30.0 * w);

@@ -26,6 +26,9 @@ class ServeProcess {
   ServeProcess(const std::filesystem::path& dir, const std::vector<std::string>& extra,
                const std::string& models = "preetham", const std::filesystem::path& db = {}) {
     log_ = dir / "serve.log";
+    // A log left by an earlier server in the same folder must not give its port: the child
+    // truncates the file only once it runs, after this process starts reading it.
+    std::filesystem::remove(log_);
     const std::string binary = std::string(CLEARSKY_BINARY_DIR) + "/clearsky";
     std::vector<std::string> args = {"clearsky",
                                      "serve",

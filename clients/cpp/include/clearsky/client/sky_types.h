@@ -126,7 +126,8 @@ struct ModelInfo {
   std::optional<double> min_wavelength_nm, max_wavelength_nm;
   std::vector<ModelParameterInfo> parameters;
   ModelCapabilities capabilities;
-  std::string table_status;   // the default tables: "queued", "precomputing", "ready", "failed"
+  std::string
+      table_status;  // the default tables: "queued", "precomputing", "ready", "failed", "not_built"
   double table_progress = 0;  // 0..1
 };
 
