@@ -81,4 +81,39 @@ CLEARSKY_VECTOR_CLONES void add_scaled_pair(std::size_t n, const double* values,
   }
 }
 
+// The same operations as transmittance_from_lengths and add_scaled_pair, in the same order, so
+// that the results are identical. The clamped exponents go through a block on the stack: with
+// the clamp in the exponential's loop the compiler evaluates exp_core only in the unclamped
+// lanes and no longer fuses the weighting into the sums' multiply-adds, which changes their
+// rounding. The clamp is written with value selects, which vectorise (std::clamp selects
+// references).
+CLEARSKY_VECTOR_CLONES void add_weighted_transmittances(std::size_t n,
+                                                        const double* beta_rayleigh_per_m,
+                                                        const double* beta_mie_per_m,
+                                                        const WeightedSamples& samples,
+                                                        double* sum_a, double* sum_b) {
+  constexpr std::size_t kBlock = 64;
+  double exponent[kBlock];
+  for (std::size_t begin = 0; begin < n; begin += kBlock) {
+    const std::size_t m = std::min(kBlock, n - begin);
+    const double* __restrict beta_rayleigh = beta_rayleigh_per_m + begin;
+    const double* __restrict beta_mie = beta_mie_per_m + begin;
+    double* __restrict a = sum_a + begin;
+    double* __restrict b = sum_b + begin;
+    for (std::size_t j = 0; j < samples.count; ++j) {
+      const double rayleigh_m = samples.rayleigh_m[j], mie_m = samples.mie_m[j];
+      const double weight_a = samples.weight_a[j], weight_b = samples.weight_b[j];
+      for (std::size_t i = 0; i < m; ++i) {
+        const double x = -(beta_rayleigh[i] * rayleigh_m + beta_mie[i] * mie_m);
+        exponent[i] = x < -708.0 ? -708.0 : (0.0 < x ? 0.0 : x);
+      }
+      for (std::size_t i = 0; i < m; ++i) {
+        const double t = exp_core(exponent[i]);
+        a[i] += weight_a * t;
+        b[i] += weight_b * t;
+      }
+    }
+  }
+}
+
 }  // namespace clearsky

@@ -36,4 +36,25 @@ void transmittance_from_lengths(std::size_t n, const double* beta_rayleigh_per_m
 void add_scaled_pair(std::size_t n, const double* values, double scale_a, double scale_b,
                      double* sum_a, double* sum_b);
 
+// The samples of one view ray as the numerical models integrate it: sample j has the optical
+// lengths of its path from the observer through the sample to the sun (rayleigh_m[j],
+// mie_m[j]) and its two quadrature weights (weight_a[j], weight_b[j]: the Rayleigh and Mie
+// weights, density times step).
+struct WeightedSamples {
+  const double* rayleigh_m;
+  const double* mie_m;
+  const double* weight_a;
+  const double* weight_b;
+  std::size_t count;
+};
+
+// For each sample j in order: sum_a[i] += weight_a[j] T_j[i], sum_b[i] += weight_b[j] T_j[i],
+// T_j[i] = exp(-(beta_rayleigh[i] rayleigh_m[j] + beta_mie[i] mie_m[j])). Bit for bit
+// transmittance_from_lengths then add_scaled_pair per sample (tests/models/core/
+// fast_exp_test.cpp), in one call per ray instead of two per sample and without storing T:
+// the single-scattering sums of Nishita93 and O'Neal. The arrays must not overlap.
+void add_weighted_transmittances(std::size_t n, const double* beta_rayleigh_per_m,
+                                 const double* beta_mie_per_m, const WeightedSamples& samples,
+                                 double* sum_a, double* sum_b);
+
 }  // namespace clearsky

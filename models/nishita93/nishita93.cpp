@@ -1,6 +1,7 @@
 // Nishita93: descriptor, factory and queries (see nishita93.h).
 #include "models/nishita93/nishita93.h"
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -8,6 +9,7 @@
 #include "models/atmosphere/atmosphere_parameter_table.h"
 #include "models/atmosphere/solar_spectrum.h"
 #include "models/core/ray_sphere.h"
+#include "models/core/ray_sun_frame.h"
 #include "models/nishita93/nishita93_functions.h"
 
 namespace clearsky {
@@ -124,16 +126,21 @@ void Nishita93Model::scattered_radiance(const SunState& sun, const Viewpoint& vi
                                         std::span<const ViewDirection> views, SpectralBatch& out,
                                         bool with_ground) const {
   const std::size_t n = wavelengths().size();
-  std::vector<double> scratch(5 * n);
-  const std::span<double> all(scratch);
-  const nishita93::RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n),
-                                          all.subspan(2 * n, n)};
-  const std::span<double> view_transmittance = all.subspan(3 * n, n);
-  const std::span<double> sun_transmittance = all.subspan(4 * n, n);
+  // Scratch on the stack for the usual grids (the study's 40 bins), on the heap beyond: a
+  // one-view query then allocates nothing.
+  constexpr std::size_t kStackWavelengths = 64;
+  std::array<double, 4 * kStackWavelengths> stack_scratch;
+  std::vector<double> heap_scratch(n > kStackWavelengths ? 4 * n : 0);
+  const std::span<double> all = n > kStackWavelengths
+                                    ? std::span<double>(heap_scratch)
+                                    : std::span<double>(stack_scratch).first(4 * n);
+  const nishita93::RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n)};
+  const std::span<double> view_transmittance = all.subspan(2 * n, n);
+  const std::span<double> sun_transmittance = all.subspan(3 * n, n);
   const auto& p = config().atmosphere;
+  const RaySunFrame frame(p.earth_radius_m, viewpoint, sun.sun());
   for (std::size_t i = 0; i < views.size(); ++i) {
-    const RaySunGeometry ray =
-        RaySunGeometry::from(p.earth_radius_m, viewpoint, views[i], sun.sun());
+    const RaySunGeometry ray = frame.ray(views[i]);
     const AtmosphereSegment segment =
         atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);
     if (!with_ground || !segment.hits_ground) {

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "models/atmosphere/phase_functions.h"
-#include "models/core/fast_exp.h"
 #include "models/core/ray_sphere.h"
+#include "models/core/weighted_transmittance_sums.h"
 
 namespace clearsky::nishita93 {
 
@@ -98,19 +98,21 @@ bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& a
   const int end_sphere = limited ? -1 : segment.hits_ground ? 0 : top_sphere;
 
   const double* beta_rayleigh = atmosphere.rayleigh_scattering_per_m.data();
-  const double* beta_mie_extinction = atmosphere.mie_extinction_per_m.data();
   double* rayleigh_integral = workspace.rayleigh_integral.data();
   double* mie_integral = workspace.mie_integral.data();
-  std::fill_n(rayleigh_integral, n_wavelengths, 0.0);
-  std::fill_n(mie_integral, n_wavelengths, 0.0);
+  // The samples' transmittances and weights go to the integrals in vector passes over chunks
+  // of samples.
+  WeightedTransmittanceSums sums(n_wavelengths, beta_rayleigh,
+                                 atmosphere.mie_extinction_per_m.data(), rayleigh_integral,
+                                 mie_integral);
 
   // The trapezoid rule over the samples, for the observer-side optical lengths and for the
   // integrands rho_p T. A sample's weight is half the sum of its two neighbouring segments, so
-  // its transmittance is added to the integrals when the next sample is known (`pending`).
-  double* pending = workspace.transmittance.data();
+  // it is added to the integrals when the next sample is known (`pending`). A sample in the
+  // Earth's shadow (or the observer's with study_viewer_sample) has T = 0 and adds nothing.
   double previous_d = 0.0, previous_rho_r = 0.0, previous_rho_m = 0.0, pending_half_before = 0.0;
-  bool first = true;
-  OpticalLengths view;
+  bool first = true, pending_lit = false;
+  OpticalLengths view, pending_lengths;
   auto add_sample = [&](double d, int sphere) {
     double radius, rho_r, rho_m;
     if (sphere >= 0) {
@@ -123,20 +125,17 @@ bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& a
       rho_m = std::exp(-(radius - p.earth_radius_m) / p.mie_scale_height_m);
     }
     const double half = first ? 0.0 : 0.5 * (d - previous_d);
-    if (!first) {
+    if (!first && pending_lit) {
       const double weight = pending_half_before + half;
-      add_scaled_pair(n_wavelengths, pending, weight * previous_rho_r, weight * previous_rho_m,
-                      rayleigh_integral, mie_integral);
+      sums.add(pending_lengths.rayleigh_m, pending_lengths.mie_m, weight * previous_rho_r,
+               weight * previous_rho_m);
     }
     view.rayleigh_m += half * (rho_r + previous_rho_r);
     view.mie_m += half * (rho_m + previous_rho_m);
     const auto sun = tables.sun_optical_lengths(radius, ray.mu_s_at(d, radius), sphere);
-    if (sun && !(first && study_viewer_sample)) {
-      transmittance_from_lengths(n_wavelengths, beta_rayleigh, beta_mie_extinction,
-                                 view.rayleigh_m + sun->rayleigh_m, view.mie_m + sun->mie_m,
-                                 pending);
-    } else {
-      std::fill_n(pending, n_wavelengths, 0.0);
+    pending_lit = sun && !(first && study_viewer_sample);
+    if (pending_lit) {
+      pending_lengths = {view.rayleigh_m + sun->rayleigh_m, view.mie_m + sun->mie_m};
     }
     pending_half_before = half;
     previous_d = d;
@@ -146,8 +145,11 @@ bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& a
   };
   for_each_sample(tables, ray.r_m, ray.mu, segment.start, end, start_sphere, end_sphere,
                   add_sample);
-  add_scaled_pair(n_wavelengths, pending, pending_half_before * previous_rho_r,
-                  pending_half_before * previous_rho_m, rayleigh_integral, mie_integral);
+  if (pending_lit) {
+    sums.add(pending_lengths.rayleigh_m, pending_lengths.mie_m,
+             pending_half_before * previous_rho_r, pending_half_before * previous_rho_m);
+  }
+  sums.flush();
 
   const double phase_rayleigh = rayleigh_phase(ray.nu);
   const double phase_mie = cornette_shanks_phase(ray.nu, p.mie_phase_g);
@@ -169,9 +171,9 @@ ScatteringAlongRay single_scattering(const Nishita93Tables& tables,
                                      const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray,
                                      double max_distance_m, bool study_viewer_sample) {
   const std::size_t n = atmosphere.rayleigh_scattering_per_m.size();
-  std::vector<double> scratch(3 * n);
+  std::vector<double> scratch(2 * n);
   const std::span<double> all(scratch);
-  const RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n), all.subspan(2 * n, n)};
+  const RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n)};
   ScatteringAlongRay result{Spectrum(n), Spectrum(n), 0.0, false};
   result.hits_ground =
       single_scattering(tables, atmosphere, ray, max_distance_m, {result.radiance.data(), n},

@@ -29,7 +29,7 @@ namespace clearsky::nishita93 {
 
 // Scratch space for one ray (no allocation per ray), each of the grid size.
 struct RayWorkspace {
-  std::span<double> rayleigh_integral, mie_integral, transmittance;
+  std::span<double> rayleigh_integral, mie_integral;
 };
 
 // Writes the in-scattered radiance into radiance_out and the transmittance of the segment

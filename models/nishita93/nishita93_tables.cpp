@@ -75,6 +75,18 @@ Nishita93Tables Nishita93Tables::build(const AtmosphereParameters& atmosphere, i
     t.sphere_rayleigh_density_[i] = std::exp(-(r - r_ground) / h_r);
     t.sphere_mie_density_[i] = std::exp(-(r - r_ground) / h_m);
   }
+  // Per sphere, the last cylinder inside it and that cylinder's sun zenith cosine on it: the
+  // cell where along_row interpolates in |mu_s| (computed here once instead of per lookup).
+  t.last_inner_cylinder_.resize(n_s);
+  t.last_inner_cylinder_mu_.resize(n_s);
+  const double max_v = cylinders - 1.0;
+  for (std::size_t i = 0; i < n_s; ++i) {
+    const double r = t.sphere_radius_m_[i];
+    const int last = std::max(0, static_cast<int>(std::ceil(max_v * r / r_top)) - 1);
+    const double c_last = r_top * last / max_v;
+    t.last_inner_cylinder_[i] = last;
+    t.last_inner_cylinder_mu_[i] = safe_sqrt(1.0 - (c_last / r) * (c_last / r));
+  }
 
   const std::size_t size = n_s * static_cast<std::size_t>(cylinders);
   t.along_rayleigh_m_.resize(size);
@@ -135,8 +147,7 @@ Nishita93Tables Nishita93Tables::build(const AtmosphereParameters& atmosphere, i
   return t;
 }
 
-double Nishita93Tables::row_lookup(const std::vector<double>& table, int k, double sin_s,
-                                   double abs_mu_s, bool against) const {
+OpticalLengths Nishita93Tables::along_row(int k, double sin_s, double abs_mu_s) const {
   const double r_k = sphere_radius_m_[static_cast<std::size_t>(k)];
   const double max_v = cylinder_count_ - 1.0;
   const std::size_t row = static_cast<std::size_t>(k) * static_cast<std::size_t>(cylinder_count_);
@@ -148,26 +159,33 @@ double Nishita93Tables::row_lookup(const std::vector<double>& table, int k, doub
   // linearly in |mu_s| (the optical length of a ray is smooth in its zenith cosine through the
   // horizon) between that cylinder and the horizontal ray, so that they reach the horizontal
   // ray's at mu_s = 0, where the sun below the horizon (sun_optical_lengths) starts from.
-  const int last = std::max(0, static_cast<int>(std::ceil(max_v * r_k / top_radius_m_)) - 1);
-  if (v > last && !against) {
-    const double horizontal = table[row + static_cast<std::size_t>(cylinder_count_ - 1)];
-    const double c_last = top_radius_m_ * last / max_v;
-    const double mu_last = safe_sqrt(1.0 - (c_last / r_k) * (c_last / r_k));
+  const int last = last_inner_cylinder_[static_cast<std::size_t>(k)];
+  if (v > last) {
+    const std::size_t horizontal = row + static_cast<std::size_t>(cylinder_count_ - 1);
+    const std::size_t inner = row + static_cast<std::size_t>(last);
+    const double mu_last = last_inner_cylinder_mu_[static_cast<std::size_t>(k)];
     const double t = mu_last > 0.0 ? std::min(abs_mu_s / mu_last, 1.0) : 0.0;
-    return t * table[row + static_cast<std::size_t>(last)] + (1.0 - t) * horizontal;
+    return {t * along_rayleigh_m_[inner] + (1.0 - t) * along_rayleigh_m_[horizontal],
+            t * along_mie_m_[inner] + (1.0 - t) * along_mie_m_[horizontal]};
   }
   const int j = std::min(static_cast<int>(v), cylinder_count_ - 2);
   const double fv = v - j;
-  const auto col = static_cast<std::size_t>(j);
-  return (1.0 - fv) * table[row + col] + fv * table[row + col + 1];
+  const std::size_t cell = row + static_cast<std::size_t>(j);
+  return {(1.0 - fv) * along_rayleigh_m_[cell] + fv * along_rayleigh_m_[cell + 1],
+          (1.0 - fv) * along_mie_m_[cell] + fv * along_mie_m_[cell + 1]};
 }
 
-double Nishita93Tables::lookup(const std::vector<double>& table, double u, double sin_s,
-                               double abs_mu_s, bool against) const {
+OpticalLengths Nishita93Tables::along_lookup(double u, double sin_s, double abs_mu_s) const {
   const int i = std::min(static_cast<int>(u), sphere_count_ - 2);
   const double fu = u - i;
-  return (1.0 - fu) * row_lookup(table, i, sin_s, abs_mu_s, against) +
-         fu * row_lookup(table, i + 1, sin_s, abs_mu_s, against);
+  // A point on a sphere (fu = 0, or 1 on the top sphere) reads one row: the other row's term
+  // of the interpolation is exactly 0 (its lengths are finite), so skipping it changes no bit.
+  if (fu == 0.0) return along_row(i, sin_s, abs_mu_s);
+  if (fu == 1.0) return along_row(i + 1, sin_s, abs_mu_s);
+  const OpticalLengths below = along_row(i, sin_s, abs_mu_s);
+  const OpticalLengths above = along_row(i + 1, sin_s, abs_mu_s);
+  return {(1.0 - fu) * below.rayleigh_m + fu * above.rayleigh_m,
+          (1.0 - fu) * below.mie_m + fu * above.mie_m};
 }
 
 std::optional<OpticalLengths> Nishita93Tables::sun_optical_lengths(double r_m, double mu_s,
@@ -195,8 +213,7 @@ std::optional<OpticalLengths> Nishita93Tables::sun_optical_lengths(double r_m, d
   // radius on that sphere), so that both meet the horizontal ray at mu_s = 0.
   const double sin_s = safe_sqrt(1.0 - mu_s * mu_s);
   const double abs_mu_s = std::abs(mu_s);
-  const OpticalLengths along{lookup(along_rayleigh_m_, u, sin_s, abs_mu_s, false),
-                             lookup(along_mie_m_, u, sin_s, abs_mu_s, false)};
+  const OpticalLengths along = along_lookup(u, sin_s, abs_mu_s);
   if (mu_s >= 0.0) return along;
   // The sun below the horizon. The ray to the sun goes down to its tangent point, at radius
   // c = r sin(theta_s), then up to the top; its other half from the tangent point passes through
@@ -241,15 +258,17 @@ OpticalLengths Nishita93Tables::node(int i, int j, bool against_axis) const {
 }
 
 std::size_t Nishita93Tables::memory_bytes_for(int spheres, int cylinders) {
-  // Per sphere: radius and two densities; per (sphere, cylinder) node: four optical lengths.
+  // Per sphere: radius, two densities, the last cylinder inside it and its sun zenith cosine;
+  // per (sphere, cylinder) node: four optical lengths.
   const auto n_s = static_cast<std::size_t>(std::max(spheres, 0));
   const auto nodes = n_s * static_cast<std::size_t>(std::max(cylinders, 0));
-  return sizeof(Nishita93Tables) + sizeof(double) * (3 * n_s + 4 * nodes);
+  return sizeof(Nishita93Tables) + sizeof(double) * (4 * n_s + 4 * nodes) + sizeof(int) * n_s;
 }
 
 std::size_t Nishita93Tables::memory_bytes() const {
   return sizeof(*this) +
-         sizeof(double) * (3 * sphere_radius_m_.size() + 4 * along_rayleigh_m_.size());
+         sizeof(double) * (4 * sphere_radius_m_.size() + 4 * along_rayleigh_m_.size()) +
+         sizeof(int) * last_inner_cylinder_.size();
 }
 
 }  // namespace clearsky

@@ -68,19 +68,21 @@ class Nishita93Tables {
   std::size_t memory_bytes() const;
 
  private:
-  // Bilinear lookup at sphere coordinate u, each sphere read at the sun zenith angle of sine
-  // sin_s (and |cos| abs_mu_s); against: the against-axis table.
-  double lookup(const std::vector<double>& table, double u, double sin_s, double abs_mu_s,
-                bool against) const;
+  // Bilinear lookup of both along-axis tables at sphere coordinate u, each sphere read at the
+  // sun zenith angle of sine sin_s (and |cos| abs_mu_s).
+  OpticalLengths along_lookup(double u, double sin_s, double abs_mu_s) const;
   // The horizontal ray's optical lengths at radius r_m (between the ground and the top).
   OpticalLengths horizontal_lengths(double r_m) const;
-  double row_lookup(const std::vector<double>& table, int k, double sin_s, double abs_mu_s,
-                    bool against) const;
+  // Both along-axis tables on sphere k, linear in the cylinder radius.
+  OpticalLengths along_row(int k, double sin_s, double abs_mu_s) const;
 
   int sphere_count_ = 0, cylinder_count_ = 0;
   double bottom_radius_m_ = 0, top_radius_m_ = 0, rayleigh_scale_height_m_ = 0;
   double density_step_ = 0;  // a of the sphere radii formula
   std::vector<double> sphere_radius_m_, sphere_rayleigh_density_, sphere_mie_density_;
+  // Per sphere: the last cylinder inside it and that cylinder's sun zenith cosine there.
+  std::vector<int> last_inner_cylinder_;
+  std::vector<double> last_inner_cylinder_mu_;
   // [i * cylinder_count + j]
   std::vector<double> along_rayleigh_m_, along_mie_m_, against_rayleigh_m_, against_mie_m_;
 };

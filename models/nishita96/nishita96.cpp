@@ -212,10 +212,9 @@ void Nishita96Model::radiance_orders(const Nishita96SunState& state, const Viewp
   const std::size_t n = a.grid.size();
   std::fill(out.begin(), out.end(), 0.0);
   if (orders != Nishita96Orders::double_only) {
-    std::vector<double> scratch(3 * n);
+    std::vector<double> scratch(2 * n);
     const std::span<double> all(scratch);
-    const nishita93::RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n),
-                                            all.subspan(2 * n, n)};
+    const nishita93::RayWorkspace workspace{all.subspan(0, n), all.subspan(n, n)};
     nishita93::single_scattering(
         optical_lengths_, a,
         RaySunGeometry::from(a.parameters.earth_radius_m, viewpoint, view, state.sun()),

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "models/atmosphere/phase_functions.h"
-#include "models/core/fast_exp.h"
 #include "models/core/ray_sphere.h"
+#include "models/core/weighted_transmittance_sums.h"
 
 namespace clearsky::oneal {
 
@@ -18,39 +18,54 @@ struct Point {
   double mu;  // view zenith cosine at the point
 };
 
+// Schuler's scale function of one profile with its constants c = sqrt(R / H) and H c computed
+// once per ray instead of once per length (four lengths per sample): the same expression as
+// scale_m(), so the same values.
+struct Profile {
+  double h, c, hc;
+  Profile(double scale_height_m, double bottom_radius_m)
+      : h(scale_height_m), c(std::sqrt(bottom_radius_m / scale_height_m)), hc(scale_height_m * c) {}
+  double scale(double mu) const { return hc / (c * std::max(mu, 0.0) + 1.0); }
+};
+
+// The two profiles of the atmosphere above the ground radius.
+struct Profiles {
+  Profile rayleigh, mie;
+  double bottom;
+  explicit Profiles(const AtmosphereParameters& p)
+      : rayleigh(p.rayleigh_scale_height_m, p.earth_radius_m),
+        mie(p.mie_scale_height_m, p.earth_radius_m),
+        bottom(p.earth_radius_m) {}
+};
+
 // Relative density exp(-(r - bottom) / h) of one profile at radius r.
 double density(double r, double h, double bottom) { return std::exp(-(r - bottom) / h); }
 
 // Optical length of one profile to infinity along mu (any sign; the caller has excluded rays
 // that meet the ground), with rho = density(r, h, bottom) computed by the caller, who uses it
 // for more than one length.
-double length_to_infinity(double r, double mu, double h, double bottom, double rho) {
-  if (mu >= 0.0) return rho * scale_m(h, bottom, mu);
+double length_to_infinity(double r, double mu, const Profile& profile, double bottom, double rho) {
+  if (mu >= 0.0) return rho * profile.scale(mu);
   const double tangent_radius = r * safe_sqrt(1.0 - mu * mu);
-  return 2.0 * std::exp(-(tangent_radius - bottom) / h) * scale_m(h, bottom, 0.0) -
-         rho * scale_m(h, bottom, -mu);
+  return 2.0 * std::exp(-(tangent_radius - bottom) / profile.h) * profile.scale(0.0) -
+         rho * profile.scale(-mu);
 }
 
 // The Rayleigh and Mie relative densities at a radius.
-OpticalLengths densities(const AtmosphereParameters& p, double r) {
-  return {density(r, p.rayleigh_scale_height_m, p.earth_radius_m),
-          density(r, p.mie_scale_height_m, p.earth_radius_m)};
+OpticalLengths densities(const Profiles& p, double r) {
+  return {density(r, p.rayleigh.h, p.bottom), density(r, p.mie.h, p.bottom)};
 }
 
-OpticalLengths lengths_to_infinity(const AtmosphereParameters& p, double r, double mu,
+OpticalLengths lengths_to_infinity(const Profiles& p, double r, double mu,
                                    const OpticalLengths& rho) {
-  return {length_to_infinity(r, mu, p.rayleigh_scale_height_m, p.earth_radius_m, rho.rayleigh_m),
-          length_to_infinity(r, mu, p.mie_scale_height_m, p.earth_radius_m, rho.mie_m)};
-}
-
-OpticalLengths lengths_to_infinity(const AtmosphereParameters& p, double r, double mu) {
-  return lengths_to_infinity(p, r, mu, densities(p, r));
+  return {length_to_infinity(r, mu, p.rayleigh, p.bottom, rho.rayleigh_m),
+          length_to_infinity(r, mu, p.mie, p.bottom, rho.mie_m)};
 }
 
 // Optical lengths to infinity of a point of the view: along the view when it escapes, along
 // the reversed view (upward through the point) when it meets the ground.
-OpticalLengths view_lengths_to_infinity(const AtmosphereParameters& p, const Point& a,
-                                        bool view_hits_ground, const OpticalLengths& rho) {
+OpticalLengths view_lengths_to_infinity(const Profiles& p, const Point& a, bool view_hits_ground,
+                                        const OpticalLengths& rho) {
   return lengths_to_infinity(p, a.radius, view_hits_ground ? -a.mu : a.mu, rho);
 }
 
@@ -73,7 +88,9 @@ double scale_m(double scale_height_m, double bottom_radius_m, double mu) {
 std::optional<OpticalLengths> optical_lengths_to_infinity(const AtmosphereParameters& atmosphere,
                                                           double r_m, double mu) {
   if (ray_hits_ground(r_m, mu, atmosphere.earth_radius_m)) return std::nullopt;
-  return lengths_to_infinity(atmosphere, std::max(r_m, atmosphere.earth_radius_m), mu);
+  const Profiles profiles(atmosphere);
+  const double r = std::max(r_m, atmosphere.earth_radius_m);
+  return lengths_to_infinity(profiles, r, mu, densities(profiles, r));
 }
 
 bool single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray, int samples,
@@ -89,24 +106,28 @@ bool single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry
   if (!(end > segment.start) || samples < 1) return false;
   // Whether the whole line of the view meets the ground (then lengths go along the reversed ray).
   const bool line_hits_ground = segment.hits_ground;
+  const Profiles profiles(p);
 
+  // The radius and the view zenith cosine at distance d (mu_at_distance from the same radius,
+  // computed once).
   auto point_at = [&](double d) {
-    return Point{std::max(radius_at_distance(ray.r_m, ray.mu, d), p.earth_radius_m),
-                 mu_at_distance(ray.r_m, ray.mu, d)};
+    const double r_d = radius_at_distance(ray.r_m, ray.mu, d);
+    return Point{std::max(r_d, p.earth_radius_m),
+                 r_d > 0.0 ? clamp_cosine((ray.r_m * ray.mu + d) / r_d) : 1.0};
   };
   const Point start = point_at(segment.start);
   const double sample_length = (end - segment.start) / samples;
   // The observer-side end's lengths to infinity, once for all samples.
-  const OpticalLengths start_lengths =
-      view_lengths_to_infinity(p, start, line_hits_ground, densities(p, start.radius));
+  const OpticalLengths start_lengths = view_lengths_to_infinity(profiles, start, line_hits_ground,
+                                                                densities(profiles, start.radius));
 
   const double* beta_rayleigh = atmosphere.rayleigh_scattering_per_m.data();
-  const double* beta_mie_extinction = atmosphere.mie_extinction_per_m.data();
   double* rayleigh_integral = workspace.rayleigh_integral.data();
   double* mie_integral = workspace.mie_integral.data();
-  double* t = workspace.transmittance.data();
-  std::fill_n(rayleigh_integral, n_wavelengths, 0.0);
-  std::fill_n(mie_integral, n_wavelengths, 0.0);
+  // The samples' transmittances and weights go to the integrals in one vector pass.
+  WeightedTransmittanceSums sums(n_wavelengths, beta_rayleigh,
+                                 atmosphere.mie_extinction_per_m.data(), rayleigh_integral,
+                                 mie_integral);
   for (int i = 0; i < samples; ++i) {
     const double d = segment.start + (i + 0.5) * sample_length;
     const Point x = point_at(d);
@@ -115,16 +136,15 @@ bool single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry
     if (ray_hits_ground(x.radius, mu_s, p.earth_radius_m)) continue;  // in the Earth's shadow
     // The densities at x serve its length to the sun, its length along the view and the
     // sample's weights.
-    const OpticalLengths rho = densities(p, x.radius);
-    const OpticalLengths to_sun = lengths_to_infinity(p, x.radius, mu_s, rho);
-    const OpticalLengths view = lengths_between(
-        start_lengths, view_lengths_to_infinity(p, x, line_hits_ground, rho), line_hits_ground);
-    const double lr = view.rayleigh_m + to_sun.rayleigh_m, lm = view.mie_m + to_sun.mie_m;
-    transmittance_from_lengths(n_wavelengths, beta_rayleigh, beta_mie_extinction, lr, lm, t);
-    const double weight_rayleigh = sample_length * rho.rayleigh_m;
-    const double weight_mie = sample_length * rho.mie_m;
-    add_scaled_pair(n_wavelengths, t, weight_rayleigh, weight_mie, rayleigh_integral, mie_integral);
+    const OpticalLengths rho = densities(profiles, x.radius);
+    const OpticalLengths to_sun = lengths_to_infinity(profiles, x.radius, mu_s, rho);
+    const OpticalLengths view =
+        lengths_between(start_lengths, view_lengths_to_infinity(profiles, x, line_hits_ground, rho),
+                        line_hits_ground);
+    sums.add(view.rayleigh_m + to_sun.rayleigh_m, view.mie_m + to_sun.mie_m,
+             sample_length * rho.rayleigh_m, sample_length * rho.mie_m);
   }
+  sums.flush();
 
   const double phase_rayleigh = rayleigh_phase(ray.nu);
   const double phase_mie = cornette_shanks_phase(ray.nu, p.mie_phase_g);
@@ -138,8 +158,8 @@ bool single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry
     const Point last = point_at(end);
     transmittance_into(atmosphere,
                        lengths_between(start_lengths,
-                                       view_lengths_to_infinity(p, last, line_hits_ground,
-                                                                densities(p, last.radius)),
+                                       view_lengths_to_infinity(profiles, last, line_hits_ground,
+                                                                densities(profiles, last.radius)),
                                        line_hits_ground),
                        transmittance_out.data());
   }
@@ -149,13 +169,12 @@ bool single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry
 ScatteringAlongRay single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray,
                                      int samples, double max_distance_m) {
   const std::size_t n = atmosphere.rayleigh_scattering_per_m.size();
-  std::vector<double> scratch(3 * n);
+  std::vector<double> scratch(2 * n);
   const std::span<double> all(scratch);
   ScatteringAlongRay result{Spectrum(n), Spectrum(n), 0.0, false};
   result.hits_ground =
       single_scattering(atmosphere, ray, samples, max_distance_m, {result.radiance.data(), n},
-                        {result.transmittance.data(), n},
-                        {all.subspan(0, n), all.subspan(n, n), all.subspan(2 * n, n)});
+                        {result.transmittance.data(), n}, {all.subspan(0, n), all.subspan(n, n)});
   const auto& p = atmosphere.parameters;
   const AtmosphereSegment segment =
       atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);

@@ -40,7 +40,7 @@ std::optional<OpticalLengths> optical_lengths_to_infinity(const AtmosphereParame
 
 // Scratch space for one ray, each of the grid size.
 struct RayWorkspace {
-  std::span<double> rayleigh_integral, mie_integral, transmittance;
+  std::span<double> rayleigh_integral, mie_integral;
 };
 
 // Single scattering along the view with `samples` midpoint samples: writes the in-scattered

@@ -50,5 +50,69 @@ TEST(FastExp, EitherSignMatchesStdExp) {
   EXPECT_LT(clamped[1], 4e-308);
 }
 
+// Extinction coefficients shaped like the paper's (Rayleigh ~ lambda^-4, Mie ~ lambda^-0.8, per
+// metre at sea level) on n wavelengths from 360 to 830 nm.
+void paper_like_betas(std::size_t n, std::vector<double>& rayleigh, std::vector<double>& mie) {
+  rayleigh.resize(n);
+  mie.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double lambda_um = 0.36 + 0.47 * static_cast<double>(i) / static_cast<double>(n);
+    rayleigh[i] = 5.8e-6 * std::pow(0.68 / lambda_um, 4.0);
+    mie[i] = 4.4e-5 * std::pow(lambda_um, -0.8);
+  }
+}
+
+TEST(FastExp, WeightedTransmittancesEqualThePerSampleKernelsBitForBit) {
+  // 40 wavelengths (5 AVX-512 vectors), 37 (a remainder) and 1; optical lengths from 0 to
+  // far beyond the -708 clamp (1e9 m), weights of both signs' magnitudes.
+  for (std::size_t n : {std::size_t{40}, std::size_t{37}, std::size_t{1}}) {
+    std::vector<double> beta_rayleigh, beta_mie;
+    paper_like_betas(n, beta_rayleigh, beta_mie);
+    std::vector<double> rayleigh_m, mie_m, weight_a, weight_b;
+    for (int j = 0; j < 23; ++j) {
+      rayleigh_m.push_back(j == 0 ? 0.0 : std::pow(10.0, 0.4 * j) * (1.0 + 0.1 * j));
+      mie_m.push_back(j == 1 ? 0.0 : 0.17 * std::pow(10.0, 0.4 * j));
+      weight_a.push_back(1234.5 * std::exp(-0.3 * j));
+      weight_b.push_back(j % 5 == 0 ? 0.0 : 77.0 * std::exp(-1.7 * j));
+    }
+    std::vector<double> expected_a(n, 0.25), expected_b(n, 0.5), t(n);
+    for (std::size_t j = 0; j < rayleigh_m.size(); ++j) {
+      transmittance_from_lengths(n, beta_rayleigh.data(), beta_mie.data(), rayleigh_m[j], mie_m[j],
+                                 t.data());
+      add_scaled_pair(n, t.data(), weight_a[j], weight_b[j], expected_a.data(), expected_b.data());
+    }
+    std::vector<double> sum_a(n, 0.25), sum_b(n, 0.5);
+    add_weighted_transmittances(
+        n, beta_rayleigh.data(), beta_mie.data(),
+        {rayleigh_m.data(), mie_m.data(), weight_a.data(), weight_b.data(), rayleigh_m.size()},
+        sum_a.data(), sum_b.data());
+    for (std::size_t i = 0; i < n; ++i) {
+      EXPECT_EQ(sum_a[i], expected_a[i]) << n << " " << i;
+      EXPECT_EQ(sum_b[i], expected_b[i]) << n << " " << i;
+    }
+    // And against std::exp: each term within 2 ulp, so the sums within a few ulp.
+    for (std::size_t i = 0; i < n; ++i) {
+      double exact_a = 0.25, exact_b = 0.5;
+      for (std::size_t j = 0; j < rayleigh_m.size(); ++j) {
+        const double tj = std::exp(-(beta_rayleigh[i] * rayleigh_m[j] + beta_mie[i] * mie_m[j]));
+        exact_a += weight_a[j] * tj;
+        exact_b += weight_b[j] * tj;
+      }
+      EXPECT_NEAR(sum_a[i], exact_a, 1e-15 * exact_a);
+      EXPECT_NEAR(sum_b[i], exact_b, 1e-15 * exact_b);
+    }
+  }
+}
+
+TEST(FastExp, WeightedTransmittancesOfNoSampleLeaveTheSums) {
+  std::vector<double> beta_rayleigh, beta_mie;
+  paper_like_betas(8, beta_rayleigh, beta_mie);
+  std::vector<double> sum_a(8, 3.0), sum_b(8, 4.0);
+  add_weighted_transmittances(8, beta_rayleigh.data(), beta_mie.data(),
+                              {nullptr, nullptr, nullptr, nullptr, 0}, sum_a.data(), sum_b.data());
+  EXPECT_EQ(sum_a, std::vector<double>(8, 3.0));
+  EXPECT_EQ(sum_b, std::vector<double>(8, 4.0));
+}
+
 }  // namespace
 }  // namespace clearsky

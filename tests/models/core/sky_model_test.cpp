@@ -116,6 +116,33 @@ TEST(SkyModel, NonFiniteOrNegativeValuesNeverLeaveAQuery) {
   }
 }
 
+TEST(SkyModel, TheCheckOfTheAnswersSortsEveryKindOfValue) {
+  // The usual spectrum passes an integer test of the bit patterns; anything else (a negative
+  // value, -0, infinity, NaN) goes through the floating checks.
+  struct Case {
+    double value;
+    SampleStatus status;
+    double answered;
+  };
+  const double largest = std::numeric_limits<double>::max();
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  for (const Case& c :
+       {Case{largest, SampleStatus::ok, largest}, Case{tiny, SampleStatus::ok, tiny},
+        Case{0.0, SampleStatus::ok, 0.0}, Case{-0.0, SampleStatus::ok, 0.0},
+        Case{-1e-310, SampleStatus::ok, 0.0},
+        Case{-std::numeric_limits<double>::infinity(), SampleStatus::numerical_failure, 0.0},
+        Case{-std::numeric_limits<double>::quiet_NaN(), SampleStatus::numerical_failure, 0.0},
+        Case{-largest, SampleStatus::numerical_failure, 0.0}}) {
+    const UniformSky sky(small_config(), uniform_descriptor(90, false), c.value);
+    const auto sun = sky.prepare_sun({0.3, 1.0});
+    const std::vector<ViewDirection> views = {{0.5, 0.0}};
+    SpectralBatch out;
+    sky.sky_radiance(*sun, {}, views, out);
+    EXPECT_EQ(out.status[0], c.status) << c.value;
+    EXPECT_EQ(out.spectrum(0)[0], c.answered) << c.value;
+  }
+}
+
 TEST(SkyModel, ViewpointOutsideTheAltitudeRangeIsRefused) {
   const UniformSky sky(small_config(), uniform_descriptor(90, false));
   const auto sun = sky.prepare_sun({0.3, 1.0});
