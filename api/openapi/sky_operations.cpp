@@ -501,8 +501,10 @@ void add_sky_errors(Json& operation, bool get) {
   r["409"]["content"]["application/json"]["example"] = parse(
       R"json({"error": {"code": "fit_model_mismatch", "message": "fit: fit 3 is a fit of hosek, not of preetham", "parameter": "fit"}})json");
   r["413"] = error_response(
-      "Above a configured limit: views, wavelengths, image size, or the request body (code "
-      "too_large); error.parameter names it.");
+      "Above a configured limit: views, wavelengths, image size, the request body, or tables "
+      "that never fit in the server's table memory beside the tables it keeps for good "
+      "(--table-memory; error.parameter table_memory) (code too_large); error.parameter names "
+      "it.");
   r["413"]["content"]["application/json"]["example"] = parse(
       R"json({"error": {"code": "too_large", "message": "wavelengths: at most 2000 wavelengths", "parameter": "wavelengths"}})json");
   r["422"] = error_response(
@@ -536,7 +538,8 @@ void add_sky_errors(Json& operation, bool get) {
     r["413"]["description"] =
         "Above a configured limit: wavelengths, image size, or an image whose band of rows alone "
         "is above the answer memory budget (--answer-memory; error.parameter answer_memory) "
-        "(code too_large); error.parameter names it.";
+        "(code too_large); error.parameter names it; also tables that "
+        "never fit in the table memory (--table-memory; error.parameter table_memory).";
     // Streamed: no tag, since the body is not known before it is sent.
     r["200"]["headers"]["Cache-Control"] = ref("headers", "Cache-Control");
   } else {
@@ -552,7 +555,9 @@ void add_sky_errors(Json& operation, bool get) {
       r["413"]["description"] =
           "Above a configured limit: views, wavelengths, the request body, or an answer whose "
           "estimated memory alone is above the answer memory budget (--answer-memory; "
-          "error.parameter answer_memory) (code too_large); error.parameter names it.";
+          "error.parameter answer_memory) (code too_large); error.parameter names it; also tables "
+          "that "
+          "never fit in the table memory (--table-memory; error.parameter table_memory).";
     }
     if (get) add_revalidation(operation);
   }

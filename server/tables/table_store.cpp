@@ -173,6 +173,19 @@ std::shared_ptr<TableStore::Entry> TableStore::find_or_queue(
     }
   }
   const std::size_t estimate = estimate_bytes_locked(factory, config);
+  // A build that would not fit even with every evictable table gone can never be served: a 413
+  // that says so, not a 503 asking the client to retry what will never succeed.
+  if (!pinned && pinned_bytes_locked() + estimate > options_.memory_budget_bytes) {
+    throw api::too_large(
+        "table_memory",
+        "the tables of model " + factory.descriptor->id + " (about " + std::to_string(estimate) +
+            " bytes) never fit in the table memory budget of " +
+            std::to_string(options_.memory_budget_bytes) + " bytes beside the " +
+            std::to_string(pinned_bytes_locked()) +
+            " bytes of the tables kept for good (the defaults and what was built at start); ask "
+            "for fewer wavelengths or a coarser setting, or start the server with a larger "
+            "--table-memory");
+  }
   if (!pinned && !make_room_locked(estimate, nullptr)) {
     throw api::ApiError(503, "busy", "table_memory",
                         "table_memory: the tables of model " + factory.descriptor->id + " (about " +
@@ -447,6 +460,18 @@ std::size_t TableStore::accounted_bytes() const {
 std::size_t TableStore::accounted_bytes_locked() const {
   std::size_t bytes = 0;
   for (const auto& [key, e] : entries_) {
+    if (e->model)
+      bytes += e->model->table_bytes();
+    else if (pending(e->status))
+      bytes += e->estimated_bytes;
+  }
+  return bytes;
+}
+
+std::size_t TableStore::pinned_bytes_locked() const {
+  std::size_t bytes = 0;
+  for (const auto& [key, e] : entries_) {
+    if (!e->pinned) continue;
     if (e->model)
       bytes += e->model->table_bytes();
     else if (pending(e->status))

@@ -120,6 +120,9 @@ class TableStore final : public api::ModelProvider {
   // plus `extra` exceed the budget; whether they now fit.
   bool make_room_locked(std::size_t extra, const Entry* keep) const;
   std::size_t accounted_bytes_locked() const;
+  // The bytes of the pinned entries (the defaults and what was built at start), which are never
+  // evicted: what a requested build can never be given.
+  std::size_t pinned_bytes_locked() const;
   std::size_t estimate_bytes_locked(const ModelFactory& factory, const ModelConfig& config) const;
   struct SunPreparation;
 

@@ -121,17 +121,20 @@ TEST(TableMemoryBudget, RefusesOnTheModelsEstimateBeforeBuildingAndCountsRealByt
   wait_until_ready(store);
   EXPECT_EQ(store.accounted_bytes(), kTestSkyBytes);
   // Estimated at 5 x 1234 bytes: refused without a build, although no table of that size was
-  // ever built (the former rule, the largest built so far, would have admitted it).
+  // ever built (the former rule, the largest built so far, would have admitted it). Beside the
+  // pinned default it could never fit in 4 x 1234 bytes: 413, no Retry-After.
   const int builds_before = clearsky::testing::test_sky_builds().load();
   try {
     store.model(f, with_gain(5.0));
-    ADD_FAILURE() << "expected 503";
+    ADD_FAILURE() << "expected 413";
   } catch (const api::ApiError& e) {
-    EXPECT_EQ(e.status(), 503);
+    EXPECT_EQ(e.status(), 413);
+    EXPECT_EQ(e.code(), "too_large");
     EXPECT_EQ(e.parameter(), "table_memory");
-    EXPECT_EQ(e.retry_after_s(), 3);
+    EXPECT_EQ(e.retry_after_s(), 0);
     EXPECT_NE(std::string(e.what()).find(std::to_string(5 * kTestSkyBytes)), std::string::npos)
         << e.what();
+    EXPECT_NE(std::string(e.what()).find("--table-memory"), std::string::npos) << e.what();
   }
   EXPECT_EQ(clearsky::testing::test_sky_builds().load(), builds_before);
   EXPECT_EQ(store.accounted_bytes(), kTestSkyBytes);
