@@ -289,25 +289,52 @@ std::vector<Vec3> active_cell_centres(const DomeProblem& p) {
 }
 
 // Optical lengths between every pair of active ring cells and every azimuth offset, kept for
-// all orders (they do not change): (target, source, delta) -> (l_R, l_M); l_R < 0 marks a
-// blocked path or the target itself. The optical length between target t in sector 0 and
-// source s in sector delta is, by rotation about the vertical, that between s in sector 0 and
-// t in sector -delta: each unordered pair is integrated once. Task t writes rows (t, s >= t)
-// and (s > t, t) only.
-std::vector<float> pair_optical_lengths(const DomeProblem& p, const std::vector<Vec3>& positions) {
+// all orders (they do not change). The optical length between target t in sector 0 and source
+// s in sector delta is, by rotation about the vertical, that between s in sector 0 and t in
+// sector -delta, so only the pairs t <= s are kept (a packed upper triangle, half the memory of
+// the full matrix: this is the largest array of a sun's precomputation) and the pairs s < t are
+// read from (s, t) at the mirrored offset. Each pair holds n_phi (l_R, l_M) float pairs;
+// l_R < 0 marks a blocked path or the target itself.
+class PairOpticalLengths {
+ public:
+  PairOpticalLengths(std::size_t active_cells, int n_phi)
+      : n_active_(active_cells),
+        n_phi_(n_phi),
+        lengths_(active_cells * (active_cells + 1) / 2 * static_cast<std::size_t>(n_phi) * 2) {}
+
+  // The n_phi (l_R, l_M) pairs from target t (t <= s) to source s, by azimuth offset.
+  float* row(std::size_t t, std::size_t s) { return lengths_.data() + offset(t, s); }
+  // (l_R, l_M) from target t in sector 0 to source s in sector delta, for any t and s.
+  const float* at(std::size_t t, std::size_t s, int delta) const {
+    if (t <= s) return lengths_.data() + offset(t, s) + 2 * static_cast<std::size_t>(delta);
+    const int mirrored = (n_phi_ - delta) % n_phi_;
+    return lengths_.data() + offset(s, t) + 2 * static_cast<std::size_t>(mirrored);
+  }
+
+ private:
+  // Rows t of the packed triangle hold the sources s = t .. n_active - 1.
+  std::size_t offset(std::size_t t, std::size_t s) const {
+    const std::size_t pairs_before_row = t * (2 * n_active_ - t + 1) / 2;  // sum of n - r, r < t
+    return (pairs_before_row + (s - t)) * static_cast<std::size_t>(n_phi_) * 2;
+  }
+
+  std::size_t n_active_;
+  int n_phi_;
+  std::vector<float> lengths_;
+};
+
+PairOpticalLengths pair_optical_lengths(const DomeProblem& p, const std::vector<Vec3>& positions) {
   const auto& layers = p.grid.layers();
   const std::size_t n_active = p.active_count();
   const int n_phi = p.n_phi;
-  std::vector<float> pair_lengths(n_active * n_active * n_phi * 2);
+  PairOpticalLengths pair_lengths(n_active, n_phi);
   parallel_for(
       n_active,
       [&](std::size_t t) {
         p.context.check_cancelled();
         for (std::size_t s = t; s < n_active; ++s) {
-          float* forward = pair_lengths.data() + (t * n_active + s) * n_phi * 2;
-          float* backward = pair_lengths.data() + (s * n_active + t) * n_phi * 2;
+          float* forward = pair_lengths.row(t, s);
           for (int delta = 0; delta < n_phi; ++delta) {
-            const int mirrored = (n_phi - delta) % n_phi;
             float rayleigh = -1.0f;
             float mie = 0.0f;
             if (!(s == t && delta == 0)) {
@@ -318,8 +345,6 @@ std::vector<float> pair_optical_lengths(const DomeProblem& p, const std::vector<
             }
             forward[2 * delta] = rayleigh;
             forward[2 * delta + 1] = mie;
-            backward[2 * mirrored] = rayleigh;
-            backward[2 * mirrored + 1] = mie;
           }
         }
       },
@@ -387,7 +412,7 @@ std::vector<float> padded_floats(const Spectrum& spectrum, std::size_t np) {
 // counts finished targets over all orders (`done` of `total_targets`).
 void gather_scattered_power(const DomeProblem& p, bool second, const SourceRadiance& source,
                             const std::vector<Vec3>& positions,
-                            const std::vector<float>& pair_lengths, CellSpectra& current,
+                            const PairOpticalLengths& pair_lengths, CellSpectra& current,
                             std::atomic<std::size_t>& done, std::size_t total_targets) {
   const auto& cells = p.grid.ring_cells();
   const auto& active = p.grid.active();
@@ -418,15 +443,15 @@ void gather_scattered_power(const DomeProblem& p, bool second, const SourceRadia
         }
         for (std::size_t s = 0; s < n_active; ++s) {
           const RingCell& source_cell = cells[active[s]];
-          const float* lengths = pair_lengths.data() + (t * n_active + s) * n_phi * 2;
           for (int delta = 0; delta < n_phi; ++delta) {
+            const float* lengths = pair_lengths.at(t, s, delta);
             const Vec3 x = positions[s * n_phi + delta];
             const Vec3 d = x - target0;
             const double distance2 = dot(d, d);
             inverse_distance[delta] =
                 distance2 > 0.0 ? static_cast<float>(1.0 / std::sqrt(distance2)) : 0.0f;
             float* k = kernel.data() + static_cast<std::size_t>(delta) * np;
-            if (lengths[2 * delta] < 0.0f) {
+            if (lengths[0] < 0.0f) {
               std::fill(k, k + np, 0.0f);
               continue;
             }
@@ -434,8 +459,8 @@ void gather_scattered_power(const DomeProblem& p, bool second, const SourceRadia
             // code computes it: (volume / radial width) / (4 pi distance^2).
             const auto solid_angle_fraction = static_cast<float>(
                 source_cell.volume_m3 / (source_cell.radial_width_m * 4.0 * kPi * distance2));
-            transmittance(sigma_r_f.data(), sigma_m_ext_f.data(), lengths[2 * delta],
-                          lengths[2 * delta + 1], solid_angle_fraction, k, np);
+            transmittance(sigma_r_f.data(), sigma_m_ext_f.data(), lengths[0], lengths[1],
+                          solid_angle_fraction, k, np);
           }
           std::fill(acc.begin(), acc.end(), 0.0f);
           if (second) {
@@ -522,14 +547,12 @@ void interpolate_between_gathering_shells(const DomeProblem& p, CellSpectra& cur
   }
 }
 
-// Adds the order just computed (scaled) to the isotropic power and makes it the source of the
-// next order; clears `current` for it.
-void add_order(double scale, CellSpectra& current, CellSpectra& iso_power, CellSpectra& last) {
-  for (std::size_t x = 0; x < current.values.size(); ++x) {
-    const double value = current.values[x] * scale;
-    iso_power.values[x] += value;
-    last.values[x] = value;
-    current.values[x] = 0.0;
+// Scales the order just computed and adds it to the isotropic power; the scaled order stays in
+// `order` as the source of the next one.
+void add_order(double scale, CellSpectra& order, CellSpectra& iso_power) {
+  for (std::size_t x = 0; x < order.values.size(); ++x) {
+    order.values[x] *= scale;
+    iso_power.values[x] += order.values[x];
   }
 }
 
@@ -541,21 +564,25 @@ void multiple_scattering(const DomeProblem& p, CellSpectra& iso_power,
   if (orders < 2) return;
   const std::size_t cell_count = p.grid.cell_count();
   const std::size_t n_active = p.active_count();
-  CellSpectra last(cell_count, p.n), current(cell_count, p.n);
+  // One array holds the last order (the source of the next) and then the next: the source is
+  // read into `source` and its power ratio taken before the gathering overwrites it (every
+  // gathering cell by the gathering, every other cell by the interpolation), so the order
+  // being computed needs no array of its own (one cell_count x n array less at the peak).
+  CellSpectra order_power(cell_count, p.n);
   const std::vector<Vec3> positions = active_cell_centres(p);
-  const std::vector<float> pair_lengths = pair_optical_lengths(p, positions);
+  const PairOpticalLengths pair_lengths = pair_optical_lengths(p, positions);
   SourceRadiance source;
   source.stride = static_cast<std::size_t>(2 * p.n_phi) * p.np;
   source.iso.resize(n_active * source.stride);
   std::atomic<std::size_t> done{0};
   for (int order = 2; order <= orders; ++order) {
     const bool second = order == 2;
-    emitted_radiance(p, second, iso_power, mie_power, last, source);
-    gather_scattered_power(p, second, source, positions, pair_lengths, current, done,
+    emitted_radiance(p, second, iso_power, mie_power, order_power, source);
+    const double scale = all_to_gathering_power_ratio(p, second, iso_power, mie_power, order_power);
+    gather_scattered_power(p, second, source, positions, pair_lengths, order_power, done,
                            n_active * (orders - 1));
-    const double scale = all_to_gathering_power_ratio(p, second, iso_power, mie_power, last);
-    interpolate_between_gathering_shells(p, current);
-    add_order(scale, current, iso_power, last);
+    interpolate_between_gathering_shells(p, order_power);
+    add_order(scale, order_power, iso_power);
   }
 }
 
