@@ -18,6 +18,7 @@
 
 #include "server/tables/day_sun_states.h"
 #include "server/tables/table_store.h"
+#include "tests/support/constant_sky_model.h"
 
 namespace clearsky::server {
 namespace {
@@ -49,26 +50,6 @@ const ModelDescriptor& recording_descriptor() {
   return d;
 }
 
-class ConstantSky final : public SkyModel {
- public:
-  ConstantSky(const ModelDescriptor& descriptor, const ModelConfig& config)
-      : SkyModel(config), descriptor_(descriptor) {}
-  const ModelDescriptor& descriptor() const override { return descriptor_; }
-
- protected:
-  void compute_sky_radiance(const SunState&, const Viewpoint&, std::span<const ViewDirection> views,
-                            SpectralBatch& out) const override {
-    for (std::size_t i = 0; i < views.size(); ++i)
-      for (double& v : out.spectrum(i)) v = 0.01;
-  }
-  Spectrum compute_sun_irradiance(const SunState&, const Viewpoint&) const override {
-    return Spectrum(wavelengths().size(), 1.0);
-  }
-
- private:
-  const ModelDescriptor& descriptor_;
-};
-
 std::shared_ptr<const SkyModel> create_recording(const ModelConfig& config,
                                                  const PrecomputeContext&) {
   Policies p;
@@ -77,7 +58,7 @@ std::shared_ptr<const SkyModel> create_recording(const ModelConfig& config,
   worker.join();
   std::lock_guard lock(policies_mutex);
   build_policies()[static_cast<int>(option_or_default(recording_descriptor(), config, "tag"))] = p;
-  return std::make_shared<const ConstantSky>(recording_descriptor(), config);
+  return std::make_shared<const testing::ConstantSky>(recording_descriptor(), config);
 }
 
 ModelConfig tagged(int tag) {
@@ -156,10 +137,9 @@ const ModelDescriptor& bucketed_descriptor() {
   return d;
 }
 
-class BucketedSky final : public SkyModel {
+class BucketedSky final : public testing::ConstantSky {
  public:
-  explicit BucketedSky(const ModelConfig& config) : SkyModel(config) {}
-  const ModelDescriptor& descriptor() const override { return bucketed_descriptor(); }
+  explicit BucketedSky(const ModelConfig& config) : ConstantSky(bucketed_descriptor(), config) {}
 
  protected:
   std::shared_ptr<const SunState> compute_sun_state(
@@ -173,14 +153,6 @@ class BucketedSky final : public SkyModel {
     std::lock_guard lock(policies_mutex);
     sun_records().push_back(record);
     return std::make_shared<const SunState>(sun);
-  }
-  void compute_sky_radiance(const SunState&, const Viewpoint&, std::span<const ViewDirection> views,
-                            SpectralBatch& out) const override {
-    for (std::size_t i = 0; i < views.size(); ++i)
-      for (double& v : out.spectrum(i)) v = 0.01;
-  }
-  Spectrum compute_sun_irradiance(const SunState&, const Viewpoint&) const override {
-    return Spectrum(wavelengths().size(), 1.0);
   }
 };
 

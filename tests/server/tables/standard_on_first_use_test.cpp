@@ -16,6 +16,7 @@
 #include "models/registry.h"
 #include "server/tables/start_builds.h"
 #include "server/tables/table_store.h"
+#include "tests/support/constant_sky_model.h"
 
 namespace clearsky::server {
 namespace {
@@ -63,22 +64,6 @@ const ModelDescriptor& first_use_descriptor() {
   return d;
 }
 
-class ConstantSky final : public SkyModel {
- public:
-  explicit ConstantSky(const ModelConfig& config) : SkyModel(config) {}
-  const ModelDescriptor& descriptor() const override { return first_use_descriptor(); }
-
- protected:
-  void compute_sky_radiance(const SunState&, const Viewpoint&, std::span<const ViewDirection> views,
-                            SpectralBatch& out) const override {
-    for (std::size_t i = 0; i < views.size(); ++i)
-      for (double& v : out.spectrum(i)) v = 0.01;
-  }
-  Spectrum compute_sun_irradiance(const SunState&, const Viewpoint&) const override {
-    return Spectrum(wavelengths().size(), 1.0);
-  }
-};
-
 std::atomic<bool> release_standard{false};
 std::atomic<int> standard_builds{0};
 std::atomic<int> standard_policy{-1};
@@ -93,7 +78,7 @@ std::shared_ptr<const SkyModel> create_first_use(const ModelConfig& config,
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
   }
-  return std::make_shared<const ConstantSky>(config);
+  return std::make_shared<const testing::ConstantSky>(first_use_descriptor(), config);
 }
 
 TEST(StandardOnFirstUse, TheFirstStandardRequestIsAnsweredFromTheDraftWhileTheStandardBuilds) {

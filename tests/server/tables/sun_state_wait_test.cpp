@@ -8,6 +8,7 @@
 
 #include "api/error/api_error.h"
 #include "server/tables/table_store.h"
+#include "tests/support/constant_sky_model.h"
 
 namespace clearsky::server {
 namespace {
@@ -37,10 +38,9 @@ const ModelDescriptor& slow_sun_descriptor() {
 }
 
 // Keeps its prepared states, like the per-sun caches of Haber and Nishita96.
-class SlowSunSky final : public SkyModel {
+class SlowSunSky final : public testing::ConstantSky {
  public:
-  explicit SlowSunSky(const ModelConfig& config) : SkyModel(config) {}
-  const ModelDescriptor& descriptor() const override { return slow_sun_descriptor(); }
+  explicit SlowSunSky(const ModelConfig& config) : ConstantSky(slow_sun_descriptor(), config) {}
 
  protected:
   std::shared_ptr<const SunState> compute_sun_state(const SunPosition& sun,
@@ -52,14 +52,6 @@ class SlowSunSky final : public SkyModel {
       state_ = std::make_shared<const SunState>(sun);
     }
     return state_;
-  }
-  void compute_sky_radiance(const SunState&, const Viewpoint&, std::span<const ViewDirection> views,
-                            SpectralBatch& out) const override {
-    for (std::size_t i = 0; i < views.size(); ++i)
-      for (double& v : out.spectrum(i)) v = 0.01;
-  }
-  Spectrum compute_sun_irradiance(const SunState&, const Viewpoint&) const override {
-    return Spectrum(wavelengths().size(), 1.0);
   }
 
  private:

@@ -9,21 +9,13 @@
 #include "storage/repositories/irradiance_sample_repository.h"
 #include "storage/schema/migrations.h"
 #include "tests/support/database_at_schema_version.h"
+#include "tests/support/rhodes_irradiance_instants.h"
 
 namespace clearsky::storage {
 namespace {
 
 using clearsky::testing::database_at_schema_version;
-
-IrradianceSample rhodes_sample(double time_utc_s) {
-  IrradianceSample sample;
-  sample.time_utc_s = time_utc_s;
-  sample.utc_offset_minutes = -240;
-  sample.latitude_deg = 42.443449;
-  sample.longitude_deg = -76.481962;
-  sample.elevation_m = 250;
-  return sample;
-}
+using clearsky::testing::rhodes_hall_sample;
 
 TEST(SchemaVersion10, MigratesAVersion8DatabaseWithItsDatasetsOfKindSkyRadiance) {
   Database db = database_at_schema_version(8);
@@ -44,10 +36,10 @@ TEST(SchemaVersion10, StoresASeriesWithMissingComponentsInTimeOrder) {
   DatasetRepository datasets(db);
   const std::int64_t id =
       datasets.find_or_create("roof", "irradiance-csv", kBroadbandIrradianceKind);
-  IrradianceSample later = rhodes_sample(1369661400 + 60);
+  IrradianceSample later = rhodes_hall_sample(1369661400 + 60);
   later.ghi_w_m2 = 700.5;
   later.averaging_s = 60;
-  IrradianceSample first = rhodes_sample(1369661400);
+  IrradianceSample first = rhodes_hall_sample(1369661400);
   first.dhi_w_m2 = 80;
   first.dni_w_m2 = 850;
   IrradianceSampleRepository(db).insert(id, {later, first});
@@ -76,7 +68,7 @@ TEST(SchemaVersion10, RefusesASampleWithoutAnyComponentAndADatasetOfAnotherKind)
   DatasetRepository datasets(db);
   const std::int64_t id =
       datasets.find_or_create("roof", "irradiance-csv", kBroadbandIrradianceKind);
-  EXPECT_THROW(IrradianceSampleRepository(db).insert(id, {rhodes_sample(0)}), SqliteError);
+  EXPECT_THROW(IrradianceSampleRepository(db).insert(id, {rhodes_hall_sample(0)}), SqliteError);
   EXPECT_THROW(datasets.find_or_create("roof", "kider2014"), ImportConflict);
   datasets.find_or_create("sky", "kider2014");
   EXPECT_THROW(datasets.find_or_create("sky", "irradiance-csv", kBroadbandIrradianceKind),
@@ -88,7 +80,7 @@ TEST(SchemaVersion10, SamplesGoWithTheirDataset) {
   DatasetRepository datasets(db);
   const std::int64_t id =
       datasets.find_or_create("roof", "irradiance-csv", kBroadbandIrradianceKind);
-  IrradianceSample sample = rhodes_sample(1369661400);
+  IrradianceSample sample = rhodes_hall_sample(1369661400);
   sample.ghi_w_m2 = 650;
   IrradianceSampleRepository(db).insert(id, {sample, sample});
   EXPECT_TRUE(datasets.remove("roof"));
