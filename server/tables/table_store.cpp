@@ -16,6 +16,7 @@
 #include "models/core/numeric.h"
 #include "server/memory/heap_bounds.h"
 #include "server/tables/background_priority.h"
+#include "server/tables/recent_sun_states.h"
 
 namespace clearsky::server {
 
@@ -278,8 +279,15 @@ std::shared_ptr<const SunState> TableStore::sun_state(const std::shared_ptr<cons
   // SunState is just the sun. A second cache here would only defeat the models' memory bound.
   // A dark sun (ModelCapabilities::dark_beyond_sun_zenith_deg) builds nothing: its state is
   // made at once.
-  if (!model->descriptor().capabilities.per_sun_precomputation || model->sun_is_dark(sun))
-    return model->prepare_sun(sun);
+  if (model->sun_is_dark(sun)) return model->prepare_sun(sun);
+  if (!model->descriptor().capabilities.per_sun_precomputation) {
+    // A state made for each request: the thread's last few are kept (recent_sun_states.h).
+    RecentSunStates& recent = RecentSunStates::of_this_thread();
+    if (auto kept = recent.find(model, sun)) return kept;
+    auto state = model->prepare_sun(sun);
+    recent.keep(model, sun, state);
+    return state;
+  }
   // A costly preparation runs on its own thread so that the request waits at most build_wait,
   // like a table build; the thread keeps the model alive and fills the model's cache, where a
   // later request finds the state.
@@ -393,11 +401,19 @@ TableStore::ServedModel TableStore::model_or_fallback(const ModelFactory& factor
                                                       const ModelConfig* fallback,
                                                       const api::ModelRequester& requester) const {
   if (fallback != nullptr) {
-    std::lock_guard lock(mutex_);
+    // The configuration's text (the default's is kept: canonical_text) is written outside the
+    // lock; the draft's only while the wanted tables are not ready. Writing both texts on every
+    // standard request, under the lock, was over a third of a radiance request's instructions
+    // (docs/performance.md "A radiance request through the server").
     const ModelConfig wanted_config = canonical_config(*factory.descriptor, config);
-    const std::string canonical = wanted_config.canonical_string();
+    const std::string canonical = canonical_text(wanted_config);
     const std::string key = entry_key(factory, canonical);
+    std::unique_lock lock(mutex_);
     auto wanted = entries_.find(key);
+    if (wanted != entries_.end() && wanted->second->status == api::ModelState::Status::ready) {
+      lock.unlock();
+      return {model(factory, config, requester), false};
+    }
     const auto draft = entries_.find(entry_key(factory, *fallback));
     const bool draft_ready =
         draft != entries_.end() && draft->second->status == api::ModelState::Status::ready;
