@@ -8,9 +8,9 @@
 #include <string>
 
 #include "models/atmosphere/atmosphere_parameter_table.h"
-#include "models/core/fast_exp.h"
 #include "models/core/fit_domain.h"
 #include "models/core/quadrature.h"
+#include "models/hosek/hosek_distributions.h"
 #include "models/spectral/reference_spectra.h"
 
 namespace clearsky {
@@ -80,9 +80,9 @@ ModelDescriptor make_descriptor() {
   };
 }
 
-// The cooked distributions of one sun position, stored coefficient by coefficient (one
-// array per coefficient A..I over all distributions) so that the per-view loops vectorise;
-// each distribution is evaluated once per view, then accumulated into the grid wavelengths.
+// The cooked distributions of one sun position, stored coefficient by coefficient
+// (hosek_distributions.h) so that the per-view loops vectorise; each distribution is evaluated
+// once per view, then accumulated into the grid wavelengths.
 class HosekSunState final : public SunState {
  public:
   struct Contribution {
@@ -94,18 +94,15 @@ class HosekSunState final : public SunState {
   explicit HosekSunState(const SunPosition& sun)
       : SunState(sun), sun_direction(sun.unit_vector()) {}
   std::size_t memory_bytes() const override {
-    return sizeof(*this) + size() * sizeof(double) * hosek::kCoefficientCount +
+    return sizeof(*this) + distributions.memory_bytes() +
            contributions.capacity() * sizeof(Contribution);
   }
 
-  std::size_t size() const { return coefficient[0].size(); }
-  std::uint32_t add(const hosek::Coefficients& c) {
-    for (int k = 0; k < hosek::kCoefficientCount; ++k) coefficient[k].push_back(c[k]);
-    return static_cast<std::uint32_t>(size() - 1);
-  }
+  std::size_t size() const { return distributions.size(); }
+  std::uint32_t add(const hosek::Coefficients& c) { return distributions.add(c); }
 
   Vec3 sun_direction;  // once per sun, not per query
-  std::array<std::vector<double>, hosek::kCoefficientCount> coefficient;
+  hosek::Distributions distributions;
   std::vector<Contribution> contributions;
 };
 
@@ -234,29 +231,13 @@ void HosekModel::fit_radiance(const SunState& sun, bool clamp_negative,
   const HosekSunState& state = as_hosek_state(sun);
   const Vec3& sun_direction = state.sun_direction;
   const std::size_t n = state.size();
-  const auto& c = state.coefficient;
-  // hosek::distribution() over all distributions at once, in passes the compiler vectorises,
-  // the exponentials included (fast_exp.h: the gradation and circumsolar exponents of every
-  // distribution side by side in one array, one vector pass).
+  // hosek::distribution() over all distributions at once, in vector passes
+  // (hosek_distributions.h), the exponentials included (fast_exp.h).
   std::vector<double> exponents(2 * n), f(n);
-  double* gradation = exponents.data();
-  double* peak = exponents.data() + n;
   for (std::size_t i = 0; i < views.size(); ++i) {
     const Vec3 d = views[i].unit_vector();
     const hosek::ViewTerms v = hosek::view_terms(d.z, dot(d, sun_direction));
-    for (std::size_t t = 0; t < n; ++t) {
-      gradation[t] = c[1][t] * v.inverse_cos_theta_plus;
-      peak[t] = c[4][t] * v.gamma_rad;
-    }
-    exp_in_place(exponents.data(), exponents.size());
-    for (std::size_t t = 0; t < n; ++t) {
-      const double g = c[8][t];
-      const double mie_base = 1.0 + g * g - 2.0 * g * v.cos_gamma;
-      const double mie = (1.0 + v.cos2_gamma) / (mie_base * std::sqrt(mie_base));
-      f[t] =
-          (1.0 + c[0][t] * gradation[t]) * (c[2][t] + c[3][t] * peak[t] + c[5][t] * v.cos2_gamma +
-                                            c[6][t] * mie + c[7][t] * v.sqrt_cos_theta);
-    }
+    state.distributions.evaluate(v, exponents.data(), f.data());
     auto spectrum = out.spectrum(i);
     std::fill(spectrum.begin(), spectrum.end(), 0.0);
     for (const auto& contribution : state.contributions) {
