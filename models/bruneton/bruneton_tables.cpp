@@ -22,6 +22,8 @@
 #include <utility>
 
 #include "models/atmosphere/phase_functions.h"
+#include "models/bruneton/density_weights.h"
+#include "models/bruneton/scattering_transport.h"
 #include "models/core/invalid_input.h"
 #include "models/core/parallel.h"
 
@@ -507,115 +509,6 @@ struct Builder {
     }
   }
 
-  // The scalar weights of one texel of J: for each direction (theta_i, phi_p), its lookup's
-  // two nu slices get (1 - f) and f times the phase towards the view (times, for the first
-  // order, the phase of the single scattering), and the ground columns seen in that direction
-  // get their share. Same terms as the 2008 code's loop; ground_range[i] receives the columns
-  // touched at zenith i.
-  template <bool First>
-  void accumulate_weights(int n_theta, int n_phi, double sx, double sy, double mu_s, double r,
-                          const std::vector<double>& wx, const std::vector<double>& wy,
-                          const std::vector<double>& cos_t, const double* phase_r,
-                          const double* phase_m, const std::vector<char>& ground,
-                          const std::vector<double>& d_ground, int n_e, std::vector<double>& a_r,
-                          std::vector<double>& a_m, std::vector<double>& b_r,
-                          std::vector<double>& b_m, std::vector<double>& g_r,
-                          std::vector<double>& g_m,
-                          std::vector<std::pair<int, int>>& ground_range) const {
-    const int n_nu = res.nu;
-    for (int i = 0; i < n_theta; ++i) {
-      const bool sees_ground = ground[i] != 0;
-      const double z = mu_s * cos_t[i];
-      double* ar = a_r.data() + static_cast<std::size_t>(i) * n_nu;
-      double* am = a_m.data() + static_cast<std::size_t>(i) * n_nu;
-      double* br = First ? b_r.data() + static_cast<std::size_t>(i) * n_nu : nullptr;
-      double* bm = First ? b_m.data() + static_cast<std::size_t>(i) * n_nu : nullptr;
-      int lowest = n_e, highest = -1;
-      // Consecutive azimuths mostly fall in the same two nu slices: their sums are carried in
-      // registers while the slices stay the same and written back when they change. Every
-      // slot receives the same additions in the same order as with one store per term (the
-      // result of a floating-point sum depends on its order), without a store and a reload
-      // per term.
-      constexpr int kSums = First ? 4 : 2;
-      double* const sums[4] = {ar, am, br, bm};
-      double low[4] = {}, high[4] = {};
-      int run = -1;  // the lower slice of the pair held in low/high, -1 for none
-      auto write_back = [&] {
-        if (run < 0) return;
-        for (int q = 0; q < kSums; ++q) {
-          sums[q][run] = low[q];
-          sums[q][run + 1] = high[q];
-        }
-        run = -1;
-      };
-      for (int p = 0; p < n_phi; ++p) {
-        const std::size_t d = static_cast<std::size_t>(i) * n_phi + p;
-        const double nu1 = sx * wx[d] + sy * wy[d] + z;
-        const Axis slice = nu_axis_4d(nu1, res);
-        double pr = phase_r[d];
-        double pm = phase_m[d];
-        const double f1 = 1.0 - slice.f;
-        const double f2 = slice.f;
-        double term_low[4], term_high[4];
-        if constexpr (First) {
-          // Single scattering gets its phase functions here (2008 code, first iteration).
-          const double p1r = rayleigh_phase(nu1);
-          const double p1m = k.mie_phase(nu1);
-          term_low[0] = f1 * p1r * pr;
-          term_high[0] = f2 * p1r * pr;
-          term_low[1] = f1 * p1r * pm;
-          term_high[1] = f2 * p1r * pm;
-          term_low[2] = f1 * p1m * pr;
-          term_high[2] = f2 * p1m * pr;
-          term_low[3] = f1 * p1m * pm;
-          term_high[3] = f2 * p1m * pm;
-        } else {
-          term_low[0] = f1 * pr;
-          term_high[0] = f2 * pr;
-          term_low[1] = f1 * pm;
-          term_high[1] = f2 * pm;
-        }
-        if (slice.i1 != slice.i0 + 1) {
-          // The last slice alone (its weight f2 is zero): straight to memory.
-          write_back();
-          for (int q = 0; q < kSums; ++q) {
-            sums[q][slice.i0] += term_low[q];
-            sums[q][slice.i1] += term_high[q];
-          }
-        } else {
-          if (slice.i0 != run) {
-            write_back();
-            run = slice.i0;
-            for (int q = 0; q < kSums; ++q) {
-              low[q] = sums[q][run];
-              high[q] = sums[q][run + 1];
-            }
-          }
-          for (int q = 0; q < kSums; ++q) {
-            low[q] += term_low[q];
-            high[q] += term_high[q];
-          }
-        }
-        if (sees_ground) {
-          // Light reflected by the ground point seen in direction w (Lambertian, delta E of
-          // the previous order at the ground, for the sun at gnormal . s).
-          const double mu_ground = (r * mu_s + d_ground[i] * nu1) / g.bottom_m;
-          const Axis e = texture_axis(irradiance_u_mu_s(mu_ground, res.sun), n_e);
-          const std::size_t c0 = static_cast<std::size_t>(i) * n_e + e.i0;
-          const std::size_t c1 = static_cast<std::size_t>(i) * n_e + e.i1;
-          g_r[c0] += (1.0 - e.f) * pr;
-          g_r[c1] += e.f * pr;
-          g_m[c0] += (1.0 - e.f) * pm;
-          g_m[c1] += e.f * pm;
-          lowest = std::min(lowest, e.i0);
-          highest = std::max(highest, e.i1);
-        }
-      }
-      write_back();
-      ground_range[i] = {lowest, highest};
-    }
-  }
-
   void density_column(const Source& source, int layer, int ms, double r, float density_r,
                       float density_m, const SphereDirections& sphere,
                       const std::vector<double>& layer_phase_r,
@@ -623,22 +516,33 @@ struct Builder {
                       const std::vector<double>& d_ground, const std::vector<float>& ground_light,
                       int n_e, float* layer_values) const {
     const std::vector<double>& cos_t = sphere.cos_t;
-    const std::vector<double>& wx = sphere.wx;
-    const std::vector<double>& wy = sphere.wy;
     const int n_theta = static_cast<int>(cos_t.size());
-    const int n_phi = sphere.n_phi;
     const int n_nu = res.nu;
     const double mu_s = std::clamp(texel_mu_s(ms, res.mu_s, res.sun), -1.0, 1.0);
     std::vector<float> profile_a, profile_b;
     build_profiles(source, r, mu_s, cos_t, profile_a, profile_b);
-    const std::size_t n_dir = wx.size();
-    // Weights of the profiles (R: with the Rayleigh phase of the scattering towards v; M:
-    // with the Mie phase) and of the ground columns.
-    const std::size_t n_profile = static_cast<std::size_t>(n_theta) * n_nu;
-    const std::size_t n_ground = static_cast<std::size_t>(n_theta) * n_e;
-    std::vector<double> a_r(n_profile), a_m(n_profile), b_r(n_profile), b_m(n_profile);
-    std::vector<double> g_r(n_ground, 0.0), g_m(n_ground, 0.0);  // kept zero outside ground_range
-    std::vector<std::pair<int, int>> ground_range(n_theta);
+    const std::size_t n_dir = sphere.wx.size();
+    DensitySphere shared;
+    shared.n_theta = n_theta;
+    shared.n_phi = sphere.n_phi;
+    shared.n_nu = n_nu;
+    shared.n_e = n_e;
+    shared.cos_t = cos_t.data();
+    shared.wx = sphere.wx.data();
+    shared.wy = sphere.wy.data();
+    shared.ground = ground.data();
+    shared.d_ground = d_ground.data();
+    shared.r = r;
+    shared.mu_s = mu_s;
+    shared.bottom_m = g.bottom_m;
+    shared.sun = res.sun;
+    shared.mie_phase = &k.mie_phase;
+    shared.first = source.first();
+    // The weights of the profiles (R: with the Rayleigh phase of the scattering towards v; M:
+    // with the Mie phase) and of the ground columns, for the row's nu slices at once.
+    DensityWeights weights;
+    const int lanes = (n_nu + 3) / 4 * 4;
+    std::vector<double> sx(lanes, 0.0), sy(lanes, 0.0);
     std::vector<float> sum_r(stride), sum_m(stride);
     RowList<float> rows_r, rows_m;
     const std::size_t texels_per_row = static_cast<std::size_t>(n_nu) * res.mu_s;
@@ -646,47 +550,43 @@ struct Builder {
       const Layer l = layer_geometry(layer, res.r, g);
       const double mu = std::clamp(texel_mu(jm, res.mu, l, g), -1.0, 1.0);
       const double vx = std::sqrt(1.0 - mu * mu);
-      const double* phase_r = layer_phase_r.data() + static_cast<std::size_t>(jm) * n_dir;
-      const double* phase_m = layer_phase_m.data() + static_cast<std::size_t>(jm) * n_dir;
+      shared.phase_r = layer_phase_r.data() + static_cast<std::size_t>(jm) * n_dir;
+      shared.phase_m = layer_phase_m.data() + static_cast<std::size_t>(jm) * n_dir;
       for (int knu = 0; knu < n_nu; ++knu) {
         const double var = std::sqrt(1.0 - mu * mu) * std::sqrt(1.0 - mu_s * mu_s);
         const double nu = std::clamp(texel_nu(knu, n_nu), mu_s * mu - var, mu_s * mu + var);
-        const double sx = vx == 0.0 ? 0.0 : (nu - mu_s * mu) / vx;
-        const double sy = std::sqrt(std::max(0.0, 1.0 - sx * sx - mu_s * mu_s));
-        std::fill(a_r.begin(), a_r.end(), 0.0);
-        std::fill(a_m.begin(), a_m.end(), 0.0);
-        if (source.first()) {
-          std::fill(b_r.begin(), b_r.end(), 0.0);
-          std::fill(b_m.begin(), b_m.end(), 0.0);
-          accumulate_weights<true>(n_theta, n_phi, sx, sy, mu_s, r, wx, wy, cos_t, phase_r, phase_m,
-                                   ground, d_ground, n_e, a_r, a_m, b_r, b_m, g_r, g_m,
-                                   ground_range);
-        } else {
-          accumulate_weights<false>(n_theta, n_phi, sx, sy, mu_s, r, wx, wy, cos_t, phase_r,
-                                    phase_m, ground, d_ground, n_e, a_r, a_m, b_r, b_m, g_r, g_m,
-                                    ground_range);
-        }
+        sx[knu] = vx == 0.0 ? 0.0 : (nu - mu_s * mu) / vx;
+        sy[knu] = std::sqrt(std::max(0.0, 1.0 - sx[knu] * sx[knu] - mu_s * mu_s));
+      }
+      weights.prepare(n_nu, shared);
+      density_weights(shared, sx.data(), sy.data(), n_nu, weights);
+      for (int knu = 0; knu < n_nu; ++knu) {
         rows_r.clear();
         rows_m.clear();
-        for (std::size_t s = 0; s < n_profile; ++s) {
-          const float* pa = profile_a.data() + s * stride;
-          rows_r.add(pa, a_r[s]);
-          rows_m.add(pa, a_m[s]);
-          if (source.first()) {
-            const float* pb = profile_b.data() + s * stride;
-            rows_r.add(pb, b_r[s]);
-            rows_m.add(pb, b_m[s]);
+        for (int i = 0; i < n_theta; ++i) {
+          for (int kk = 0; kk < n_nu; ++kk) {
+            const std::size_t s = static_cast<std::size_t>(i) * n_nu + kk;
+            const std::size_t slot = weights.slot(knu, i, kk);
+            const float* pa = profile_a.data() + s * stride;
+            rows_r.add(pa, weights.a_r[slot]);
+            rows_m.add(pa, weights.a_m[slot]);
+            if (source.first()) {
+              const float* pb = profile_b.data() + s * stride;
+              rows_r.add(pb, weights.b_r[slot]);
+              rows_m.add(pb, weights.b_m[slot]);
+            }
           }
         }
         for (int i = 0; i < n_theta; ++i) {
-          if (ground_range[i].first > ground_range[i].second) continue;
-          for (int col = ground_range[i].first; col <= ground_range[i].second; ++col) {
+          const std::pair<int, int> range = weights.range(knu, i);
+          for (int col = range.first; col <= range.second; ++col) {
             const std::size_t c = static_cast<std::size_t>(i) * n_e + col;
+            const std::size_t w = weights.column(knu, i, col);
             const float* light = ground_light.data() + c * stride;
-            rows_r.add(light, g_r[c]);
-            rows_m.add(light, g_m[c]);
-            g_r[c] = 0.0;
-            g_m[c] = 0.0;
+            rows_r.add(light, weights.g_r[w]);
+            rows_m.add(light, weights.g_m[w]);
+            weights.g_r[w] = 0.0;
+            weights.g_m[w] = 0.0;
           }
         }
         rows_r.sum(stride, sum_r.data());
@@ -780,25 +680,26 @@ struct Builder {
         mu_axis[i] = mu_axis_4d(radius[i], mu_i, res, g);
       }
       const std::size_t texels = out_table.row_texels();
-      std::vector<float> values(texels * stride, 0.0f), sample(stride);
-      RowList<std::uint16_t> list;
+      std::vector<float> values(texels * stride, 0.0f), view_weight(stride);
+      std::vector<double> mu_s(res.mu_s);
+      for (int ms = 0; ms < res.mu_s; ++ms) mu_s[ms] = texel_mu_s(ms, res.mu_s, res.sun);
+      std::vector<Axis> mu_s_axes(res.mu_s);
+      // Samples outside, texels inside: each texel still adds its samples in order (the same
+      // sums as one texel at a time), and a sample's rows of J are found once for the slice.
       for (int knu = 0; knu < res.nu; ++knu) {
         const double nu = texel_nu(knu, res.nu);
         const Axis nu_axis = nu_axis_4d(nu, res);
-        for (int ms = 0; ms < res.mu_s; ++ms) {
-          const double mu_s = texel_mu_s(ms, res.mu_s, res.sun);
-          float* acc = values.data() + (static_cast<std::size_t>(knu) * res.mu_s + ms) * stride;
-          for (int i = 0; i <= n; ++i) {
-            const double mu_s_i = (nu * s.t[i] + mu_s * r) / radius[i];
-            const Coord4 c{r_axis[i], mu_axis[i],
-                           texture_axis(u_mu_s(mu_s_i, res.mu_s, res.sun), res.mu_s), nu_axis};
-            list.clear();
-            gather_4d(j_table, c, 1.0, list);
-            list.sum(stride, sample.data());
-            const float* view = s.transmittance.data() + static_cast<std::size_t>(i) * stride;
-            const float weight = static_cast<float>(s.weight[i]);
-            for (int w = 0; w < stride; ++w) acc[w] += weight * view[w] * sample[w];
+        float* acc = values.data() + static_cast<std::size_t>(knu) * res.mu_s * stride;
+        for (int i = 0; i <= n; ++i) {
+          const TransportLookup lookup = transport_lookup(j_table, r_axis[i], mu_axis[i], nu_axis);
+          for (int ms = 0; ms < res.mu_s; ++ms) {
+            const double mu_s_i = (nu * s.t[i] + mu_s[ms] * r) / radius[i];
+            mu_s_axes[ms] = texture_axis(u_mu_s(mu_s_i, res.mu_s, res.sun), res.mu_s);
           }
+          const float* view = s.transmittance.data() + static_cast<std::size_t>(i) * stride;
+          const float weight = static_cast<float>(s.weight[i]);
+          for (int w = 0; w < stride; ++w) view_weight[w] = weight * view[w];
+          add_transport_sample(lookup, mu_s_axes.data(), res.mu_s, view_weight.data(), stride, acc);
         }
       }
       out_table.store_row(layer, jm, values.data());
