@@ -160,13 +160,21 @@ CLEARSKY_VECTOR_CLONES void add_weighted_transmittances_float(std::size_t n,
     const double* __restrict beta_mie = beta_mie_per_m + begin;
     double* __restrict a = sum_a + begin;
     double* __restrict b = sum_b + begin;
-    double max_rayleigh = 0.0, max_mie = 0.0;
-    bool non_negative = true;
+    // The largest coefficients and whether any is negative, on the bit patterns: for doubles
+    // with a clear sign bit the integer order is the value order, so the loop vectorises
+    // (floating comparisons under trapping math do not). A NaN without its sign bit is the
+    // largest and makes the test below fail; one with it counts as negative.
+    std::int64_t max_rayleigh_bits = 0, max_mie_bits = 0, any_bits = 0;
     for (std::size_t i = 0; i < m; ++i) {
-      max_rayleigh = beta_rayleigh[i] > max_rayleigh ? beta_rayleigh[i] : max_rayleigh;
-      max_mie = beta_mie[i] > max_mie ? beta_mie[i] : max_mie;
-      non_negative = non_negative && beta_rayleigh[i] >= 0.0 && beta_mie[i] >= 0.0;
+      const auto rayleigh_bits = std::bit_cast<std::int64_t>(beta_rayleigh[i]);
+      const auto mie_bits = std::bit_cast<std::int64_t>(beta_mie[i]);
+      max_rayleigh_bits = rayleigh_bits > max_rayleigh_bits ? rayleigh_bits : max_rayleigh_bits;
+      max_mie_bits = mie_bits > max_mie_bits ? mie_bits : max_mie_bits;
+      any_bits |= rayleigh_bits | mie_bits;
     }
+    const bool non_negative = any_bits >= 0;
+    const double max_rayleigh = std::bit_cast<double>(max_rayleigh_bits);
+    const double max_mie = std::bit_cast<double>(max_mie_bits);
     for (std::size_t j = 0; j < samples.count; ++j) {
       const double rayleigh_m = samples.rayleigh_m[j], mie_m = samples.mie_m[j];
       const double weight_a = samples.weight_a[j], weight_b = samples.weight_b[j];
