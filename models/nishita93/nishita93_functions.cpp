@@ -82,7 +82,8 @@ void sun_transmittance(const Nishita93Tables& tables, const AtmosphereSpectra& a
 bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere,
                        const RaySunGeometry& ray, double max_distance_m,
                        std::span<double> radiance_out, std::span<double> transmittance_out,
-                       const RayWorkspace& workspace, bool study_viewer_sample) {
+                       const RayWorkspace& workspace, bool study_viewer_sample,
+                       TransmittanceKernel kernel) {
   const auto& p = atmosphere.parameters;
   const std::size_t n_wavelengths = radiance_out.size();
   std::fill(radiance_out.begin(), radiance_out.end(), 0.0);
@@ -104,7 +105,7 @@ bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& a
   // of samples.
   WeightedTransmittanceSums sums(n_wavelengths, beta_rayleigh,
                                  atmosphere.mie_extinction_per_m.data(), rayleigh_integral,
-                                 mie_integral);
+                                 mie_integral, kernel);
 
   // The trapezoid rule over the samples, for the observer-side optical lengths and for the
   // integrands rho_p T. A sample's weight is half the sum of its two neighbouring segments, so
@@ -132,7 +133,10 @@ bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& a
     }
     view.rayleigh_m += half * (rho_r + previous_rho_r);
     view.mie_m += half * (rho_m + previous_rho_m);
-    const auto sun = tables.sun_optical_lengths(radius, ray.mu_s_at(d, radius), sphere);
+    const double mu_s = ray.mu_s_at(d, radius);
+    const std::optional<OpticalLengths> sun =
+        sphere >= 0 && mu_s >= 0.0 ? tables.sun_optical_lengths_on_sphere(sphere, mu_s)
+                                   : tables.sun_optical_lengths(radius, mu_s, sphere);
     pending_lit = sun && !(first && study_viewer_sample);
     if (pending_lit) {
       pending_lengths = {view.rayleigh_m + sun->rayleigh_m, view.mie_m + sun->mie_m};
@@ -169,7 +173,8 @@ namespace clearsky::nishita93 {
 
 ScatteringAlongRay single_scattering(const Nishita93Tables& tables,
                                      const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray,
-                                     double max_distance_m, bool study_viewer_sample) {
+                                     double max_distance_m, bool study_viewer_sample,
+                                     TransmittanceKernel kernel) {
   const std::size_t n = atmosphere.rayleigh_scattering_per_m.size();
   std::vector<double> scratch(2 * n);
   const std::span<double> all(scratch);
@@ -177,7 +182,7 @@ ScatteringAlongRay single_scattering(const Nishita93Tables& tables,
   ScatteringAlongRay result{Spectrum(n), Spectrum(n), 0.0, false};
   result.hits_ground =
       single_scattering(tables, atmosphere, ray, max_distance_m, {result.radiance.data(), n},
-                        {result.transmittance.data(), n}, workspace, study_viewer_sample);
+                        {result.transmittance.data(), n}, workspace, study_viewer_sample, kernel);
   const auto& p = atmosphere.parameters;
   const AtmosphereSegment segment =
       atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);

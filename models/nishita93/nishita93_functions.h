@@ -23,6 +23,7 @@
 
 #include "models/atmosphere/atmosphere_spectra.h"
 #include "models/core/ray_scattering.h"
+#include "models/core/weighted_transmittance_sums.h"
 #include "models/nishita93/nishita93_tables.h"
 
 namespace clearsky::nishita93 {
@@ -35,17 +36,20 @@ struct RayWorkspace {
 // Writes the in-scattered radiance into radiance_out and the transmittance of the segment
 // into transmittance_out (both of the atmosphere's grid size; transmittance_out may be
 // empty). The segment ends at the ground, the top of the atmosphere, or max_distance_m.
-// Returns whether it ends on the ground.
+// Returns whether it ends on the ground. kernel: the exponential of the samples' transmittances
+// (weighted_transmittance_sums.h; the model uses the default, tests compare it with the other).
 bool single_scattering(const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere,
                        const RaySunGeometry& ray, double max_distance_m,
                        std::span<double> radiance_out, std::span<double> transmittance_out,
-                       const RayWorkspace& workspace, bool study_viewer_sample = false);
+                       const RayWorkspace& workspace, bool study_viewer_sample = false,
+                       TransmittanceKernel kernel = TransmittanceKernel::float_polynomial);
 
 // Convenience form that allocates its results.
 ScatteringAlongRay single_scattering(
     const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray,
     double max_distance_m = std::numeric_limits<double>::infinity(),
-    bool study_viewer_sample = false);
+    bool study_viewer_sample = false,
+    TransmittanceKernel kernel = TransmittanceKernel::float_polynomial);
 
 // Transmittance from a point to the sun through the tables (0 in the Earth's shadow).
 void sun_transmittance(const Nishita93Tables& tables, const AtmosphereSpectra& atmosphere,

@@ -147,34 +147,6 @@ Nishita93Tables Nishita93Tables::build(const AtmosphereParameters& atmosphere, i
   return t;
 }
 
-OpticalLengths Nishita93Tables::along_row(int k, double sin_s, double abs_mu_s) const {
-  const double r_k = sphere_radius_m_[static_cast<std::size_t>(k)];
-  const double max_v = cylinder_count_ - 1.0;
-  const std::size_t row = static_cast<std::size_t>(k) * static_cast<std::size_t>(cylinder_count_);
-  const double v = std::clamp(max_v * r_k * sin_s / top_radius_m_, 0.0, max_v);
-  // The last cylinder inside this sphere: beyond it, up to the sphere itself (the sun on the
-  // horizon), the lengths change like the square root of the distance to the sphere, which a
-  // linear interpolation in the cylinder radius towards the next cylinder (outside the sphere,
-  // where the table holds the horizontal ray) cannot follow. There they are interpolated
-  // linearly in |mu_s| (the optical length of a ray is smooth in its zenith cosine through the
-  // horizon) between that cylinder and the horizontal ray, so that they reach the horizontal
-  // ray's at mu_s = 0, where the sun below the horizon (sun_optical_lengths) starts from.
-  const int last = last_inner_cylinder_[static_cast<std::size_t>(k)];
-  if (v > last) {
-    const std::size_t horizontal = row + static_cast<std::size_t>(cylinder_count_ - 1);
-    const std::size_t inner = row + static_cast<std::size_t>(last);
-    const double mu_last = last_inner_cylinder_mu_[static_cast<std::size_t>(k)];
-    const double t = mu_last > 0.0 ? std::min(abs_mu_s / mu_last, 1.0) : 0.0;
-    return {t * along_rayleigh_m_[inner] + (1.0 - t) * along_rayleigh_m_[horizontal],
-            t * along_mie_m_[inner] + (1.0 - t) * along_mie_m_[horizontal]};
-  }
-  const int j = std::min(static_cast<int>(v), cylinder_count_ - 2);
-  const double fv = v - j;
-  const std::size_t cell = row + static_cast<std::size_t>(j);
-  return {(1.0 - fv) * along_rayleigh_m_[cell] + fv * along_rayleigh_m_[cell + 1],
-          (1.0 - fv) * along_mie_m_[cell] + fv * along_mie_m_[cell + 1]};
-}
-
 OpticalLengths Nishita93Tables::along_lookup(double u, double sin_s, double abs_mu_s) const {
   const int i = std::min(static_cast<int>(u), sphere_count_ - 2);
   const double fu = u - i;

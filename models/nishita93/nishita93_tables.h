@@ -21,11 +21,14 @@
 // shadow stay monotone. Immutable after build(); thread-safe.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <vector>
 
 #include "models/atmosphere/atmosphere_parameters.h"
+#include "models/core/numeric.h"
 #include "models/core/optical_depth.h"
 #include "models/core/precompute_context.h"
 
@@ -61,6 +64,13 @@ class Nishita93Tables {
   // the point lies on that sphere (saves the density coordinate's exp).
   std::optional<OpticalLengths> sun_optical_lengths(double r_m, double mu_s,
                                                     int sphere_index = -1) const;
+  // sun_optical_lengths(sphere_radius_m(k), mu_s, k) for the sun above the point's horizon
+  // (mu_s >= 0), where it always has lengths: the same operations on the same values without
+  // the general case's tests, inline for the view-ray samples of Nishita93, which lie on the
+  // spheres.
+  OpticalLengths sun_optical_lengths_on_sphere(int k, double mu_s) const {
+    return along_row(k, safe_sqrt(1.0 - mu_s * mu_s), std::abs(mu_s));
+  }
 
   // Raw node values (tests): optical lengths stored at sphere i, cylinder j.
   OpticalLengths node(int i, int j, bool against_axis) const;
@@ -73,7 +83,7 @@ class Nishita93Tables {
   OpticalLengths along_lookup(double u, double sin_s, double abs_mu_s) const;
   // The horizontal ray's optical lengths at radius r_m (between the ground and the top).
   OpticalLengths horizontal_lengths(double r_m) const;
-  // Both along-axis tables on sphere k, linear in the cylinder radius.
+  // Both along-axis tables on sphere k, linear in the cylinder radius (below the class).
   OpticalLengths along_row(int k, double sin_s, double abs_mu_s) const;
 
   int sphere_count_ = 0, cylinder_count_ = 0;
@@ -86,5 +96,33 @@ class Nishita93Tables {
   // [i * cylinder_count + j]
   std::vector<double> along_rayleigh_m_, along_mie_m_, against_rayleigh_m_, against_mie_m_;
 };
+
+inline OpticalLengths Nishita93Tables::along_row(int k, double sin_s, double abs_mu_s) const {
+  const double r_k = sphere_radius_m_[static_cast<std::size_t>(k)];
+  const double max_v = cylinder_count_ - 1.0;
+  const std::size_t row = static_cast<std::size_t>(k) * static_cast<std::size_t>(cylinder_count_);
+  const double v = std::clamp(max_v * r_k * sin_s / top_radius_m_, 0.0, max_v);
+  // The last cylinder inside this sphere: beyond it, up to the sphere itself (the sun on the
+  // horizon), the lengths change like the square root of the distance to the sphere, which a
+  // linear interpolation in the cylinder radius towards the next cylinder (outside the sphere,
+  // where the table holds the horizontal ray) cannot follow. There they are interpolated
+  // linearly in |mu_s| (the optical length of a ray is smooth in its zenith cosine through the
+  // horizon) between that cylinder and the horizontal ray, so that they reach the horizontal
+  // ray's at mu_s = 0, where the sun below the horizon (sun_optical_lengths) starts from.
+  const int last = last_inner_cylinder_[static_cast<std::size_t>(k)];
+  if (v > last) {
+    const std::size_t horizontal = row + static_cast<std::size_t>(cylinder_count_ - 1);
+    const std::size_t inner = row + static_cast<std::size_t>(last);
+    const double mu_last = last_inner_cylinder_mu_[static_cast<std::size_t>(k)];
+    const double t = mu_last > 0.0 ? std::min(abs_mu_s / mu_last, 1.0) : 0.0;
+    return {t * along_rayleigh_m_[inner] + (1.0 - t) * along_rayleigh_m_[horizontal],
+            t * along_mie_m_[inner] + (1.0 - t) * along_mie_m_[horizontal]};
+  }
+  const int j = std::min(static_cast<int>(v), cylinder_count_ - 2);
+  const double fv = v - j;
+  const std::size_t cell = row + static_cast<std::size_t>(j);
+  return {(1.0 - fv) * along_rayleigh_m_[cell] + fv * along_rayleigh_m_[cell + 1],
+          (1.0 - fv) * along_mie_m_[cell] + fv * along_mie_m_[cell + 1]};
+}
 
 }  // namespace clearsky

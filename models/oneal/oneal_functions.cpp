@@ -95,7 +95,8 @@ std::optional<OpticalLengths> optical_lengths_to_infinity(const AtmosphereParame
 
 bool single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray, int samples,
                        double max_distance_m, std::span<double> radiance_out,
-                       std::span<double> transmittance_out, const RayWorkspace& workspace) {
+                       std::span<double> transmittance_out, const RayWorkspace& workspace,
+                       TransmittanceKernel kernel) {
   const auto& p = atmosphere.parameters;
   const std::size_t n_wavelengths = radiance_out.size();
   std::fill(radiance_out.begin(), radiance_out.end(), 0.0);
@@ -127,7 +128,7 @@ bool single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry
   // The samples' transmittances and weights go to the integrals in one vector pass.
   WeightedTransmittanceSums sums(n_wavelengths, beta_rayleigh,
                                  atmosphere.mie_extinction_per_m.data(), rayleigh_integral,
-                                 mie_integral);
+                                 mie_integral, kernel);
   for (int i = 0; i < samples; ++i) {
     const double d = segment.start + (i + 0.5) * sample_length;
     const Point x = point_at(d);
@@ -167,14 +168,15 @@ bool single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry
 }
 
 ScatteringAlongRay single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray,
-                                     int samples, double max_distance_m) {
+                                     int samples, double max_distance_m,
+                                     TransmittanceKernel kernel) {
   const std::size_t n = atmosphere.rayleigh_scattering_per_m.size();
   std::vector<double> scratch(2 * n);
   const std::span<double> all(scratch);
   ScatteringAlongRay result{Spectrum(n), Spectrum(n), 0.0, false};
-  result.hits_ground =
-      single_scattering(atmosphere, ray, samples, max_distance_m, {result.radiance.data(), n},
-                        {result.transmittance.data(), n}, {all.subspan(0, n), all.subspan(n, n)});
+  result.hits_ground = single_scattering(
+      atmosphere, ray, samples, max_distance_m, {result.radiance.data(), n},
+      {result.transmittance.data(), n}, {all.subspan(0, n), all.subspan(n, n)}, kernel);
   const auto& p = atmosphere.parameters;
   const AtmosphereSegment segment =
       atmosphere_segment(ray.r_m, ray.mu, p.earth_radius_m, p.top_radius_m);

@@ -27,6 +27,7 @@
 #include "models/atmosphere/atmosphere_spectra.h"
 #include "models/core/optical_depth.h"
 #include "models/core/ray_scattering.h"
+#include "models/core/weighted_transmittance_sums.h"
 
 namespace clearsky::oneal {
 
@@ -46,13 +47,16 @@ struct RayWorkspace {
 // Single scattering along the view with `samples` midpoint samples: writes the in-scattered
 // radiance, and the segment's transmittance when transmittance_out is not empty. The segment
 // ends at the ground, the top of the atmosphere, or max_distance_m. Returns whether it ends
-// on the ground.
+// on the ground. kernel: the exponential of the samples' transmittances
+// (weighted_transmittance_sums.h; the model uses the default, tests compare it with the other).
 bool single_scattering(const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray, int samples,
                        double max_distance_m, std::span<double> radiance_out,
-                       std::span<double> transmittance_out, const RayWorkspace& workspace);
+                       std::span<double> transmittance_out, const RayWorkspace& workspace,
+                       TransmittanceKernel kernel = TransmittanceKernel::float_polynomial);
 
 ScatteringAlongRay single_scattering(
     const AtmosphereSpectra& atmosphere, const RaySunGeometry& ray, int samples,
-    double max_distance_m = std::numeric_limits<double>::infinity());
+    double max_distance_m = std::numeric_limits<double>::infinity(),
+    TransmittanceKernel kernel = TransmittanceKernel::float_polynomial);
 
 }  // namespace clearsky::oneal
