@@ -20,7 +20,7 @@ ModelDescriptor make_descriptor() {
   return ModelDescriptor{
       .id = "nishita93",
       .name = "Nishita93",
-      .version = "3",
+      .version = "4",
       .citation =
           "T. Nishita, T. Sirai, K. Tadamura, E. Nakamae. Display of the Earth Taking into "
           "Account Atmospheric Scattering. Proceedings of SIGGRAPH 1993, pages 175-182.",

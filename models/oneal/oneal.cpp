@@ -20,7 +20,7 @@ ModelDescriptor make_descriptor() {
   return ModelDescriptor{
       .id = "oneal",
       .name = "O'Neal",
-      .version = "2",
+      .version = "3",
       .citation =
           "S. O'Neil. Accurate Atmospheric Scattering. In GPU Gems 2, chapter 16, pages "
           "253-268. Addison-Wesley, 2005.",
