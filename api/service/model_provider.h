@@ -4,6 +4,7 @@
 // any factory list. Implementations must be thread-safe.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -56,12 +57,17 @@ class ModelProvider {
     std::shared_ptr<const SkyModel> model;
     bool fallback = false;
   };
+  // The fallback's configuration (a cheaper quality level of the same request:
+  // docs/quality-levels.md "Serving at once"), made only when it is needed: nearly every
+  // request finds its own tables ready, and making the draft's configuration on each was a
+  // twentieth of a radiance request's instructions (docs/performance.md "A radiance request
+  // through the server"). Empty: no fallback; nullopt: the fallback is config itself.
+  using FallbackConfig = std::function<std::optional<ModelConfig>()>;
   // The model built with config or, while config's tables are still being built and the
-  // fallback's (a cheaper quality level of the same request: docs/quality-levels.md "Serving at
-  // once") are ready, the fallback's model. Without a fallback, or when neither is ready, as
-  // model(). This default implementation never falls back.
+  // fallback's are ready, the fallback's model. Without a fallback, or when neither is ready,
+  // as model(). This default implementation never falls back.
   virtual ServedModel model_or_fallback(const ModelFactory& factory, const ModelConfig& config,
-                                        const ModelConfig* fallback,
+                                        const FallbackConfig& fallback,
                                         const ModelRequester& requester) const {
     (void)fallback;
     return {model(factory, config, requester), false};

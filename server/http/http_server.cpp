@@ -321,7 +321,10 @@ void HttpServer::send(const httplib::Request& req, httplib::Response& res,
                                return sink.write(body->data() + offset, length);
                              });
   } else if (response.status != 204 && response.status != 304) {
-    res.set_content(std::move(response.body), response.content_type);
+    // What set_content() does, but moving the body: cpp-httplib's set_content copies it.
+    res.body = std::move(response.body);
+    res.headers.erase("Content-Type");
+    res.set_header("Content-Type", response.content_type);
   }
   if (current_request.unread_body) close_after_answer(res);
 }

@@ -398,44 +398,52 @@ void TableStore::start_builds(
 
 TableStore::ServedModel TableStore::model_or_fallback(const ModelFactory& factory,
                                                       const ModelConfig& config,
-                                                      const ModelConfig* fallback,
+                                                      const FallbackConfig& fallback,
                                                       const api::ModelRequester& requester) const {
-  if (fallback != nullptr) {
+  if (fallback) {
     // The configuration's text (the default's is kept: canonical_text) is written outside the
-    // lock; the draft's only while the wanted tables are not ready. Writing both texts on every
-    // standard request, under the lock, was over a third of a radiance request's instructions
-    // (docs/performance.md "A radiance request through the server").
+    // lock; the draft's configuration is made only while the wanted tables are not ready.
+    // Writing both texts on every standard request, under the lock, was over a third of a
+    // radiance request's instructions (docs/performance.md "A radiance request through the
+    // server").
     const ModelConfig wanted_config = canonical_config(*factory.descriptor, config);
     const std::string canonical = canonical_text(wanted_config);
+    const bool is_default = canonical == default_canonical_string();
     const std::string key = entry_key(factory, canonical);
     std::unique_lock lock(mutex_);
     auto wanted = entries_.find(key);
     if (wanted != entries_.end() && wanted->second->status == api::ModelState::Status::ready) {
-      lock.unlock();
-      return {model(factory, config, requester), false};
+      // What model() does with a ready entry (find_or_queue): a default is pinned, and the
+      // entry is marked used; without looking the configuration up a second time.
+      if (is_default) wanted->second->pinned = true;
+      wanted->second->last_used = ++clock_;
+      return {wanted->second->model, false};
     }
-    const auto draft = entries_.find(entry_key(factory, *fallback));
-    const bool draft_ready =
-        draft != entries_.end() && draft->second->status == api::ModelState::Status::ready;
-    // A default not built at start (standard on first use, or left out of --prebuild) with its
-    // draft ready: its build starts now, pinned like every default, on its own thread at the
-    // requests' priority, and this request is answered from the draft at once rather than after
-    // build_wait and a 503 (docs/quality-levels.md "Serving at once").
-    if (wanted == entries_.end() && draft_ready && canonical == default_canonical_string()) {
-      const std::shared_ptr<Entry> entry =
-          find_or_queue(factory, wanted_config, key, true, requester);
-      if (entry->status == api::ModelState::Status::queued) {
-        std::erase(queue_, entry);
-        launch_locked(entry);
+    const std::optional<ModelConfig> fallback_config = fallback();
+    if (fallback_config) {
+      const auto draft = entries_.find(entry_key(factory, *fallback_config));
+      const bool draft_ready =
+          draft != entries_.end() && draft->second->status == api::ModelState::Status::ready;
+      // A default not built at start (standard on first use, or left out of --prebuild) with
+      // its draft ready: its build starts now, pinned like every default, on its own thread at
+      // the requests' priority, and this request is answered from the draft at once rather
+      // than after build_wait and a 503 (docs/quality-levels.md "Serving at once").
+      if (wanted == entries_.end() && draft_ready && is_default) {
+        const std::shared_ptr<Entry> entry =
+            find_or_queue(factory, wanted_config, key, true, requester);
+        if (entry->status == api::ModelState::Status::queued) {
+          std::erase(queue_, entry);
+          launch_locked(entry);
+        }
+        wanted = entries_.find(key);
       }
-      wanted = entries_.find(key);
-    }
-    // Only while config's own build is under way (queued at start or started by a request):
-    // an unknown configuration is asked for as usual, so that its build starts.
-    if (wanted != entries_.end() && wanted->second->status != api::ModelState::Status::ready &&
-        wanted->second->status != api::ModelState::Status::failed && draft_ready) {
-      draft->second->last_used = ++clock_;
-      return {draft->second->model, true};
+      // Only while config's own build is under way (queued at start or started by a request):
+      // an unknown configuration is asked for as usual, so that its build starts.
+      if (wanted != entries_.end() && wanted->second->status != api::ModelState::Status::ready &&
+          wanted->second->status != api::ModelState::Status::failed && draft_ready) {
+        draft->second->last_used = ++clock_;
+        return {draft->second->model, true};
+      }
     }
   }
   return {model(factory, config, requester), false};

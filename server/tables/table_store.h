@@ -75,7 +75,7 @@ class TableStore final : public api::ModelProvider {
   // config's model when ready; else, while config is being built (not started by this call),
   // the fallback's when ready; else model(config).
   ServedModel model_or_fallback(const ModelFactory& factory, const ModelConfig& config,
-                                const ModelConfig* fallback,
+                                const FallbackConfig& fallback,
                                 const api::ModelRequester& requester) const override;
   api::ModelState default_state(const ModelFactory& factory) const override;
   std::optional<api::ModelState> config_state(const ModelFactory& factory,

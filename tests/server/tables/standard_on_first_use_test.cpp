@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <optional>
 #include <thread>
 
 #include "models/registry.h"
@@ -99,23 +100,32 @@ TEST(StandardOnFirstUse, TheFirstStandardRequestIsAnsweredFromTheDraftWhileTheSt
   EXPECT_FALSE(store.config_state(f, ModelConfig{}).has_value());
   EXPECT_EQ(standard_builds, 0);
 
-  const auto first = store.model_or_fallback(f, ModelConfig{}, &draft, {});
+  int fallback_calls = 0;
+  const api::ModelProvider::FallbackConfig fallback = [&]() -> std::optional<ModelConfig> {
+    ++fallback_calls;
+    return draft;
+  };
+  const auto first = store.model_or_fallback(f, ModelConfig{}, fallback, {});
   EXPECT_TRUE(first.fallback);
   EXPECT_EQ(first.model->config().options.at("size"), 1.0);
   const auto state = store.config_state(f, ModelConfig{});
   ASSERT_TRUE(state.has_value());
   EXPECT_NE(state->status, api::ModelState::Status::ready);
   // Asked again meanwhile: the draft again, the one build still under way.
-  EXPECT_TRUE(store.model_or_fallback(f, ModelConfig{}, &draft, {}).fallback);
+  EXPECT_TRUE(store.model_or_fallback(f, ModelConfig{}, fallback, {}).fallback);
 
   release_standard = true;
   TableStore::ServedModel served = first;
   while (served.fallback && std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    served = store.model_or_fallback(f, ModelConfig{}, &draft, {});
+    served = store.model_or_fallback(f, ModelConfig{}, fallback, {});
   }
   EXPECT_FALSE(served.fallback);
   EXPECT_FALSE(served.model->config().options.contains("size"));
+  // Once the standard tables are ready, the draft's configuration is not even made.
+  const int calls_before_ready_requests = fallback_calls;
+  EXPECT_FALSE(store.model_or_fallback(f, ModelConfig{}, fallback, {}).fallback);
+  EXPECT_EQ(fallback_calls, calls_before_ready_requests);
   EXPECT_EQ(standard_builds, 1);
   // A build a request started: the requests' priority, not the background's.
   EXPECT_EQ(standard_policy, SCHED_OTHER);
