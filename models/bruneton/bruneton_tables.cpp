@@ -16,14 +16,18 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <utility>
 
 #include "models/atmosphere/phase_functions.h"
+#include "models/bruneton/density_sums.h"
 #include "models/bruneton/density_weights.h"
 #include "models/bruneton/scattering_transport.h"
+#include "models/bruneton/single_scattering_sums.h"
 #include "models/core/invalid_input.h"
 #include "models/core/parallel.h"
 
@@ -321,13 +325,15 @@ struct Builder {
         r_axis[i] = texture_axis(transmittance_u_r(clamped[i], g), res.transmittance_r);
       }
       const std::size_t texels = t.single_rayleigh.row_texels();
-      std::vector<float> out_r(texels * stride, 0.0f), out_m(texels * stride, 0.0f), sun(stride);
+      std::vector<float> out_r(texels * stride, 0.0f), out_m(texels * stride, 0.0f);
+      std::vector<SunlitSample> lit(n + 1);
       for (int knu = 0; knu < res.nu; ++knu) {
         const double nu = texel_nu(knu, res.nu);
         for (int ms = 0; ms < res.mu_s; ++ms) {
           const double mu_s = texel_mu_s(ms, res.mu_s, res.sun);
           float* acc_r = out_r.data() + (static_cast<std::size_t>(knu) * res.mu_s + ms) * stride;
           float* acc_m = out_m.data() + (static_cast<std::size_t>(knu) * res.mu_s + ms) * stride;
+          int count = 0;
           for (int i = 0; i <= n; ++i) {
             const double mu_s_i = (nu * s.t[i] + mu_s * r) / radius[i];
             if (!(mu_s_i >= horizon[i])) continue;  // the sample is in the Earth's shadow
@@ -338,16 +344,17 @@ struct Builder {
             list.add(t.transmittance.texel(ax.i1, ay.i0), ax.f * (1.0 - ay.f));
             list.add(t.transmittance.texel(ax.i0, ay.i1), (1.0 - ax.f) * ay.f);
             list.add(t.transmittance.texel(ax.i1, ay.i1), ax.f * ay.f);
-            list.sum(stride, sun.data());
-            const float* view = s.transmittance.data() + static_cast<std::size_t>(i) * stride;
-            const float wr = static_cast<float>(s.weight[i] * density_r[i]);
-            const float wm = static_cast<float>(s.weight[i] * density_m[i]);
-            for (int w = 0; w < stride; ++w) {
-              const float ti = view[w] * sun[w];
-              acc_r[w] += wr * ti;
-              acc_m[w] += wm * ti;
+            SunlitSample& sample = lit[count++];
+            sample.count = list.count;
+            for (int q = 0; q < list.count; ++q) {
+              sample.rows[q] = list.rows[q];
+              sample.weights[q] = list.weights[q];
             }
+            sample.view = s.transmittance.data() + static_cast<std::size_t>(i) * stride;
+            sample.weight_r = static_cast<float>(s.weight[i] * density_r[i]);
+            sample.weight_m = static_cast<float>(s.weight[i] * density_m[i]);
           }
+          add_sunlit_samples(lit.data(), count, stride, acc_r, acc_m);
           for (int w = 0; w < stride; ++w) {
             acc_r[w] *= k.rayleigh[w];
             acc_m[w] *= k.mie_scattering[w];
@@ -543,8 +550,10 @@ struct Builder {
     DensityWeights weights;
     const int lanes = (n_nu + 3) / 4 * 4;
     std::vector<double> sx(lanes, 0.0), sy(lanes, 0.0);
+    std::vector<int> same_as(n_nu), lane(n_nu);
     std::vector<float> sum_r(stride), sum_m(stride);
-    RowList<float> rows_r, rows_m;
+    // Every profile (a and b) and every ground column of every zenith at most.
+    DensityTerms terms(n_theta * (n_nu * 2 + n_e));
     const std::size_t texels_per_row = static_cast<std::size_t>(n_nu) * res.mu_s;
     for (int jm = 0; jm < res.mu; ++jm) {
       const Layer l = layer_geometry(layer, res.r, g);
@@ -552,48 +561,77 @@ struct Builder {
       const double vx = std::sqrt(1.0 - mu * mu);
       shared.phase_r = layer_phase_r.data() + static_cast<std::size_t>(jm) * n_dir;
       shared.phase_m = layer_phase_m.data() + static_cast<std::size_t>(jm) * n_dir;
+      // Slices whose nu is clamped to the same end of its range (beyond the cosines this view
+      // and this sun allow) have the same sun direction, hence the same J: each distinct
+      // direction is computed once (texel `lane` of the weights) and copied to the others.
+      int distinct = 0;
       for (int knu = 0; knu < n_nu; ++knu) {
         const double var = std::sqrt(1.0 - mu * mu) * std::sqrt(1.0 - mu_s * mu_s);
         const double nu = std::clamp(texel_nu(knu, n_nu), mu_s * mu - var, mu_s * mu + var);
-        sx[knu] = vx == 0.0 ? 0.0 : (nu - mu_s * mu) / vx;
-        sy[knu] = std::sqrt(std::max(0.0, 1.0 - sx[knu] * sx[knu] - mu_s * mu_s));
+        const double x = vx == 0.0 ? 0.0 : (nu - mu_s * mu) / vx;
+        const double y = std::sqrt(std::max(0.0, 1.0 - x * x - mu_s * mu_s));
+        same_as[knu] = knu;
+        for (int earlier = 0; earlier < knu; ++earlier) {
+          if (same_as[earlier] != earlier) continue;
+          if (std::bit_cast<std::uint64_t>(sx[lane[earlier]]) == std::bit_cast<std::uint64_t>(x) &&
+              std::bit_cast<std::uint64_t>(sy[lane[earlier]]) == std::bit_cast<std::uint64_t>(y)) {
+            same_as[knu] = earlier;
+            break;
+          }
+        }
+        if (same_as[knu] != knu) continue;
+        lane[knu] = distinct;
+        sx[distinct] = x;
+        sy[distinct++] = y;
       }
-      weights.prepare(n_nu, shared);
-      density_weights(shared, sx.data(), sy.data(), n_nu, weights);
+      for (int extra = distinct; extra < lanes; ++extra) {
+        sx[extra] = 0.0;
+        sy[extra] = 0.0;
+      }
+      weights.prepare(distinct, shared);
+      density_weights(shared, sx.data(), sy.data(), distinct, weights);
+      // The lanes computed beyond the distinct texels leave ground weights: cleared, since a
+      // later row may use these texels (whoever reads ground weights leaves them zero).
+      for (int extra = distinct; extra < (distinct + 3) / 4 * 4; ++extra) {
+        for (int i = 0; i < n_theta; ++i) {
+          const std::pair<int, int> range = weights.range(extra, i);
+          for (int col = range.first; col <= range.second; ++col)
+            weights.clear_column(weights.column(extra, i, col));
+        }
+      }
       for (int knu = 0; knu < n_nu; ++knu) {
-        rows_r.clear();
-        rows_m.clear();
-        for (int i = 0; i < n_theta; ++i) {
-          for (int kk = 0; kk < n_nu; ++kk) {
-            const std::size_t s = static_cast<std::size_t>(i) * n_nu + kk;
-            const std::size_t slot = weights.slot(knu, i, kk);
-            const float* pa = profile_a.data() + s * stride;
-            rows_r.add(pa, weights.a_r[slot]);
-            rows_m.add(pa, weights.a_m[slot]);
-            if (source.first()) {
-              const float* pb = profile_b.data() + s * stride;
-              rows_r.add(pb, weights.b_r[slot]);
-              rows_m.add(pb, weights.b_m[slot]);
-            }
-          }
-        }
-        for (int i = 0; i < n_theta; ++i) {
-          const std::pair<int, int> range = weights.range(knu, i);
-          for (int col = range.first; col <= range.second; ++col) {
-            const std::size_t c = static_cast<std::size_t>(i) * n_e + col;
-            const std::size_t w = weights.column(knu, i, col);
-            const float* light = ground_light.data() + c * stride;
-            rows_r.add(light, weights.g_r[w]);
-            rows_m.add(light, weights.g_m[w]);
-            weights.g_r[w] = 0.0;
-            weights.g_m[w] = 0.0;
-          }
-        }
-        rows_r.sum(stride, sum_r.data());
-        rows_m.sum(stride, sum_m.data());
         float* out = layer_values + (static_cast<std::size_t>(jm) * texels_per_row +
                                      static_cast<std::size_t>(knu) * res.mu_s + ms) *
                                         stride;
+        if (same_as[knu] != knu) {
+          const float* same =
+              layer_values + (static_cast<std::size_t>(jm) * texels_per_row +
+                              static_cast<std::size_t>(same_as[knu]) * res.mu_s + ms) *
+                                 stride;
+          std::copy(same, same + stride, out);
+          continue;
+        }
+        const int texel = lane[knu];
+        terms.clear();
+        for (int i = 0; i < n_theta; ++i) {
+          for (int kk = 0; kk < n_nu; ++kk) {
+            const std::size_t s = static_cast<std::size_t>(i) * n_nu + kk;
+            const std::size_t slot = weights.slot(texel, i, kk);
+            terms.add(profile_a.data() + s * stride, weights.a_r(slot), weights.a_m(slot));
+            if (source.first())
+              terms.add(profile_b.data() + s * stride, weights.b_r(slot), weights.b_m(slot));
+          }
+        }
+        for (int i = 0; i < n_theta; ++i) {
+          const std::pair<int, int> range = weights.range(texel, i);
+          for (int col = range.first; col <= range.second; ++col) {
+            const std::size_t c = static_cast<std::size_t>(i) * n_e + col;
+            const std::size_t w = weights.column(texel, i, col);
+            terms.add(ground_light.data() + c * stride, weights.g_r(w), weights.g_m(w));
+            weights.clear_column(w);
+          }
+        }
+        terms.sum(stride, sum_r.data(), sum_m.data());
         for (int w = 0; w < stride; ++w) {
           out[w] =
               k.rayleigh[w] * density_r * sum_r[w] + k.mie_scattering[w] * density_m * sum_m[w];

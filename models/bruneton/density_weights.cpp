@@ -23,15 +23,12 @@ void DensityWeights::prepare(int texel_count, const DensitySphere& sphere) {
     n_nu = sphere.n_nu;
     n_e = sphere.n_e;
     const std::size_t n_ground = static_cast<std::size_t>(texels) * n_theta * n_e;
-    g_r.assign(n_ground, 0.0);
-    g_m.assign(n_ground, 0.0);
+    ground.assign(2 * n_ground, 0.0);
     ground_range.assign(static_cast<std::size_t>(texels) * n_theta, {n_e, -1});
   }
+  per_slot = sphere.first ? 4 : 2;
   const std::size_t n_slots = static_cast<std::size_t>(texels) * n_theta * (n_nu + 1);
-  a_r.assign(n_slots, 0.0);
-  a_m.assign(n_slots, 0.0);
-  b_r.assign(sphere.first ? n_slots : 0, 0.0);
-  b_m.assign(sphere.first ? n_slots : 0, 0.0);
+  profile.assign(n_slots * per_slot, 0.0);
 }
 
 namespace {
@@ -48,22 +45,18 @@ void reference_texel(const DensitySphere& s, double sx, double sy, int t, Densit
   for (int i = 0; i < s.n_theta; ++i) {
     const bool sees_ground = s.ground[i] != 0;
     const double z = s.mu_s * s.cos_t[i];
-    double* ar = out.a_r.data() + out.slot(t, i, 0);
-    double* am = out.a_m.data() + out.slot(t, i, 0);
-    double* br = First ? out.b_r.data() + out.slot(t, i, 0) : nullptr;
-    double* bm = First ? out.b_m.data() + out.slot(t, i, 0) : nullptr;
-    double* g_r = out.g_r.data() + out.column(t, i, 0);
-    double* g_m = out.g_m.data() + out.column(t, i, 0);
-    int lowest = n_e, highest = -1;
     constexpr int kSums = First ? 4 : 2;
-    double* const sums[4] = {ar, am, br, bm};
+    // Weight q of slot k at sums[k * kSums + q]; ground column e's g_r, g_m at g[2 e], g[2 e + 1].
+    double* const sums = out.profile.data() + out.slot(t, i, 0) * kSums;
+    double* const g = out.ground.data() + out.column(t, i, 0) * 2;
+    int lowest = n_e, highest = -1;
     double low[4] = {}, high[4] = {};
     int run = -1;  // the lower slice of the pair held in low/high, -1 for none
     auto write_back = [&] {
       if (run < 0) return;
       for (int q = 0; q < kSums; ++q) {
-        sums[q][run] = low[q];
-        sums[q][run + 1] = high[q];
+        sums[run * kSums + q] = low[q];
+        sums[(run + 1) * kSums + q] = high[q];
       }
       run = -1;
     };
@@ -98,16 +91,16 @@ void reference_texel(const DensitySphere& s, double sx, double sy, int t, Densit
         // The last slice alone (its weight f2 is zero): straight to memory.
         write_back();
         for (int q = 0; q < kSums; ++q) {
-          sums[q][slice.i0] += term_low[q];
-          sums[q][slice.i1] += term_high[q];
+          sums[slice.i0 * kSums + q] += term_low[q];
+          sums[slice.i1 * kSums + q] += term_high[q];
         }
       } else {
         if (slice.i0 != run) {
           write_back();
           run = slice.i0;
           for (int q = 0; q < kSums; ++q) {
-            low[q] = sums[q][run];
-            high[q] = sums[q][run + 1];
+            low[q] = sums[run * kSums + q];
+            high[q] = sums[(run + 1) * kSums + q];
           }
         }
         for (int q = 0; q < kSums; ++q) {
@@ -120,10 +113,10 @@ void reference_texel(const DensitySphere& s, double sx, double sy, int t, Densit
         // previous order at the ground, for the sun at gnormal . s).
         const double mu_ground = (s.r * s.mu_s + s.d_ground[i] * nu1) / s.bottom_m;
         const Axis e = texture_axis(irradiance_u_mu_s(mu_ground, s.sun), n_e);
-        g_r[e.i0] += (1.0 - e.f) * pr;
-        g_r[e.i1] += e.f * pr;
-        g_m[e.i0] += (1.0 - e.f) * pm;
-        g_m[e.i1] += e.f * pm;
+        g[2 * e.i0] += (1.0 - e.f) * pr;
+        g[2 * e.i1] += e.f * pr;
+        g[2 * e.i0 + 1] += (1.0 - e.f) * pm;
+        g[2 * e.i1 + 1] += e.f * pm;
         lowest = std::min(lowest, e.i0);
         highest = std::max(highest, e.i1);
       }
@@ -197,10 +190,27 @@ __attribute__((target("avx2"))) inline void store_indices(__m256d index, int* ou
   _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm256_cvttpd_epi32(index));
 }
 
+// Lane l of x, twice: [x_l, x_l].
+__attribute__((target("avx2"))) inline __m128d lane_pair(__m256d x, int l) {
+  const __m128d half = l < 2 ? _mm256_castpd256_pd128(x) : _mm256_extractf128_pd(x, 1);
+  return (l & 1) == 0 ? _mm_unpacklo_pd(half, half) : _mm_unpackhi_pd(half, half);
+}
+
+// *p += v, two or four doubles: one slot's weights (or one ground column's) at once.
+__attribute__((target("avx2"))) inline void add_to(double* p, __m128d v) {
+  _mm_storeu_pd(p, _mm_add_pd(_mm_loadu_pd(p), v));
+}
+__attribute__((target("avx2"))) inline void add_to(double* p, __m256d v) {
+  _mm256_storeu_pd(p, _mm256_add_pd(_mm256_loadu_pd(p), v));
+}
+
 // Four texels t0 .. t0 + 3. Each direction's terms are computed in vector form and added to
-// each texel's slots in the scalar code's order: the lower slice gets the low term, the next
-// slice the high one (the scratch slot n_nu when the lower is the last slice, whose high term
-// is zero: adding zero to a slot leaves it as it was).
+// each texel's slots in the scalar code's order: the lower slice gets the low terms, the next
+// slice the high ones (the scratch slot n_nu when the lower is the last slice, whose high terms
+// are zero: adding zero to a slot leaves it as it was). A slot's weights lie next to each other,
+// so each texel's low (and high) terms go in with one vector addition: lane l's products are
+// the scalar code's, f1 x [pr, pm] (later orders) or (f1 x [p1r, p1r, p1m, p1m]) x [pr, pm, pr,
+// pm] (the first), one rounding each as there.
 template <bool First>
 __attribute__((target("avx2"))) void four_texels(const DensitySphere& s, const double* sx_in,
                                                  const double* sy_in, int t0, DensityWeights& out) {
@@ -218,26 +228,19 @@ __attribute__((target("avx2"))) void four_texels(const DensitySphere& s, const d
   const double g2 = g * g;
   const double cs_constant = 3.0 / (8.0 * kPi) * (1.0 - g2) / (2.0 + g2);
   const bool tabulated = First && s.mie_phase->table != nullptr;
-  Lanes lo[4], hi[4];
+  constexpr int kSums = First ? 4 : 2;
   alignas(16) int lower[4];
   alignas(16) int g_first[4], g_second[4];
-  Lanes g_lo_r, g_hi_r, g_lo_m, g_hi_m;
   for (int i = 0; i < s.n_theta; ++i) {
     const bool sees_ground = s.ground[i] != 0;
     const __m256d z = _mm256_set1_pd(s.mu_s * s.cos_t[i]);
     const __m256d d_ground = _mm256_set1_pd(s.d_ground[i]);
-    double* sums[4][4];
-    double* g_r[4];
-    double* g_m[4];
+    double* sums[4];
+    double* ground[4];
     int lowest[4], highest[4];
     for (int l = 0; l < 4; ++l) {
-      const std::size_t slot = out.slot(t0 + l, i, 0);
-      sums[0][l] = out.a_r.data() + slot;
-      sums[1][l] = out.a_m.data() + slot;
-      sums[2][l] = First ? out.b_r.data() + slot : nullptr;
-      sums[3][l] = First ? out.b_m.data() + slot : nullptr;
-      g_r[l] = out.g_r.data() + out.column(t0 + l, i, 0);
-      g_m[l] = out.g_m.data() + out.column(t0 + l, i, 0);
+      sums[l] = out.profile.data() + out.slot(t0 + l, i, 0) * kSums;
+      ground[l] = out.ground.data() + out.column(t0 + l, i, 0) * 2;
       lowest[l] = s.n_e;
       highest[l] = -1;
     }
@@ -250,8 +253,10 @@ __attribute__((target("avx2"))) void four_texels(const DensitySphere& s, const d
       __m256d slice, f2;
       nu_slices(nu1, last_slice, slice, f2);
       const __m256d f1 = _mm256_sub_pd(one, f2);
-      const __m256d pr = _mm256_set1_pd(s.phase_r[d]);
-      const __m256d pm = _mm256_set1_pd(s.phase_m[d]);
+      const double pr = s.phase_r[d];
+      const double pm = s.phase_m[d];
+      const __m128d phases = _mm_set_pd(pm, pr);  // [pr, pm]
+      store_indices(slice, lower);
       if constexpr (First) {
         const __m256d p1r = _mm256_mul_pd(_mm256_set1_pd(rayleigh_constant),
                                           _mm256_add_pd(one, _mm256_mul_pd(nu1, nu1)));
@@ -270,29 +275,28 @@ __attribute__((target("avx2"))) void four_texels(const DensitySphere& s, const d
                                             _mm256_add_pd(one, _mm256_mul_pd(nu1, nu1))),
                               _mm256_mul_pd(den, root));
         }
+        // Lane l of [f1 p1r, f1 p1m] and [f2 p1r, f2 p1m], spread to [x_r, x_r, x_m, x_m].
         const __m256d l_r = _mm256_mul_pd(f1, p1r), h_r = _mm256_mul_pd(f2, p1r);
         const __m256d l_m = _mm256_mul_pd(f1, p1m), h_m = _mm256_mul_pd(f2, p1m);
-        _mm256_store_pd(lo[0].v, _mm256_mul_pd(l_r, pr));
-        _mm256_store_pd(hi[0].v, _mm256_mul_pd(h_r, pr));
-        _mm256_store_pd(lo[1].v, _mm256_mul_pd(l_r, pm));
-        _mm256_store_pd(hi[1].v, _mm256_mul_pd(h_r, pm));
-        _mm256_store_pd(lo[2].v, _mm256_mul_pd(l_m, pr));
-        _mm256_store_pd(hi[2].v, _mm256_mul_pd(h_m, pr));
-        _mm256_store_pd(lo[3].v, _mm256_mul_pd(l_m, pm));
-        _mm256_store_pd(hi[3].v, _mm256_mul_pd(h_m, pm));
+        const __m256d low02 = _mm256_unpacklo_pd(l_r, l_m), low13 = _mm256_unpackhi_pd(l_r, l_m);
+        const __m256d high02 = _mm256_unpacklo_pd(h_r, h_m), high13 = _mm256_unpackhi_pd(h_r, h_m);
+        const __m256d four_phases = _mm256_set_m128d(phases, phases);  // [pr, pm, pr, pm]
+        const __m256d low[4] = {
+            _mm256_permute4x64_pd(low02, 0x50), _mm256_permute4x64_pd(low13, 0x50),
+            _mm256_permute4x64_pd(low02, 0xfa), _mm256_permute4x64_pd(low13, 0xfa)};
+        const __m256d high[4] = {
+            _mm256_permute4x64_pd(high02, 0x50), _mm256_permute4x64_pd(high13, 0x50),
+            _mm256_permute4x64_pd(high02, 0xfa), _mm256_permute4x64_pd(high13, 0xfa)};
+        for (int l = 0; l < 4; ++l) {
+          double* slot = sums[l] + lower[l] * kSums;
+          add_to(slot, _mm256_mul_pd(low[l], four_phases));
+          add_to(slot + kSums, _mm256_mul_pd(high[l], four_phases));
+        }
       } else {
-        _mm256_store_pd(lo[0].v, _mm256_mul_pd(f1, pr));
-        _mm256_store_pd(hi[0].v, _mm256_mul_pd(f2, pr));
-        _mm256_store_pd(lo[1].v, _mm256_mul_pd(f1, pm));
-        _mm256_store_pd(hi[1].v, _mm256_mul_pd(f2, pm));
-      }
-      store_indices(slice, lower);
-      constexpr int kSums = First ? 4 : 2;
-      for (int l = 0; l < 4; ++l) {
-        const int k = lower[l];
-        for (int q = 0; q < kSums; ++q) {
-          sums[q][l][k] += lo[q].v[l];
-          sums[q][l][k + 1] += hi[q].v[l];
+        for (int l = 0; l < 4; ++l) {
+          double* slot = sums[l] + lower[l] * kSums;
+          add_to(slot, _mm_mul_pd(lane_pair(f1, l), phases));
+          add_to(slot + kSums, _mm_mul_pd(lane_pair(f2, l), phases));
         }
       }
       if (sees_ground) {
@@ -303,18 +307,12 @@ __attribute__((target("avx2"))) void four_texels(const DensitySphere& s, const d
         __m256d c0, c1, fe;
         texture_axes(u, s.n_e, c0, c1, fe);
         const __m256d fe1 = _mm256_sub_pd(one, fe);
-        _mm256_store_pd(g_lo_r.v, _mm256_mul_pd(fe1, pr));
-        _mm256_store_pd(g_hi_r.v, _mm256_mul_pd(fe, pr));
-        _mm256_store_pd(g_lo_m.v, _mm256_mul_pd(fe1, pm));
-        _mm256_store_pd(g_hi_m.v, _mm256_mul_pd(fe, pm));
         store_indices(c0, g_first);
         store_indices(c1, g_second);
         for (int l = 0; l < 4; ++l) {
           const int e0 = g_first[l], e1 = g_second[l];
-          g_r[l][e0] += g_lo_r.v[l];
-          g_r[l][e1] += g_hi_r.v[l];
-          g_m[l][e0] += g_lo_m.v[l];
-          g_m[l][e1] += g_hi_m.v[l];
+          add_to(ground[l] + 2 * e0, _mm_mul_pd(lane_pair(fe1, l), phases));
+          add_to(ground[l] + 2 * e1, _mm_mul_pd(lane_pair(fe, l), phases));
           lowest[l] = std::min(lowest[l], e0);
           highest[l] = std::max(highest[l], e1);
         }

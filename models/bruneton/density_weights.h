@@ -48,14 +48,17 @@ struct DensitySphere {
   bool first = false;  // the source is single scattering: its phases are applied here (b_*)
 };
 
-// The weights of `texels` texels. Profile weights of texel t at zenith i and nu slice k:
-// a_r, a_m (the profile a times the Rayleigh / Mie phase towards the view) and, for the first
-// order, b_r, b_m (profile b); slot n_nu of each zenith is scratch. Ground column weights g_r,
-// g_m: zero outside ground_range (lowest, highest column touched at zenith i, highest < lowest
-// for none); whoever reads them sets them back to zero.
+// The weights of `texels` texels. Profile weights of texel t at zenith i and nu slice k, next
+// to each other in `profile` (so that a direction adds its share to a slot in one vector
+// operation): a_r, a_m (the profile a times the Rayleigh / Mie phase towards the view) and, for
+// the first order, b_r, b_m (profile b); slot n_nu of each zenith is scratch. Ground column
+// weights g_r, g_m, next to each other in `ground`: zero outside ground_range (lowest, highest
+// column touched at zenith i, highest < lowest for none); whoever reads them sets them back to
+// zero (clear_column).
 struct DensityWeights {
   int texels = 0, n_theta = 0, n_nu = 0, n_e = 0;
-  std::vector<double> a_r, a_m, b_r, b_m, g_r, g_m;
+  int per_slot = 2;  // weights per profile slot: 2, or 4 for the first order
+  std::vector<double> profile, ground;
   std::vector<std::pair<int, int>> ground_range;
 
   // Sizes the arrays for `texels` texels (room for a multiple of 4) and zeroes the profile
@@ -69,6 +72,16 @@ struct DensityWeights {
   }
   std::pair<int, int>& range(int t, int i) {
     return ground_range[static_cast<std::size_t>(t) * n_theta + i];
+  }
+  double a_r(std::size_t slot) const { return profile[slot * per_slot]; }
+  double a_m(std::size_t slot) const { return profile[slot * per_slot + 1]; }
+  double b_r(std::size_t slot) const { return profile[slot * per_slot + 2]; }
+  double b_m(std::size_t slot) const { return profile[slot * per_slot + 3]; }
+  double g_r(std::size_t column) const { return ground[2 * column]; }
+  double g_m(std::size_t column) const { return ground[2 * column + 1]; }
+  void clear_column(std::size_t column) {
+    ground[2 * column] = 0.0;
+    ground[2 * column + 1] = 0.0;
   }
 };
 

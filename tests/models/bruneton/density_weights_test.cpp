@@ -97,19 +97,19 @@ void expect_same_weights(const Layer& layer, double mu) {
       // Slot n_nu is scratch; the others hold each sum bit for bit.
       for (int k = 0; k < n_nu; ++k) {
         const std::size_t s = fast.slot(t, i, k);
-        ASSERT_EQ(fast.a_r[s], reference.a_r[s]) << t << " " << i << " " << k;
-        ASSERT_EQ(fast.a_m[s], reference.a_m[s]) << t << " " << i << " " << k;
+        ASSERT_EQ(fast.a_r(s), reference.a_r(s)) << t << " " << i << " " << k;
+        ASSERT_EQ(fast.a_m(s), reference.a_m(s)) << t << " " << i << " " << k;
         if (layer.sphere.first) {
-          ASSERT_EQ(fast.b_r[s], reference.b_r[s]) << t << " " << i << " " << k;
-          ASSERT_EQ(fast.b_m[s], reference.b_m[s]) << t << " " << i << " " << k;
+          ASSERT_EQ(fast.b_r(s), reference.b_r(s)) << t << " " << i << " " << k;
+          ASSERT_EQ(fast.b_m(s), reference.b_m(s)) << t << " " << i << " " << k;
         }
       }
       ASSERT_EQ(fast.range(t, i), reference.range(t, i)) << t << " " << i;
       for (int c = 0; c < layer.sphere.n_e; ++c) {
         const std::size_t w = fast.column(t, i, c);
-        ASSERT_EQ(fast.g_r[w], reference.g_r[w]) << t << " " << i << " " << c;
-        ASSERT_EQ(fast.g_m[w], reference.g_m[w]) << t << " " << i << " " << c;
-        touched_ground = touched_ground || fast.g_r[w] != 0.0;
+        ASSERT_EQ(fast.g_r(w), reference.g_r(w)) << t << " " << i << " " << c;
+        ASSERT_EQ(fast.g_m(w), reference.g_m(w)) << t << " " << i << " " << c;
+        touched_ground = touched_ground || fast.g_r(w) != 0.0;
       }
     }
   }
@@ -159,11 +159,11 @@ TEST(DensityWeights, SumToThePhaseIntegralOfTheSky) {
     double sky = 0.0, ground = 0.0;
     for (int i = 0; i < layer.sphere.n_theta; ++i) {
       for (int k = 0; k < 8; ++k) {
-        const double w = weights.a_r[weights.slot(t, i, k)];
+        const double w = weights.a_r(weights.slot(t, i, k));
         ASSERT_TRUE(std::isfinite(w) && w >= 0.0);
         sky += w;
       }
-      for (int c = 0; c < layer.sphere.n_e; ++c) ground += weights.g_r[weights.column(t, i, c)];
+      for (int c = 0; c < layer.sphere.n_e; ++c) ground += weights.g_r(weights.column(t, i, c));
     }
     EXPECT_NEAR(sky, 1.0, 0.01) << t;
     double ground_directions = 0.0;
