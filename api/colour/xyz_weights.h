@@ -26,6 +26,13 @@ class XyzWeights {
   // functions at a 40 nm spacing would miss their peaks.
   static XyzWeights interpolating(const WavelengthGrid& grid);
   Xyz xyz(std::span<const double> spectrum) const;
+  // xyz() of count spectra of `length` values each, spectrum j at spectra + j * length (the
+  // rows of a SpectralBatch), into out[j]. Each is bit for bit xyz() of that spectrum: the same
+  // products added in the same order from 0, so that a skydome's colours are those of the
+  // per-pixel path. On processors with AVX2, four spectra per instruction (their values
+  // transposed four wavelengths at a time); AVX2 without FMA, whose fused multiply-adds would
+  // round differently from the products and sums of xyz().
+  void xyz_of_rows(const double* spectra, std::size_t length, std::size_t count, Xyz* out) const;
   // 683 Y: cd/m2 for a radiance.
   double luminance(std::span<const double> spectrum) const {
     return kMaxLuminousEfficacy * xyz(spectrum).y;

@@ -22,6 +22,7 @@
 #include "api/handlers/sky_radiance_query.h"
 #include "api/skydome/exr_compression.h"
 #include "api/skydome/exr_stream.h"
+#include "api/skydome/half_conversion.h"
 #include "api/skydome/png_stream.h"
 #include "api/skydome/skydome_ground.h"
 #include "api/skydome/skydome_options.h"
@@ -183,6 +184,24 @@ void add_sun_attributes(Imf::Header& header, const SkydomeRender::Settings& s) {
   }
 }
 
+// Whether a pixel's colour is a function of its XYZ alone (channels rgb or luminance by the
+// spectral method), which the fast path then computes for a whole piece at once.
+bool colour_from_xyz(const SkydomeRender::Settings& s) {
+  return !s.spectral_channels && !s.three_method;
+}
+
+// The channels of a pixel whose colour is a function of its XYZ (colour_from_xyz), A = 1 last.
+void write_xyz_colour(const SkydomeRender::Settings& s, float* px, const Xyz& xyz) {
+  px[channel_count(s) - 1] = 1.0f;
+  if (s.rgb_channels) {
+    const double rgb_scale =
+        s.options.units == PixelUnits::photometric ? kMaxLuminousEfficacy : 1.0;
+    write_rgb(px, xyz_to_linear_srgb(xyz), rgb_scale);
+  } else {
+    px[0] = static_cast<float>(kMaxLuminousEfficacy * xyz.y);
+  }
+}
+
 // One pixel's channels (channel_count(s) floats, channel-interleaved, A = 1 last) from its
 // spectral radiance l on the model's grid.
 void write_pixel(const SkydomeRender::Settings& s, float* px, std::span<const double> l) {
@@ -200,12 +219,7 @@ void write_pixel(const SkydomeRender::Settings& s, float* px, std::span<const do
       px[0] = static_cast<float>(kMaxLuminousEfficacy * linear_srgb_to_xyz(c).y);
     }
   } else {
-    const Xyz xyz = s.xyz->xyz(l);
-    if (s.rgb_channels) {
-      write_rgb(px, xyz_to_linear_srgb(xyz), rgb_scale);
-    } else {
-      px[0] = static_cast<float>(kMaxLuminousEfficacy * xyz.y);
-    }
+    write_xyz_colour(s, px, s.xyz->xyz(l));
   }
 }
 
@@ -253,6 +267,74 @@ void compute_pixels(const SkydomeRender::Settings& s, int y, int x_begin, int x_
   }
 }
 
+// What a worker of the fast path reuses from piece to piece, so that a piece allocates nothing
+// once the first has sized them.
+struct PieceScratch {
+  std::vector<ViewDirection> views;
+  std::vector<int> columns, ground_columns;
+  SpectralBatch batch;
+  std::vector<Xyz> xyz;
+  std::vector<double> with_sun;
+};
+
+// compute_pixels() on the fast path: the same pixels (every float the same), with the piece's
+// buffers reused, and, when the colour is a function of the XYZ, the XYZ of every answered
+// view of the piece in one pass (XyzWeights::xyz_of_rows, bit for bit xyz() of each).
+void compute_pixels_fast(const SkydomeRender::Settings& s, int y, int x_begin, int x_end,
+                         float* row, std::atomic<int>& failed_pixels, PieceScratch& scratch) {
+  const std::size_t n_channels = channel_count(s);
+  std::vector<ViewDirection>& views = scratch.views;
+  std::vector<int>& columns = scratch.columns;
+  std::vector<int>& ground_columns = scratch.ground_columns;
+  views.clear();
+  columns.clear();
+  ground_columns.clear();
+  for (int x = x_begin; x < x_end; ++x) {
+    SkyDirection d;
+    if (!s.projection.direction(x, y, d)) continue;
+    // Below the horizon (skydome_options.h): hidden, the albedo ground, or the model.
+    if (d.zenith_rad > 0.5 * kPi && s.options.ground != Ground::model) {
+      if (s.options.ground == Ground::albedo) ground_columns.push_back(x);
+      continue;
+    }
+    views.push_back(d);
+    columns.push_back(x);
+  }
+  SpectralBatch& batch = scratch.batch;
+  if (!views.empty()) s.m.model->sky_radiance(*s.sun_state, s.viewpoint, views, batch);
+  const bool xyz_colour = colour_from_xyz(s);
+  if (xyz_colour && !views.empty()) {
+    scratch.xyz.resize(views.size());
+    s.xyz->xyz_of_rows(batch.values.data(), batch.wavelength_count, views.size(),
+                       scratch.xyz.data());
+  }
+  const bool disc_row = s.disc && s.disc->covers_row(y);
+  const auto emit = [&](int x, std::span<const double> l) {
+    if (disc_row) {
+      if (const SolarDiscPixels::Pixel* sun_pixel = s.disc->find(x, y)) {
+        scratch.with_sun.assign(l.begin(), l.end());
+        for (std::size_t w = 0; w < scratch.with_sun.size(); ++w)
+          scratch.with_sun[w] += sun_pixel->radiance[w];
+        l = scratch.with_sun;
+      }
+    }
+    write_pixel(s, row + static_cast<std::size_t>(x) * n_channels, l);
+  };
+  for (int x : ground_columns) emit(x, s.ground_radiance.values());
+  for (std::size_t k = 0; k < views.size(); ++k) {
+    if (batch.status[k] != SampleStatus::ok) {
+      if (batch.status[k] != SampleStatus::view_below_horizon_unsupported) ++failed_pixels;
+      continue;
+    }
+    const int x = columns[k];
+    if (xyz_colour && !(disc_row && s.disc->find(x, y) != nullptr)) {
+      write_xyz_colour(s, row + static_cast<std::size_t>(x) * n_channels, scratch.xyz[k]);
+    } else {
+      emit(x, batch.spectrum(k));
+    }
+  }
+}
+
 // Whether row y of a latlong map is wholly below the horizon with nothing but the ground's
 // pixel (or nothing) in it: no model answer there (ground albedo or none) and no disc pixel.
 bool row_is_plain_ground(const SkydomeRender::Settings& s, int y) {
@@ -264,41 +346,62 @@ bool row_is_plain_ground(const SkydomeRender::Settings& s, int y) {
 // channel-interleaved, the coverage A last), over the cores in pieces of kPiecePixels. Both
 // writers (the EXR and the PNG) take their pixels from here. The fast path fills the plain
 // ground rows with s.ground_pixel, the pixel compute_pixels() writes for every one of them
-// (the same function of the same radiance), so both paths give the same floats.
+// (the same function of the same radiance), so both paths give the same floats, and computes
+// the other pixels with compute_pixels_fast(), one PieceScratch per worker (scratch: at least
+// worker_count(threads) of them; unused on the per-pixel path).
 // With band_half (half pixels), each piece is also converted to half on the core that computed
 // it, rather than the whole band afterwards on the writing thread (the per-pixel path keeps
-// that serial conversion, as earlier releases did); the conversion is the same.
+// that serial conversion, as earlier releases did); the conversion gives the same bits
+// (half_conversion.h).
 void compute_band(const SkydomeRender::Settings& s, int y0, int rows, float* band, unsigned threads,
                   std::atomic<int>& failed_pixels, SkydomePixelPath path,
-                  half* band_half = nullptr) {
+                  std::vector<PieceScratch>& scratch, half* band_half = nullptr) {
   const int width = s.projection.width();
   const std::size_t n_channels = channel_count(s);
   const std::size_t pieces = static_cast<std::size_t>((width + kPiecePixels - 1) / kPiecePixels);
+  const std::size_t tasks = static_cast<std::size_t>(rows) * pieces;
+  const auto piece = [&](std::size_t task, PieceScratch* piece_scratch) {
+    const std::size_t r = task / pieces;
+    const int y = y0 + static_cast<int>(r);
+    const int x_begin = static_cast<int>(task % pieces) * kPiecePixels;
+    const int x_end = std::min(width, x_begin + kPiecePixels);
+    float* row = band + r * static_cast<std::size_t>(width) * n_channels;
+    float* first = row + static_cast<std::size_t>(x_begin) * n_channels;
+    float* last = row + static_cast<std::size_t>(x_end) * n_channels;
+    if (path == SkydomePixelPath::fast && row_is_plain_ground(s, y)) {
+      if (s.options.ground == Ground::albedo) {
+        for (float* px = first; px != last; px += n_channels)
+          std::copy(s.ground_pixel.begin(), s.ground_pixel.end(), px);
+      } else {
+        std::fill(first, last, 0.0f);
+      }
+    } else {
+      std::fill(first, last, 0.0f);
+      if (piece_scratch != nullptr) {
+        compute_pixels_fast(s, y, x_begin, x_end, row, failed_pixels, *piece_scratch);
+      } else {
+        compute_pixels(s, y, x_begin, x_end, row, failed_pixels);
+      }
+    }
+    if (band_half != nullptr)
+      floats_to_halves(first, band_half + (first - band), static_cast<std::size_t>(last - first));
+  };
+  if (path == SkydomePixelPath::per_pixel) {
+    parallel_for(
+        tasks, [&](std::size_t task) { piece(task, nullptr); }, threads);
+    return;
+  }
+  // One call per worker, each taking pieces in turn until none is left (the dynamic schedule
+  // of parallel_for, with the worker's own scratch).
+  const std::size_t workers = std::min<std::size_t>(worker_count(threads), tasks);
+  if (scratch.size() < workers)
+    throw std::logic_error("skydome: fewer scratch buffers than workers");
+  std::atomic<std::size_t> next{0};
   parallel_for(
-      static_cast<std::size_t>(rows) * pieces,
-      [&](std::size_t task) {
-        const std::size_t r = task / pieces;
-        const int y = y0 + static_cast<int>(r);
-        const int x_begin = static_cast<int>(task % pieces) * kPiecePixels;
-        const int x_end = std::min(width, x_begin + kPiecePixels);
-        float* row = band + r * static_cast<std::size_t>(width) * n_channels;
-        float* first = row + static_cast<std::size_t>(x_begin) * n_channels;
-        float* last = row + static_cast<std::size_t>(x_end) * n_channels;
-        if (path == SkydomePixelPath::fast && row_is_plain_ground(s, y)) {
-          if (s.options.ground == Ground::albedo) {
-            for (float* px = first; px != last; px += n_channels)
-              std::copy(s.ground_pixel.begin(), s.ground_pixel.end(), px);
-          } else {
-            std::fill(first, last, 0.0f);
-          }
-        } else {
-          std::fill(first, last, 0.0f);
-          compute_pixels(s, y, x_begin, x_end, row, failed_pixels);
-        }
-        if (band_half != nullptr) {
-          half* out = band_half + (first - band);
-          for (const float* in = first; in != last; ++in, ++out) *out = half(*in);
-        }
+      workers,
+      [&](std::size_t worker) {
+        for (std::size_t task = next.fetch_add(1); task < tasks; task = next.fetch_add(1))
+          piece(task, &scratch[worker]);
       },
       threads);
 }
@@ -334,9 +437,10 @@ bool write_png(const SkydomeRender::Settings& s, const SkydomeRender::Sink& sink
                           static_cast<std::size_t>(width) * n_channels);
   std::vector<std::uint8_t> row(static_cast<std::size_t>(width) * 4);
   std::atomic<int> failed_pixels{0};
+  std::vector<PieceScratch> scratch(worker_count(threads));
   for (int y0 = 0; y0 < height; y0 += rows_per_band) {
     const int rows = std::min(rows_per_band, height - y0);
-    compute_band(s, y0, rows, band.data(), threads, failed_pixels, path);
+    compute_band(s, y0, rows, band.data(), threads, failed_pixels, path, scratch);
     for (int r = 0; r < rows; ++r) {
       const float* in = band.data() + static_cast<std::size_t>(r) * width * n_channels;
       for (int x = 0; x < width; ++x) {
@@ -634,10 +738,11 @@ bool SkydomeRender::write(const Sink& sink, unsigned threads, std::size_t* unans
     std::vector<float> band_float(band_pixels * n_channels);
     std::vector<half> band_half(s.half ? band_pixels * n_channels : 0);
     std::atomic<int> failed_pixels{0};
+    std::vector<PieceScratch> scratch(worker_count(threads));
     for (int y0 = 0; y0 < height; y0 += rows_per_band) {
       const int rows = std::min(rows_per_band, height - y0);
       const bool convert_in_band = s.half && path == SkydomePixelPath::fast;
-      compute_band(s, y0, rows, band_float.data(), threads, failed_pixels, path,
+      compute_band(s, y0, rows, band_float.data(), threads, failed_pixels, path, scratch,
                    convert_in_band ? band_half.data() : nullptr);
 
       Imf::FrameBuffer frame;

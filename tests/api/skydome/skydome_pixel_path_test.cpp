@@ -47,6 +47,11 @@ TEST(SkydomePixelPath, FastGivesTheBytesOfThePerPixelReference) {
        {"compression", "zip"}},
       {{"model", "preetham"}, {"projection", "latlong"}, {"format", "png"}},
       {{"model", "preetham"}, {"projection", "fisheye"}, {"ground", "albedo"}},
+      // The fast path's XYZ of a whole piece (XyzWeights::xyz_of_rows): RGB, luminance, the
+      // disc's pixels (computed one by one among the others) and a second model.
+      {{"model", "preetham"}, {"projection", "fisheye"}, {"channels", "luminance"}},
+      {{"model", "preetham"}, {"projection", "fisheye"}, {"sun", "disc"}},
+      {{"model", "hosek"}, {"projection", "fisheye"}, {"ground", "albedo"}},
       {{"model", "oneal"}, {"projection", "latlong"}, {"ground", "model"}},
   };
   for (const NameValues& query : cases) {
