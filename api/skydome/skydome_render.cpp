@@ -223,15 +223,24 @@ void write_pixel(const SkydomeRender::Settings& s, float* px, std::span<const do
   }
 }
 
-// The pixels [x_begin, x_end) of row y (row: the row's first pixel) one by one: each pixel's
-// direction, the sky the model answers, the ground below the horizon (skydome_options.h) and
-// the sun's disc (sun_disc.h).
-void compute_pixels(const SkydomeRender::Settings& s, int y, int x_begin, int x_end, float* row,
-                    std::atomic<int>& failed_pixels) {
-  const std::size_t n_channels = channel_count(s);
-  std::vector<ViewDirection> views;
-  std::vector<int> columns, ground_columns;
-  views.reserve(static_cast<std::size_t>(x_end - x_begin));
+// A pixel's radiance l, plus the sun's disc (sun_disc.h) when the disc covers pixel (x, y) of
+// a row it crosses (disc_row): then the sum is written into buffer and returned.
+std::span<const double> with_disc(const SkydomeRender::Settings& s, int x, int y, bool disc_row,
+                                  std::span<const double> l, std::vector<double>& buffer) {
+  if (!disc_row) return l;
+  const SolarDiscPixels::Pixel* sun_pixel = s.disc->find(x, y);
+  if (sun_pixel == nullptr) return l;
+  buffer.assign(l.begin(), l.end());
+  for (std::size_t w = 0; w < buffer.size(); ++w) buffer[w] += sun_pixel->radiance[w];
+  return buffer;
+}
+
+// The pixels [x_begin, x_end) of row y sorted by what answers them: the views the model is
+// asked (views, their columns) and the ground's pixels below the horizon (ground_columns);
+// pixels outside the projection and hidden ground are in neither. Appends to the three lists.
+void gather_views(const SkydomeRender::Settings& s, int y, int x_begin, int x_end,
+                  std::vector<ViewDirection>& views, std::vector<int>& columns,
+                  std::vector<int>& ground_columns) {
   for (int x = x_begin; x < x_end; ++x) {
     SkyDirection d;
     if (!s.projection.direction(x, y, d)) continue;
@@ -243,19 +252,25 @@ void compute_pixels(const SkydomeRender::Settings& s, int y, int x_begin, int x_
     views.push_back(d);
     columns.push_back(x);
   }
+}
+
+// The pixels [x_begin, x_end) of row y (row: the row's first pixel) one by one: each pixel's
+// direction, the sky the model answers, the ground below the horizon (skydome_options.h) and
+// the sun's disc (sun_disc.h).
+void compute_pixels(const SkydomeRender::Settings& s, int y, int x_begin, int x_end, float* row,
+                    std::atomic<int>& failed_pixels) {
+  const std::size_t n_channels = channel_count(s);
+  std::vector<ViewDirection> views;
+  std::vector<int> columns, ground_columns;
+  views.reserve(static_cast<std::size_t>(x_end - x_begin));
+  gather_views(s, y, x_begin, x_end, views, columns, ground_columns);
   SpectralBatch batch;
   if (!views.empty()) s.m.model->sky_radiance(*s.sun_state, s.viewpoint, views, batch);
   const bool disc_row = s.disc && s.disc->covers_row(y);
   std::vector<double> with_sun;
   const auto emit = [&](int x, std::span<const double> l) {
-    if (disc_row) {
-      if (const SolarDiscPixels::Pixel* sun_pixel = s.disc->find(x, y)) {
-        with_sun.assign(l.begin(), l.end());
-        for (std::size_t w = 0; w < with_sun.size(); ++w) with_sun[w] += sun_pixel->radiance[w];
-        l = with_sun;
-      }
-    }
-    write_pixel(s, row + static_cast<std::size_t>(x) * n_channels, l);
+    write_pixel(s, row + static_cast<std::size_t>(x) * n_channels,
+                with_disc(s, x, y, disc_row, l, with_sun));
   };
   for (int x : ground_columns) emit(x, s.ground_radiance.values());
   for (std::size_t k = 0; k < views.size(); ++k) {
@@ -289,17 +304,7 @@ void compute_pixels_fast(const SkydomeRender::Settings& s, int y, int x_begin, i
   views.clear();
   columns.clear();
   ground_columns.clear();
-  for (int x = x_begin; x < x_end; ++x) {
-    SkyDirection d;
-    if (!s.projection.direction(x, y, d)) continue;
-    // Below the horizon (skydome_options.h): hidden, the albedo ground, or the model.
-    if (d.zenith_rad > 0.5 * kPi && s.options.ground != Ground::model) {
-      if (s.options.ground == Ground::albedo) ground_columns.push_back(x);
-      continue;
-    }
-    views.push_back(d);
-    columns.push_back(x);
-  }
+  gather_views(s, y, x_begin, x_end, views, columns, ground_columns);
   SpectralBatch& batch = scratch.batch;
   if (!views.empty()) s.m.model->sky_radiance(*s.sun_state, s.viewpoint, views, batch);
   const bool xyz_colour = colour_from_xyz(s);
@@ -310,15 +315,8 @@ void compute_pixels_fast(const SkydomeRender::Settings& s, int y, int x_begin, i
   }
   const bool disc_row = s.disc && s.disc->covers_row(y);
   const auto emit = [&](int x, std::span<const double> l) {
-    if (disc_row) {
-      if (const SolarDiscPixels::Pixel* sun_pixel = s.disc->find(x, y)) {
-        scratch.with_sun.assign(l.begin(), l.end());
-        for (std::size_t w = 0; w < scratch.with_sun.size(); ++w)
-          scratch.with_sun[w] += sun_pixel->radiance[w];
-        l = scratch.with_sun;
-      }
-    }
-    write_pixel(s, row + static_cast<std::size_t>(x) * n_channels, l);
+    write_pixel(s, row + static_cast<std::size_t>(x) * n_channels,
+                with_disc(s, x, y, disc_row, l, scratch.with_sun));
   };
   for (int x : ground_columns) emit(x, s.ground_radiance.values());
   for (std::size_t k = 0; k < views.size(); ++k) {
