@@ -611,7 +611,7 @@ Json operations() {
         "content": {
           "application/json": {
             "schema": {"$ref": "#/components/schemas/Radiance"},
-            "example": {"altitude_m": 0.0, "grid": "points", "model": "preetham", "model_version": "1", "quality": "standard", "quality_error": {"against": "reference", "max_relative": 0.0, "p95_relative": 0.0}, "quality_setting": {}, "served_quality": "standard", "samples": [{"radiance": [0.16657478187859964, 0.07732172727214032, 0.03455196147970835], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}], "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}, "unit": "W/(m2.sr.nm)", "wavelengths_nm": [450.0, 550.0, 650.0]}
+            "example": {"altitude_m": 0.0, "grid": "points", "model": "preetham", "model_version": "2", "quality": "standard", "quality_error": {"against": "reference", "max_relative": 0.0, "p95_relative": 0.0}, "quality_setting": {}, "served_quality": "standard", "samples": [{"radiance": [0.16657478187859961, 0.07732172727214033, 0.03455196147970835], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}], "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}, "unit": "W/(m2.sr.nm)", "wavelengths_nm": [450.0, 550.0, 650.0]}
           },
           "text/csv": {
             "schema": {"$ref": "#/components/schemas/RadianceCsv"},
@@ -639,7 +639,7 @@ Json operations() {
         "content": {
           "application/json": {
             "schema": {"$ref": "#/components/schemas/Radiance"},
-            "example": {"altitude_m": 0.0, "grid": "points", "model": "preetham", "model_version": "1", "quality": "standard", "quality_error": {"against": "reference", "max_relative": 0.0, "p95_relative": 0.0}, "quality_setting": {}, "served_quality": "standard", "samples": [{"radiance": [0.16657478187859964, 0.07732172727214032, 0.03455196147970835], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}, {"radiance": [0.27521367017693504, 0.14807347448705338, 0.08606376978831415], "view_azimuth_deg": 90.0, "view_zenith_deg": 60.0}], "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}, "unit": "W/(m2.sr.nm)", "wavelengths_nm": [450.0, 550.0, 650.0]}
+            "example": {"altitude_m": 0.0, "grid": "points", "model": "preetham", "model_version": "2", "quality": "standard", "quality_error": {"against": "reference", "max_relative": 0.0, "p95_relative": 0.0}, "quality_setting": {}, "served_quality": "standard", "samples": [{"radiance": [0.16657478187859961, 0.07732172727214033, 0.03455196147970835], "view_azimuth_deg": 0.0, "view_zenith_deg": 45.0}, {"radiance": [0.27521367017693504, 0.14807347448705338, 0.08606376978831415], "view_azimuth_deg": 90.0, "view_zenith_deg": 60.0}], "sun": {"azimuth_deg": 135.0, "source": "given", "zenith_deg": 30.0}, "unit": "W/(m2.sr.nm)", "wavelengths_nm": [450.0, 550.0, 650.0]}
           },
           "text/csv": {"schema": {"$ref": "#/components/schemas/RadianceCsv"}}
         }
