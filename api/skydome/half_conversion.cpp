@@ -27,10 +27,12 @@ __attribute__((target("avx,f16c"))) void floats_to_halves_f16c(const float* in, 
         _mm256_cvtps_ph(_mm256_loadu_ps(in + i), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
     _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), h);
   }
+  // The tail one float at a time, by the 128-bit form (_cvtss_sh is the same instruction, but
+  // clang's macro for it is a compound literal, which -Wc99-extensions refuses).
   for (; i < n; ++i) {
-    const auto bits =
-        static_cast<std::uint16_t>(_cvtss_sh(in[i], _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC));
-    out[i].setBits(bits);
+    const __m128i h =
+        _mm_cvtps_ph(_mm_set_ss(in[i]), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+    out[i].setBits(static_cast<std::uint16_t>(_mm_cvtsi128_si32(h)));
   }
 }
 
