@@ -15,7 +15,7 @@ build_packages=(
   libcpp-httplib-dev libssl-dev zlib1g-dev nlohmann-json3-dev
   libopenexr-dev libpng-dev libgeographiclib-dev
   libsqlite3-dev libarchive-dev libxxhash-dev
-  prometheus-cpp-dev libspdlog-dev libcli11-dev libnlopt-cxx-dev
+  prometheus-cpp-dev libspdlog-dev libfmt-dev libcli11-dev libnlopt-cxx-dev
   libhowardhinnant-date-dev tzdata
 )
 packages=(

@@ -1,8 +1,11 @@
-// JSON text as nlohmann::json's dump() writes it (json_text.h).
+// JSON text laid out as nlohmann::json's dump() writes it (json_text.h).
 #include "api/encode/json_text.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -14,10 +17,60 @@ void append_json_number(std::string& out, double value) {
     out += "null";
     return;
   }
-  // nlohmann's serializer formats into a 64-byte buffer with this very function (dump_float).
-  std::array<char, 64> buffer;
-  char* end = nlohmann::detail::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  out.append(buffer.data(), static_cast<std::size_t>(end - buffer.data()));
+  // At most a sign, 17 digits, "0." and 3 zeros, or a point and "e-308": 24 bytes.
+  std::array<char, 32> buffer;
+  char* p = buffer.data();
+  if (std::signbit(value)) {
+    *p++ = '-';
+    value = -value;
+  }
+  if (value == 0.0) {
+    out.append(buffer.data(), p);
+    out += "0.0";
+    return;
+  }
+  // value = significand * 10^exponent, the significand's decimal digits the shortest that
+  // round-trip (Dragonbox; fmt's public formatting lays them out unlike dump(), so its digit
+  // generator is called directly: Debian's libfmt 9 exports it).
+  const auto decimal = fmt::detail::dragonbox::to_decimal(value);
+  // Two digits a step (fmt::format_int: about a quarter fewer instructions than std::to_chars).
+  const fmt::format_int significand(decimal.significand);
+  const char* const digits = significand.data();
+  const char* const digits_end = digits + significand.size();
+  const int k = static_cast<int>(significand.size());
+  // The decimal point's position after the first digit: value = 0.d1d2...dk * 10^n.
+  const int n = k + decimal.exponent;
+  // dump()'s layout (nlohmann's dtoa_impl::format_buffer, min_exp -4, max_exp 15).
+  constexpr int min_exp = -4;
+  constexpr int max_exp = 15;
+  if (k <= n && n <= max_exp) {  // digits[000].0
+    p = std::copy(digits, digits_end, p);
+    p = std::fill_n(p, n - k, '0');
+    *p++ = '.';
+    *p++ = '0';
+  } else if (0 < n && n <= max_exp) {  // dig.its
+    p = std::copy(digits, digits + n, p);
+    *p++ = '.';
+    p = std::copy(digits + n, digits_end, p);
+  } else if (min_exp < n && n <= 0) {  // 0.[000]digits
+    *p++ = '0';
+    *p++ = '.';
+    p = std::fill_n(p, -n, '0');
+    p = std::copy(digits, digits_end, p);
+  } else {  // d[.igits]e+XX, the exponent with at least two digits
+    *p++ = digits[0];
+    if (k > 1) {
+      *p++ = '.';
+      p = std::copy(digits + 1, digits_end, p);
+    }
+    *p++ = 'e';
+    int e = n - 1;
+    *p++ = e < 0 ? '-' : '+';
+    if (e < 0) e = -e;
+    if (e < 10) *p++ = '0';
+    p = std::to_chars(p, buffer.data() + buffer.size(), e).ptr;
+  }
+  out.append(buffer.data(), p);
 }
 
 void append_finite_json_number(std::string& out, double value) {

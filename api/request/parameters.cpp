@@ -37,7 +37,7 @@ std::string lower_case(std::string_view s) {
 
 }  // namespace
 
-double number_value(const std::string& parameter, std::string_view text) {
+double number_value(std::string_view parameter, std::string_view text) {
   text = trim(text);
   // from_chars rejects a leading '+', which people write; skip one before a digit or '.' only
   // (so that "+-1" and "++1" stay errors).
@@ -47,9 +47,10 @@ double number_value(const std::string& parameter, std::string_view text) {
   double value = 0.0;
   const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   if (text.empty() || error != std::errc() || end != digits.data() + digits.size()) {
-    throw invalid_parameter(parameter, "'" + std::string(text) + "' is not a number");
+    throw invalid_parameter(std::string(parameter), "'" + std::string(text) + "' is not a number");
   }
-  if (!std::isfinite(value)) throw invalid_parameter(parameter, "must be a finite number");
+  if (!std::isfinite(value))
+    throw invalid_parameter(std::string(parameter), "must be a finite number");
   return value;
 }
 
@@ -61,7 +62,7 @@ void Parameters::add(const std::string& name, std::string value) {
                             "a parameter name must be UTF-8 (percent-encoded bytes included)");
   if (!is_valid_utf8(value))
     throw invalid_parameter(name, "the value is not UTF-8 (percent-encoded bytes included)");
-  if (!values_.emplace(name, std::move(value)).second) {
+  if (!values_.emplace(name, Value{std::move(value)}).second) {
     throw ApiError::about(400, "duplicate_parameter", name, "given more than once");
   }
 }
@@ -93,62 +94,67 @@ Parameters Parameters::from_json_object(std::string endpoint, const nlohmann::js
 
 bool Parameters::has_any(std::initializer_list<std::string_view> names) const {
   for (std::string_view n : names)
-    if (values_.contains(std::string(n))) return true;
+    if (values_.contains(n)) return true;
   return false;
 }
 
-std::optional<std::string> Parameters::text(const std::string& name) {
+const std::string* Parameters::read(std::string_view name) {
   const auto it = values_.find(name);
-  if (it == values_.end()) return std::nullopt;
-  used_.insert(name);
-  return it->second;
+  if (it == values_.end()) return nullptr;
+  it->second.used = true;
+  return &it->second.text;
 }
 
-std::string Parameters::required_text(const std::string& name) {
-  auto value = text(name);
-  if (!value) throw missing_parameter(name);
+std::optional<std::string> Parameters::text(std::string_view name) {
+  const std::string* value = read(name);
+  if (value == nullptr) return std::nullopt;
   return *value;
 }
 
-std::optional<double> Parameters::number(const std::string& name, double min, double max) {
-  const auto value = text(name);
-  if (!value) return std::nullopt;
+std::string Parameters::required_text(std::string_view name) {
+  auto value = text(name);
+  if (!value) throw missing_parameter(std::string(name));
+  return *value;
+}
+
+std::optional<double> Parameters::number(std::string_view name, double min, double max) {
+  const std::string* value = read(name);
+  if (value == nullptr) return std::nullopt;
   const double x = number_value(name, *value);
   if (!(x >= min && x <= max)) {
-    throw invalid_parameter(name,
+    throw invalid_parameter(std::string(name),
                             "must be in [" + format_limit(min) + ", " + format_limit(max) + "]");
   }
   return x;
 }
 
-double Parameters::number_or(const std::string& name, double fallback, double min, double max) {
+double Parameters::number_or(std::string_view name, double fallback, double min, double max) {
   return number(name, min, max).value_or(fallback);
 }
 
-double Parameters::required_number(const std::string& name, double min, double max) {
+double Parameters::required_number(std::string_view name, double min, double max) {
   const auto x = number(name, min, max);
-  if (!x) throw missing_parameter(name);
+  if (!x) throw missing_parameter(std::string(name));
   return *x;
 }
 
-std::optional<long long> Parameters::integer(const std::string& name, long long min,
-                                             long long max) {
+std::optional<long long> Parameters::integer(std::string_view name, long long min, long long max) {
   const auto value = text(name);
   if (!value) return std::nullopt;
   const std::string_view t = trim(*value);
   long long x = 0;
   const auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), x);
   if (t.empty() || error != std::errc() || end != t.data() + t.size()) {
-    throw invalid_parameter(name, "'" + *value + "' is not an integer");
+    throw invalid_parameter(std::string(name), "'" + *value + "' is not an integer");
   }
   if (x < min || x > max) {
     throw invalid_parameter(
-        name, "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
+        std::string(name), "must be in [" + std::to_string(min) + ", " + std::to_string(max) + "]");
   }
   return x;
 }
 
-std::string Parameters::choice(const std::string& name,
+std::string Parameters::choice(std::string_view name,
                                std::initializer_list<std::string_view> choices,
                                std::string_view fallback) {
   const auto value = text(name);
@@ -158,21 +164,21 @@ std::string Parameters::choice(const std::string& name,
     if (c == *value) return *value;
     list += (list.empty() ? "" : ", ") + std::string(c);
   }
-  throw invalid_parameter(name, "'" + *value + "' is not one of " + list);
+  throw invalid_parameter(std::string(name), "'" + *value + "' is not one of " + list);
 }
 
-bool Parameters::boolean_or(const std::string& name, bool fallback) {
+bool Parameters::boolean_or(std::string_view name, bool fallback) {
   const auto value = text(name);
   if (!value) return fallback;
   const std::string word = lower_case(trim(*value));
   if (word == "true" || word == "1" || word == "yes") return true;
   if (word == "false" || word == "0" || word == "no") return false;
-  throw invalid_parameter(name, "must be true or false");
+  throw invalid_parameter(std::string(name), "must be true or false");
 }
 
 void Parameters::reject_unused() const {
   for (const auto& [name, value] : values_) {
-    if (!used_.contains(name)) throw unknown_parameter(name, endpoint_);
+    if (!value.used) throw unknown_parameter(name, endpoint_);
   }
 }
 

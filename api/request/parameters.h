@@ -11,7 +11,6 @@
 #include <map>
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
-#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,34 +30,42 @@ class Parameters {
                                      std::initializer_list<std::string_view> structured);
 
   const std::string& endpoint() const { return endpoint_; }
-  bool has(const std::string& name) const { return values_.contains(name); }
+  bool has(std::string_view name) const { return values_.contains(name); }
   // Whether any of the names is present (without marking them used).
   bool has_any(std::initializer_list<std::string_view> names) const;
 
-  std::optional<std::string> text(const std::string& name);
-  std::string required_text(const std::string& name);
+  std::optional<std::string> text(std::string_view name);
+  std::string required_text(std::string_view name);
   // A finite number in [min, max].
-  std::optional<double> number(const std::string& name, double min, double max);
-  double number_or(const std::string& name, double fallback, double min, double max);
-  double required_number(const std::string& name, double min, double max);
+  std::optional<double> number(std::string_view name, double min, double max);
+  double number_or(std::string_view name, double fallback, double min, double max);
+  double required_number(std::string_view name, double min, double max);
   // An integer in [min, max].
-  std::optional<long long> integer(const std::string& name, long long min, long long max);
+  std::optional<long long> integer(std::string_view name, long long min, long long max);
   // One of choices; fallback when absent.
-  std::string choice(const std::string& name, std::initializer_list<std::string_view> choices,
+  std::string choice(std::string_view name, std::initializer_list<std::string_view> choices,
                      std::string_view fallback);
   // true/false (also 1/0 and yes/no, in any case).
-  bool boolean_or(const std::string& name, bool fallback);
+  bool boolean_or(std::string_view name, bool fallback);
 
   // Throws a 400 naming the first parameter that was given but never read.
   void reject_unused() const;
 
  private:
+  // A value and whether a handler has read it. Names are looked up as string_views
+  // (std::less<>), so that reading a parameter by a literal name allocates nothing.
+  struct Value {
+    std::string text;
+    bool used = false;
+  };
+  // The value named, marked used; nullptr when absent.
+  const std::string* read(std::string_view name);
+
   std::string endpoint_;
-  std::map<std::string, std::string> values_;
-  std::set<std::string> used_;
+  std::map<std::string, Value, std::less<>> values_;
 };
 
 // Strict number parsing for parameter values and list items (400 naming parameter).
-double number_value(const std::string& parameter, std::string_view text);
+double number_value(std::string_view parameter, std::string_view text);
 
 }  // namespace clearsky::api

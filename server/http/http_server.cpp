@@ -14,6 +14,7 @@
 #include "api/routes/data_access.h"
 #include "api/routes/route_match.h"
 #include "server/http/connection_server.h"
+#include "server/http/header_text.h"
 #include "server/http/request_body.h"
 #include "storage/sqlite/database.h"
 
@@ -298,7 +299,11 @@ void HttpServer::send(const httplib::Request& req, httplib::Response& res,
         response);
   }
   res.status = response.status;
-  for (const auto& [name, value] : response.headers) res.set_header(name, value);
+  // What cpp-httplib's set_header() does (header_text.h), the texts moved rather than copied.
+  for (auto& [name, value] : response.headers) {
+    if (holds_line_break(name) || holds_line_break(value)) continue;
+    res.headers.emplace(std::move(name), std::move(value));
+  }
   current_request.model = response.model_id;
   if (response.stream) {
     res.set_chunked_content_provider(

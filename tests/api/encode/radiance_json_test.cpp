@@ -1,13 +1,18 @@
 // The /v1/radiance answer written as text (api/encode/radiance_json.h, json_text.h) against the
-// nlohmann::json DOM it replaced, byte for byte: numbers over many doubles (zero, negatives,
-// integers held as doubles, tiny and huge exponents, random bit patterns), strings, and whole
-// answers for every registered model, bin and point grids, views, altitudes, suns, quality
-// levels (asked, served lower, options overridden) and a fit; then the handler's own answers.
+// nlohmann::json DOM it replaced: numbers over many doubles (zero, negatives, integers held as
+// doubles, tiny and huge exponents, random bit patterns) are the shortest digits that read back
+// as the same double, laid out as dump() lays out its own digits; strings and objects are
+// dump()'s bytes; whole answers for every registered model, bin and point grids, views,
+// altitudes, suns, quality levels (asked, served lower, options overridden) and a fit hold the
+// DOM's values in its order; then the handler's own answers.
 #include "api/encode/radiance_json.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <bit>
+#include <charconv>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -74,13 +79,59 @@ std::vector<double> varied_doubles() {
   return xs;
 }
 
-TEST(JsonText, NumbersAreDumpsBytes) {
+// The significant digits of a number's text (sign, point, leading zeros and exponent dropped).
+std::string significant_digits(std::string_view text) {
+  std::string digits;
+  for (const char c : text.substr(0, text.find('e')))
+    if (c >= '0' && c <= '9' && !(digits.empty() && c == '0')) digits += c;
+  while (!digits.empty() && digits.back() == '0') digits.pop_back();
+  return digits;
+}
+
+TEST(JsonText, NumbersAreTheShortestDigitsInDumpsLayout) {
   std::size_t checked = 0;
+  std::size_t as_dump = 0;
   for (const double x : varied_doubles()) {
-    ASSERT_EQ(text_of(x), nlohmann::json(x).dump()) << std::hexfloat << x;
+    const std::string text = text_of(x);
+    // Reads back as the very double.
+    double back = 0.0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), back);
+    ASSERT_TRUE(error == std::errc() && end == text.data() + text.size()) << text;
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(back), std::bit_cast<std::uint64_t>(x)) << text;
+    // Its digits are the shortest round-trip ones, and of those the closest: std::to_chars'.
+    std::array<char, 64> shortest;
+    const char* shortest_end = std::to_chars(shortest.data(), shortest.data() + shortest.size(), x,
+                                             std::chars_format::scientific)
+                                   .ptr;
+    ASSERT_EQ(significant_digits(text),
+              significant_digits(
+                  {shortest.data(), static_cast<std::size_t>(shortest_end - shortest.data())}))
+        << text;
+    // Laid out as dump() lays out digits: where dump()'s Grisu2 found the same digits, the
+    // bytes are dump()'s; elsewhere dump() has as many digits or more.
+    const std::string dump = nlohmann::json(x).dump();
+    if (significant_digits(dump) == significant_digits(text)) {
+      ASSERT_EQ(text, dump) << std::hexfloat << x;
+      ++as_dump;
+    } else {
+      ASSERT_LE(significant_digits(text).size(), significant_digits(dump).size()) << text;
+    }
     ++checked;
   }
   EXPECT_GT(checked, 500000u);
+  // Grisu2 misses the shortest or closest digits for a few doubles in a hundred of this mix
+  // (2.1%), and about one in 1,500 values between 1e-12 and 1e4 such as radiances.
+  EXPECT_GT(as_dump, checked * 95 / 100);
+  EXPECT_EQ(text_of(0.0), "0.0");
+  EXPECT_EQ(text_of(-0.0), "-0.0");
+  EXPECT_EQ(text_of(45.0), "45.0");
+  EXPECT_EQ(text_of(1e14), "100000000000000.0");
+  EXPECT_EQ(text_of(1e15), "1e+15");
+  EXPECT_EQ(text_of(1e16), "1e+16");
+  EXPECT_EQ(text_of(0.0001), "0.0001");
+  EXPECT_EQ(text_of(0.00001), "1e-05");
+  EXPECT_EQ(text_of(1.5e-300), "1.5e-300");
+  EXPECT_EQ(text_of(0.07192248733802487), "0.07192248733802487");
   EXPECT_EQ(text_of(std::numeric_limits<double>::quiet_NaN()), "null");
   EXPECT_EQ(text_of(-std::numeric_limits<double>::infinity()), "null");
   std::string out;
@@ -134,6 +185,24 @@ TEST(JsonText, ObjectMembersInTheDomsOrder) {
   std::string out;
   text.append_to(out);
   EXPECT_EQ(out, dom.dump());
+}
+
+// Whether every object of the text, read in its written order, has its keys sorted bytewise as
+// dump() writes a DOM's (std::map) members.
+bool keys_sorted(const nlohmann::ordered_json& value) {
+  if (value.is_array()) {
+    return std::all_of(value.begin(), value.end(), [](const auto& v) { return keys_sorted(v); });
+  }
+  if (!value.is_object()) return true;
+  std::string previous;
+  bool first = true;
+  for (const auto& [key, member] : value.items()) {
+    if (!first && !(previous < key)) return false;
+    first = false;
+    previous = key;
+    if (!keys_sorted(member)) return false;
+  }
+  return true;
 }
 
 // The DOM the handler built before radiance_json (api/handlers/radiance_handler.cpp at 6b0bd27).
@@ -237,7 +306,10 @@ std::vector<QualityCase> quality_cases(const ModelDescriptor& d) {
   return out;
 }
 
-TEST(RadianceJson, AnswersAreTheDomsBytes) {
+// The answer holds the DOM's members and values; its text is the DOM's except where a number's
+// shortest digits are not Grisu2's (NumbersAreTheShortestDigitsInDumpsLayout), so it is compared
+// as the DOM's dump of the answer read back.
+TEST(RadianceJson, AnswersAreTheDomsValuesInItsOrder) {
   std::mt19937_64 random(7);
   std::size_t answers = 0;
   for (const ModelFactory& factory : registered_models()) {
@@ -253,7 +325,10 @@ TEST(RadianceJson, AnswersAreTheDomsBytes) {
             fit = AppliedFit{42, d.id, d.version, "rhodes_hall", false, {{"turbidity", 2.53}}};
           const RadianceAnswer a{d,       c.sun, c.viewpoint, c.grid,    wavelengths, c.indices,
                                  c.views, batch, qc.quality,  qc.served, fit};
-          ASSERT_EQ(radiance_json(a), dom_answer(a))
+          const std::string text = radiance_json(a);
+          const nlohmann::json read_back = nlohmann::json::parse(text);
+          ASSERT_TRUE(keys_sorted(nlohmann::ordered_json::parse(text))) << text;
+          ASSERT_EQ(read_back.dump(), dom_answer(a))
               << d.id << " quality " << to_string(qc.quality.level) << " served "
               << to_string(qc.served);
           ++answers;
@@ -281,8 +356,8 @@ TEST(RadianceJson, ANonFiniteRadianceIsNeverSent) {
   EXPECT_THROW(radiance_json(a), std::logic_error);
 }
 
-// The handler's answers, on real models: parsed and dumped again, nlohmann gives the same bytes
-// (its numbers round-trip, its keys are sorted), so nothing in them is written otherwise.
+// The handler's answers, on real models: read back in their written order, every object's keys
+// are sorted as the DOM's are.
 TEST(RadianceJson, HandlerAnswersAreWhatTheDomDumps) {
   clearsky::testing::SynchronousProvider provider{
       std::vector<ModelFactory>(registered_models().begin(), registered_models().end())};
@@ -306,7 +381,7 @@ TEST(RadianceJson, HandlerAnswersAreWhatTheDomDumps) {
     query.insert(query.end(), sun.begin(), sun.end());
     const ApiResponse r = radiance(context, ApiRequest{"GET", "/v1/radiance", query, ""});
     ASSERT_EQ(r.status, 200) << r.body;
-    EXPECT_EQ(nlohmann::json::parse(r.body).dump(), r.body);
+    EXPECT_TRUE(keys_sorted(nlohmann::ordered_json::parse(r.body))) << r.body;
   }
   const ApiResponse batch = radiance(
       context, ApiRequest{"POST",
@@ -314,7 +389,7 @@ TEST(RadianceJson, HandlerAnswersAreWhatTheDomDumps) {
                           {{"model", "hosek"}, {"sun_zenith", "40"}, {"sun_azimuth", "135"}},
                           R"({"views": [{"view_zenith": 10, "view_azimuth": 20}, [80.5, 359]]})"});
   ASSERT_EQ(batch.status, 200) << batch.body;
-  EXPECT_EQ(nlohmann::json::parse(batch.body).dump(), batch.body);
+  EXPECT_TRUE(keys_sorted(nlohmann::ordered_json::parse(batch.body))) << batch.body;
 }
 
 }  // namespace
