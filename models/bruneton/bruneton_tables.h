@@ -104,9 +104,19 @@ struct FixedRowList {
 };
 
 // Adds the (up to 16) texels of a 4D lookup at coordinates c, each weighted by its
-// interpolation weight times `weight` times its row scale.
+// interpolation weight times `weight` times its row scale. The table's sizes and pointers are
+// read into locals first: a row pointer stored into the list may alias them as far as the
+// compiler knows, and it would reload them for every texel (306 instructions per table and
+// lookup before, 282 after: docs/performance.md). The same products in the same order as
+// texel() and row_index(), so the same rows and weights.
 template <typename List>
 void gather_4d(const HalfTable4D& table, const Coord4& c, double weight, List& list) {
+  const std::uint16_t* const values = table.values.data();
+  const float* const row_scale = table.row_scale.data();
+  const auto res_mu = static_cast<std::size_t>(table.res_mu);
+  const auto res_nu = static_cast<std::size_t>(table.res_nu);
+  const auto res_mu_s = static_cast<std::size_t>(table.res_mu_s);
+  const auto stride = static_cast<std::size_t>(table.stride);
   const int r_index[2] = {c.r.i0, c.r.i1};
   const double r_weight[2] = {1.0 - c.r.f, c.r.f};
   const int mu_index[2] = {c.mu.i0, c.mu.i1};
@@ -120,13 +130,14 @@ void gather_4d(const HalfTable4D& table, const Coord4& c, double weight, List& l
     for (int b = 0; b < 2; ++b) {
       const double w_rmu = r_weight[a] * mu_weight[b];
       if (w_rmu == 0.0) continue;
-      const double w_row =
-          weight * w_rmu * table.row_scale[table.row_index(r_index[a], mu_index[b])];
+      const std::size_t row = static_cast<std::size_t>(r_index[a]) * res_mu + mu_index[b];
+      const double w_row = weight * w_rmu * row_scale[row];
       for (int d = 0; d < 2; ++d) {
         if (nu_weight[d] == 0.0) continue;
+        const std::size_t nu_texel = (row * res_nu + nu_index[d]) * res_mu_s;
         for (int e = 0; e < 2; ++e) {
           const double w = w_row * nu_weight[d] * ms_weight[e];
-          if (w != 0.0) list.add(table.texel(r_index[a], mu_index[b], nu_index[d], ms_index[e]), w);
+          if (w != 0.0) list.add(values + (nu_texel + ms_index[e]) * stride, w);
         }
       }
     }

@@ -15,6 +15,45 @@
 #include "models/core/sky_plane_quadrature.h"
 
 namespace clearsky {
+namespace {
+
+bool answers_wavelength(const ModelDescriptor& d, double wavelength_nm) {
+  return wavelength_nm >= d.min_wavelength_nm - 1e-9 && wavelength_nm <= d.max_wavelength_nm + 1e-9;
+}
+
+SampleStatus sun_status(const SunPosition& sun, const ModelDescriptor& d) {
+  if (!(std::isfinite(sun.zenith_rad) && std::isfinite(sun.azimuth_rad)) || sun.zenith_rad < 0.0 ||
+      sun.zenith_rad > kPi) {
+    return SampleStatus::invalid_input;
+  }
+  if (sun.zenith_rad > degrees_to_radians(d.capabilities.max_sun_zenith_deg) + 1e-12) {
+    return SampleStatus::sun_below_horizon_unsupported;
+  }
+  return SampleStatus::ok;
+}
+
+SampleStatus viewpoint_status(const Viewpoint& viewpoint, const ModelDescriptor& d) {
+  if (!std::isfinite(viewpoint.altitude_m)) return SampleStatus::invalid_input;
+  if (viewpoint.altitude_m < d.capabilities.min_altitude_m - 1e-9 ||
+      viewpoint.altitude_m > d.capabilities.max_altitude_m + 1e-9) {
+    return SampleStatus::viewpoint_unsupported;
+  }
+  return SampleStatus::ok;
+}
+
+// SkyModel::check_view with the descriptor's capability read once per batch.
+SampleStatus view_status(const ViewDirection& view, bool view_below_horizon) {
+  if (!(std::isfinite(view.zenith_rad) && std::isfinite(view.azimuth_rad)) ||
+      view.zenith_rad < 0.0 || view.zenith_rad > kPi) {
+    return SampleStatus::invalid_input;
+  }
+  if (view.zenith_rad > 0.5 * kPi + 1e-12 && !view_below_horizon) {
+    return SampleStatus::view_below_horizon_unsupported;
+  }
+  return SampleStatus::ok;
+}
+
+}  // namespace
 
 std::string ModelConfig::canonical_string() const {
   std::ostringstream out;
@@ -35,40 +74,19 @@ SkyModel::SkyModel(ModelConfig config)
       atmosphere_(AtmosphereSpectra::build(config_.atmosphere, config_.wavelengths)) {}
 
 bool SkyModel::answers_wavelength(std::size_t i) const {
-  const double w = config_.wavelengths[i];
-  return w >= descriptor().min_wavelength_nm - 1e-9 && w <= descriptor().max_wavelength_nm + 1e-9;
+  return clearsky::answers_wavelength(descriptor(), config_.wavelengths[i]);
 }
 
 SampleStatus SkyModel::check_sun(const SunPosition& sun) const {
-  if (!(std::isfinite(sun.zenith_rad) && std::isfinite(sun.azimuth_rad)) || sun.zenith_rad < 0.0 ||
-      sun.zenith_rad > kPi) {
-    return SampleStatus::invalid_input;
-  }
-  if (sun.zenith_rad > degrees_to_radians(descriptor().capabilities.max_sun_zenith_deg) + 1e-12) {
-    return SampleStatus::sun_below_horizon_unsupported;
-  }
-  return SampleStatus::ok;
+  return sun_status(sun, descriptor());
 }
 
 SampleStatus SkyModel::check_viewpoint(const Viewpoint& viewpoint) const {
-  const auto& caps = descriptor().capabilities;
-  if (!std::isfinite(viewpoint.altitude_m)) return SampleStatus::invalid_input;
-  if (viewpoint.altitude_m < caps.min_altitude_m - 1e-9 ||
-      viewpoint.altitude_m > caps.max_altitude_m + 1e-9) {
-    return SampleStatus::viewpoint_unsupported;
-  }
-  return SampleStatus::ok;
+  return viewpoint_status(viewpoint, descriptor());
 }
 
 SampleStatus SkyModel::check_view(const ViewDirection& view) const {
-  if (!(std::isfinite(view.zenith_rad) && std::isfinite(view.azimuth_rad)) ||
-      view.zenith_rad < 0.0 || view.zenith_rad > kPi) {
-    return SampleStatus::invalid_input;
-  }
-  if (view.zenith_rad > 0.5 * kPi + 1e-12 && !descriptor().capabilities.view_below_horizon) {
-    return SampleStatus::view_below_horizon_unsupported;
-  }
-  return SampleStatus::ok;
+  return view_status(view, descriptor().capabilities.view_below_horizon);
 }
 
 bool SkyModel::sun_is_dark(const SunPosition& sun) const {
@@ -96,28 +114,31 @@ std::shared_ptr<const SunState> SkyModel::compute_sun_state(const SunPosition& s
 
 namespace {
 
-// Non-finite values are failures; negative values within rounding of zero are zeroed, others
-// are failures (the model has a bug that must not reach a user as a number). Every sample of
-// every query passes here; on x86-64 an AVX2 clone (chosen once at load time) checks 4 values
-// per instruction instead of 2: the pass is integer operations, so both clones give the same
-// answer.
+// Whether every value is finite and not negative (-0 counted as negative), from the bit
+// patterns: a double with the sign bit clear is finite exactly when its bit pattern is below
+// +infinity's, 0x7FF0...0, i.e. when adding 0x0010...0 leaves the sign bit clear. So the sign
+// bit of bits | (bits + 0x0010...0) is set exactly for a negative (or -0), infinite or NaN
+// value. Integer operations, which the compiler vectorises (floating comparisons under the
+// default trapping math keep it from vectorising such a pass); on x86-64 an AVX2 clone (chosen
+// once at load time) checks 4 values per instruction instead of 2, with the same answer.
 #if defined(__x86_64__) && defined(__gnu_linux__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-SampleStatus
-sanitize(std::span<double> values) {
-  // The usual spectrum (every value finite and not negative, -0 excepted) in one pass of
-  // integer operations, which the compiler vectorises (floating comparisons under the default
-  // trapping math keep it from vectorising the pass below): a double with the sign bit clear
-  // is finite exactly when its bit pattern is below +infinity's, 0x7FF0...0, i.e. when adding
-  // 0x0010...0 leaves the sign bit clear. So the sign bit of bits | (bits + 0x0010...0) is set
-  // exactly for a negative (or -0), infinite or NaN value.
+bool is_usual_spectrum(std::span<const double> values) {
   std::uint64_t flags = 0;
   for (double v : values) {
     const auto bits = std::bit_cast<std::uint64_t>(v);
     flags |= bits | (bits + 0x0010000000000000u);
   }
-  if ((flags >> 63) == 0) return SampleStatus::ok;
+  return (flags >> 63) == 0;
+}
+
+// Non-finite values are failures; negative values within rounding of zero are zeroed, others
+// are failures (the model has a bug that must not reach a user as a number). Every sample of
+// every query passes here (or, for a whole batch of usual spectra, is_usual_spectrum alone).
+SampleStatus sanitize(std::span<double> values) {
+  // The usual spectrum (every value finite and not negative, -0 excepted) in one integer pass.
+  if (is_usual_spectrum(values)) return SampleStatus::ok;
   // Otherwise one pass for finite values with nothing negative (-0 included); the second only
   // when a value is negative.
   double largest = 0.0;
@@ -144,32 +165,26 @@ void zero_out_of_range(const SkyModel& model, std::span<double> values) {
   }
 }
 
-// The wavelengths outside the model's range, found once per batch (not once per sample). The
-// grid is increasing: when both ends are answered, all are.
-std::vector<std::size_t> unanswered_wavelengths(const SkyModel& model) {
-  std::vector<std::size_t> out;
-  const std::size_t n = model.wavelengths().size();
-  if (n == 0 || (model.answers_wavelength(0) && model.answers_wavelength(n - 1))) return out;
-  for (std::size_t w = 0; w < n; ++w) {
-    if (!model.answers_wavelength(w)) out.push_back(w);
-  }
-  return out;
-}
-
 }  // namespace
 
 void SkyModel::sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
                             std::span<const ViewDirection> views, SpectralBatch& out) const {
   const std::size_t n_wavelengths = wavelengths().size();
   out.resize(views.size(), n_wavelengths);
-  const SampleStatus sun_status = check_sun(sun.sun());
-  const SampleStatus viewpoint_status = check_viewpoint(viewpoint);
+  // The descriptor once per call (a virtual call), not once per view and check.
+  const ModelDescriptor& d = descriptor();
+  SampleStatus common = sun_status(sun.sun(), d);
+  if (common == SampleStatus::ok) common = viewpoint_status(viewpoint, d);
   std::size_t answerable_count = 0;
-  for (std::size_t i = 0; i < views.size(); ++i) {
-    SampleStatus s = sun_status != SampleStatus::ok ? sun_status : viewpoint_status;
-    if (s == SampleStatus::ok) s = check_view(views[i]);
-    out.status[i] = s;
-    if (s == SampleStatus::ok) ++answerable_count;
+  if (common == SampleStatus::ok) {
+    const bool below_horizon = d.capabilities.view_below_horizon;
+    for (std::size_t i = 0; i < views.size(); ++i) {
+      const SampleStatus s = view_status(views[i], below_horizon);
+      out.status[i] = s;
+      answerable_count += s == SampleStatus::ok ? 1 : 0;
+    }
+  } else {
+    std::fill(out.status.begin(), out.status.end(), common);
   }
   // A dark sun: the answerable views keep their zeros, nothing is computed.
   if (answerable_count == 0 || sun.dark()) return;
@@ -195,13 +210,29 @@ void SkyModel::sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
       out.status[index[k]] = partial.status[k];
     }
   }
-  const std::vector<std::size_t> unanswered = unanswered_wavelengths(*this);
+  // The wavelengths the model answers: a contiguous range [first, end) of the increasing grid,
+  // found with the descriptor read once (no allocation, no virtual call per wavelength). The
+  // others are 0 in every answered view.
+  const WavelengthGrid& grid = wavelengths();
+  std::size_t first = 0, end = n_wavelengths;
+  while (first < end && !clearsky::answers_wavelength(d, grid[first])) ++first;
+  while (end > first && !clearsky::answers_wavelength(d, grid[end - 1])) --end;
+  if (first > 0 || end < n_wavelengths) {
+    for (std::size_t i = 0; i < views.size(); ++i) {
+      if (out.status[i] != SampleStatus::ok) continue;
+      auto spectrum = out.spectrum(i);
+      std::fill(spectrum.begin(), spectrum.begin() + static_cast<std::ptrdiff_t>(first), 0.0);
+      std::fill(spectrum.begin() + static_cast<std::ptrdiff_t>(end), spectrum.end(), 0.0);
+    }
+  }
+  // The usual batch: every value of every view finite and not negative, found by one pass over
+  // the whole batch (one call instead of one per view). Then sanitize() would leave every
+  // spectrum as it is and answer ok; only the views the model itself refused (a fit domain)
+  // are cleared.
+  const bool usual = is_usual_spectrum(out.values);
   for (std::size_t i = 0; i < views.size(); ++i) {
     auto spectrum = out.spectrum(i);
-    if (out.status[i] == SampleStatus::ok) {
-      for (std::size_t w : unanswered) spectrum[w] = 0.0;
-      out.status[i] = sanitize(spectrum);
-    }
+    if (!usual && out.status[i] == SampleStatus::ok) out.status[i] = sanitize(spectrum);
     if (out.status[i] != SampleStatus::ok) std::fill(spectrum.begin(), spectrum.end(), 0.0);
   }
 }

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <typeinfo>
 
 #include "models/atmosphere/atmosphere_parameter_table.h"
 #include "models/core/fit_domain.h"
@@ -107,10 +108,11 @@ class HosekSunState final : public SunState {
 };
 
 const HosekSunState& as_hosek_state(const SunState& sun) {
-  const auto* state = dynamic_cast<const HosekSunState*>(&sun);
-  if (state == nullptr)
+  // The class is final: the same dynamic type is the only match, and comparing type_info
+  // costs a few instructions where dynamic_cast walks the hierarchy on every query.
+  if (typeid(sun) != typeid(HosekSunState))
     throw std::invalid_argument("sun state was not prepared by the hosek model");
-  return *state;
+  return static_cast<const HosekSunState&>(sun);
 }
 
 double solar_elevation(const SunPosition& sun) { return std::max(0.5 * kPi - sun.zenith_rad, 0.0); }

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <typeinfo>
 
 #include "models/atmosphere/atmosphere_parameter_table.h"
 #include "models/colour/colour_spaces.h"
@@ -92,18 +93,20 @@ class PreethamSunState final : public SunState {
 };
 
 const PreethamSunState& as_preetham_state(const SunState& sun) {
-  const auto* state = dynamic_cast<const PreethamSunState*>(&sun);
-  if (state == nullptr)
+  // The class is final: the same dynamic type is the only match, and comparing type_info
+  // costs a few instructions where dynamic_cast walks the hierarchy on every query.
+  if (typeid(sun) != typeid(PreethamSunState))
     throw std::invalid_argument("sun state was not prepared by the preetham model");
-  return *state;
+  return static_cast<const PreethamSunState&>(sun);
 }
 
 // F(theta, gamma) of the three distributions, split around their six exponentials so that
 // a batch of views takes all of theirs in one vector pass (exp_in_place, within 2 ulp of
 // std::exp: models/core/fast_exp.h) instead of six libm calls per view. The three share
-// cos(theta), gamma and cos^2(gamma).
+// cos(theta), gamma and cos^2(gamma). No default initialisers: fit_radiance's chunk of 32 is
+// written by perez_view before it is read, and would otherwise be zeroed on every query.
 struct PerezView {
-  double inverse_mu = 0, gamma = 0, cos2 = 0;
+  double inverse_mu, gamma, cos2;
 };
 constexpr std::size_t kExponentsPerView = 6;
 

@@ -23,7 +23,9 @@ ModelDescriptor uniform_descriptor(double max_sun_zenith_deg, bool below_horizon
   return d;
 }
 
-// Radiance `level` everywhere, or a poisoned value for views with zenith exactly 0.5 rad.
+// Radiance `level` everywhere, or a poisoned value for views with zenith exactly 0.5 rad; views
+// with zenith exactly 0.7 rad are refused by the model itself (outside_fit_domain, as a fitted
+// model does), their values left as computed.
 class UniformSky final : public SkyModel {
  public:
   UniformSky(ModelConfig c, ModelDescriptor d, double poison = 0.0)
@@ -38,6 +40,7 @@ class UniformSky final : public SkyModel {
     const double level = option_or_default(descriptor_, config(), "level");
     for (std::size_t i = 0; i < views.size(); ++i) {
       for (double& v : out.spectrum(i)) v = views[i].zenith_rad == 0.5 ? poison_ : level;
+      if (views[i].zenith_rad == 0.7) out.status[i] = SampleStatus::outside_fit_domain;
     }
   }
   Spectrum compute_sun_irradiance(const SunState&, const Viewpoint&) const override {
@@ -140,6 +143,32 @@ TEST(SkyModel, TheCheckOfTheAnswersSortsEveryKindOfValue) {
     sky.sky_radiance(*sun, {}, views, out);
     EXPECT_EQ(out.status[0], c.status) << c.value;
     EXPECT_EQ(out.spectrum(0)[0], c.answered) << c.value;
+  }
+}
+
+TEST(SkyModel, ABatchOfUsualSpectraKeepsItsValuesAndClearsTheViewsTheModelRefused) {
+  // Every value finite and positive: the whole batch is checked in one pass; a view the model
+  // refused still answers zeros, and a wavelength outside the model's range is still 0.
+  ModelConfig in_range = small_config();
+  in_range.wavelengths = WavelengthGrid::points({400.0, 500.0, 600.0});
+  for (const ModelConfig& config : {in_range, small_config()}) {
+    const UniformSky sky(config, uniform_descriptor(90, false));
+    const auto sun = sky.prepare_sun({0.3, 1.0});
+    const std::vector<ViewDirection> views = {{0.2, 0.0}, {0.7, 1.0}, {1.0, 3.0}};
+    SpectralBatch out;
+    for (int repeat = 0; repeat < 2; ++repeat) {  // the same batch again: nothing stale
+      sky.sky_radiance(*sun, {}, views, out);
+      ASSERT_EQ(out.size(), 3u);
+      EXPECT_EQ(out.status[0], SampleStatus::ok);
+      EXPECT_EQ(out.status[1], SampleStatus::outside_fit_domain);
+      EXPECT_EQ(out.status[2], SampleStatus::ok);
+      for (std::size_t w = 0; w < 3; ++w) {
+        const bool answered = w < 2 || config.wavelengths[2] < 700.0;
+        EXPECT_EQ(out.spectrum(0)[w], answered ? 2.0 : 0.0) << w;
+        EXPECT_EQ(out.spectrum(1)[w], 0.0) << w;
+        EXPECT_EQ(out.spectrum(2)[w], answered ? 2.0 : 0.0) << w;
+      }
+    }
   }
 }
 
