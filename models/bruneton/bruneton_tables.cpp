@@ -27,6 +27,7 @@
 #include "models/bruneton/density_sums.h"
 #include "models/bruneton/density_weights.h"
 #include "models/bruneton/scattering_transport.h"
+#include "models/bruneton/second_order_rows.h"
 #include "models/bruneton/single_scattering_sums.h"
 #include "models/core/invalid_input.h"
 #include "models/core/parallel.h"
@@ -300,14 +301,19 @@ struct Builder {
     return s;
   }
 
-  // Single scattering, Eq. 6 without phase functions (2008 code: inscatter1).
-  void build_single_scattering() {
+  // Single scattering, Eq. 6 without phase functions (2008 code: inscatter1). With `only`, the
+  // rows it marks (the others stay zero); every row is computed as without it.
+  void build_single_scattering(const std::vector<char>* only = nullptr) {
     t.single_rayleigh.allocate(res, stride);
     t.single_mie.allocate(res, stride);
     const std::size_t rows = static_cast<std::size_t>(res.r) * res.mu;
     for_each(rows, [&](std::size_t row) {
       const int layer = static_cast<int>(row / res.mu);
       const int j = static_cast<int>(row % res.mu);
+      if (only != nullptr && (*only)[row] == 0) {
+        if (j == res.mu - 1) progress.advance(1.0 / res.r, "single scattering");
+        return;
+      }
       const Layer l = layer_geometry(layer, res.r, g);
       const double r = l.r;
       const double mu = texel_mu(j, res.mu, l, g);
@@ -446,74 +452,121 @@ struct Builder {
     const double dtheta = kPi / n_theta;
     const double dphi = kPi / n_theta;
     const int n_e = delta_e.width;
-    std::vector<double> cos_t(n_theta), sin_t(n_theta), cos_p(n_phi), sin_p(n_phi);
-    for (int i = 0; i < n_theta; ++i) {
-      cos_t[i] = std::cos((i + 0.5) * dtheta);
-      sin_t[i] = std::sin((i + 0.5) * dtheta);
-    }
+    // The zeniths where rows_read_by_second_order() finds them.
+    const std::vector<double> cos_t = zenith_cosines(n_theta, n_theta);
+    std::vector<double> sin_t(n_theta), cos_p(n_phi), sin_p(n_phi);
+    for (int i = 0; i < n_theta; ++i) sin_t[i] = std::sin((i + 0.5) * dtheta);
     for (int p = 0; p < n_phi; ++p) {
       cos_p[p] = std::cos((p + 0.5) * dphi);
       sin_p[p] = std::sin((p + 0.5) * dphi);
     }
-    const std::size_t layer_floats =
-        static_cast<std::size_t>(res.mu) * j_table.row_texels() * stride;
-    std::vector<float> layer_values(layer_floats);
     const SphereDirections sphere = sphere_directions(cos_t, sin_t, cos_p, sin_p);
-    const std::size_t n_dir = sphere.wx.size();
-    std::vector<double> layer_phase_r(static_cast<std::size_t>(res.mu) * n_dir);
-    std::vector<double> layer_phase_m(layer_phase_r.size());
-    for (int layer = 0; layer < res.r; ++layer) {
-      // The phase functions towards each view row mu, times the solid angles: the same for
-      // every mu_s column of the layer, computed once for all of them.
-      for_each(static_cast<std::size_t>(res.mu), [&](std::size_t jm) {
-        const Layer l = layer_geometry(layer, res.r, g);
-        const double mu = std::clamp(texel_mu(static_cast<int>(jm), res.mu, l, g), -1.0, 1.0);
-        const double vx = std::sqrt(1.0 - mu * mu);
-        double* phase_r = layer_phase_r.data() + jm * n_dir;
-        double* phase_m = layer_phase_m.data() + jm * n_dir;
-        for (std::size_t d = 0; d < n_dir; ++d) {
-          const double nu2 = vx * sphere.wx[d] + mu * sphere.wz[d];
-          phase_r[d] = rayleigh_phase(nu2) * sphere.dw[d];
-          phase_m[d] = k.mie_phase(nu2) * sphere.dw[d];
-        }
+    // One loop over every layer's columns instead of three loops per layer with a wait at the
+    // end of each: a layer's shared part is prepared (once) when the middle column of the layer
+    // before it starts, while the other workers compute columns, and the worker that finishes a
+    // layer's last column stores its rows while the others go on with the next layer's columns.
+    // Every value is computed as in one layer at a time; at most two layers' shared parts are
+    // held at once, but for a slow worker.
+    std::vector<std::unique_ptr<DensityLayer>> layers(res.r);
+    for (auto& layer : layers) layer = std::make_unique<DensityLayer>();
+    auto prepared = [&](int layer) -> DensityLayer& {
+      DensityLayer& shared = *layers[layer];
+      std::call_once(shared.ready, [&] {
+        prepare_density_layer(layer, sphere, delta_e, j_table.row_texels(), shared);
+        shared.columns_left.store(res.mu_s);
       });
-      const Layer l = layer_geometry(layer, res.r, g);
-      const double r = std::clamp(l.r, g.bottom_m, g.top_m);
-      const double cos_theta_min = horizon_mu(r, g);
-      const float density_r = static_cast<float>(std::exp(-(r - g.bottom_m) / k.rayleigh_height_m));
-      const float density_m = static_cast<float>(std::exp(-(r - g.bottom_m) / k.mie_height_m));
-      // Ground seen in direction theta: its distance, and (transmittance to it) x (albedo / pi) x
-      // (delta E at each column of the irradiance table's ground row), per column.
-      std::vector<char> ground(n_theta, 0);
-      std::vector<double> d_ground(n_theta, 0.0);
-      std::vector<float> ground_light(static_cast<std::size_t>(n_theta) * n_e * stride, 0.0f);
-      {
-        std::vector<float> transmittance(stride);
-        for (int i = 0; i < n_theta; ++i) {
-          if (!(cos_t[i] < cos_theta_min)) continue;
-          ground[i] = 1;
-          d_ground[i] = -r * cos_t[i] -
-                        safe_sqrt(r * r * (cos_t[i] * cos_t[i] - 1.0) + g.bottom_m * g.bottom_m);
-          t.transmittance_between(g.bottom_m, -(r * cos_t[i] + d_ground[i]) / g.bottom_m,
-                                  d_ground[i], transmittance.data());
-          for (int c = 0; c < n_e; ++c) {
-            const float* e = delta_e.texel(c, 0);
-            float* out = ground_light.data() + (static_cast<std::size_t>(i) * n_e + c) * stride;
-            for (int w = 0; w < stride; ++w) out[w] = transmittance[w] * k.albedo_over_pi[w] * e[w];
-          }
-        }
+      return shared;
+    };
+    for_each(static_cast<std::size_t>(res.r) * res.mu_s, [&](std::size_t item) {
+      const int layer = static_cast<int>(item / res.mu_s);
+      const int ms = static_cast<int>(item % res.mu_s);
+      DensityLayer& shared = prepared(layer);
+      if (ms == res.mu_s / 2 && layer + 1 < res.r) prepared(layer + 1);
+      density_column(source, layer, ms, shared.r, shared.density_r, shared.density_m, sphere,
+                     shared.phase_r, shared.phase_m, shared.ground, shared.d_ground,
+                     shared.ground_light, n_e, shared.values.data());
+      // The last column of the layer: every other column's values are visible here (the
+      // decrements are read-modify-writes of one atomic).
+      if (shared.columns_left.fetch_sub(1) != 1) return;
+      for (int j = 0; j < res.mu; ++j) {
+        j_table.store_row(
+            layer, j,
+            shared.values.data() + static_cast<std::size_t>(j) * j_table.row_texels() * stride);
       }
-      for_each(static_cast<std::size_t>(res.mu_s), [&](std::size_t ms_index) {
-        const int ms = static_cast<int>(ms_index);
-        density_column(source, layer, ms, r, density_r, density_m, sphere, layer_phase_r,
-                       layer_phase_m, ground, d_ground, ground_light, n_e, layer_values.data());
-      });
-      for_each(static_cast<std::size_t>(res.mu), [&](std::size_t j) {
-        j_table.store_row(layer, static_cast<int>(j),
-                          layer_values.data() + j * j_table.row_texels() * stride);
-      });
+      shared.release();
       progress.advance(progress_units / res.r, "multiple scattering: density");
+    });
+  }
+
+  // What the columns of one layer of J share.
+  struct DensityLayer {
+    std::once_flag ready;
+    std::atomic<int> columns_left{0};
+    double r = 0;
+    float density_r = 0, density_m = 0;
+    // The phase functions towards each view row mu times the solid angles (mu x directions).
+    std::vector<double> phase_r, phase_m;
+    // Per zenith: whether it sees the ground, the distance to it, and (transmittance to it) x
+    // (albedo / pi) x (delta E at each column of the irradiance table's ground row).
+    std::vector<char> ground;
+    std::vector<double> d_ground;
+    std::vector<float> ground_light;
+    std::vector<float> values;  // the layer's rows of J, as store_row() takes them
+    // Frees the vectors' memory once the layer is stored (`v = {}` would keep it).
+    void release() {
+      std::vector<double>().swap(phase_r);
+      std::vector<double>().swap(phase_m);
+      std::vector<char>().swap(ground);
+      std::vector<double>().swap(d_ground);
+      std::vector<float>().swap(ground_light);
+      std::vector<float>().swap(values);
     }
+  };
+
+  void prepare_density_layer(int layer, const SphereDirections& sphere, const FloatTable2D& delta_e,
+                             std::size_t row_texels, DensityLayer& out) const {
+    const std::vector<double>& cos_t = sphere.cos_t;
+    const int n_theta = static_cast<int>(cos_t.size());
+    const int n_e = delta_e.width;
+    const std::size_t n_dir = sphere.wx.size();
+    const Layer l = layer_geometry(layer, res.r, g);
+    // The phases: the same for every mu_s column of the layer, computed once for all of them.
+    out.phase_r.resize(static_cast<std::size_t>(res.mu) * n_dir);
+    out.phase_m.resize(out.phase_r.size());
+    for (int jm = 0; jm < res.mu; ++jm) {
+      const double mu = std::clamp(texel_mu(jm, res.mu, l, g), -1.0, 1.0);
+      const double vx = std::sqrt(1.0 - mu * mu);
+      double* phase_r = out.phase_r.data() + static_cast<std::size_t>(jm) * n_dir;
+      double* phase_m = out.phase_m.data() + static_cast<std::size_t>(jm) * n_dir;
+      for (std::size_t d = 0; d < n_dir; ++d) {
+        const double nu2 = vx * sphere.wx[d] + mu * sphere.wz[d];
+        phase_r[d] = rayleigh_phase(nu2) * sphere.dw[d];
+        phase_m[d] = k.mie_phase(nu2) * sphere.dw[d];
+      }
+    }
+    const double r = std::clamp(l.r, g.bottom_m, g.top_m);
+    out.r = r;
+    const double cos_theta_min = horizon_mu(r, g);
+    out.density_r = static_cast<float>(std::exp(-(r - g.bottom_m) / k.rayleigh_height_m));
+    out.density_m = static_cast<float>(std::exp(-(r - g.bottom_m) / k.mie_height_m));
+    out.ground.assign(n_theta, 0);
+    out.d_ground.assign(n_theta, 0.0);
+    out.ground_light.assign(static_cast<std::size_t>(n_theta) * n_e * stride, 0.0f);
+    std::vector<float> transmittance(stride);
+    for (int i = 0; i < n_theta; ++i) {
+      if (!(cos_t[i] < cos_theta_min)) continue;
+      out.ground[i] = 1;
+      out.d_ground[i] =
+          -r * cos_t[i] - safe_sqrt(r * r * (cos_t[i] * cos_t[i] - 1.0) + g.bottom_m * g.bottom_m);
+      t.transmittance_between(g.bottom_m, -(r * cos_t[i] + out.d_ground[i]) / g.bottom_m,
+                              out.d_ground[i], transmittance.data());
+      for (int c = 0; c < n_e; ++c) {
+        const float* e = delta_e.texel(c, 0);
+        float* o = out.ground_light.data() + (static_cast<std::size_t>(i) * n_e + c) * stride;
+        for (int w = 0; w < stride; ++w) o[w] = transmittance[w] * k.albedo_over_pi[w] * e[w];
+      }
+    }
+    out.values.assign(static_cast<std::size_t>(res.mu) * row_texels * stride, 0.0f);
   }
 
   void density_column(const Source& source, int layer, int ms, double r, float density_r,
@@ -650,11 +703,10 @@ struct Builder {
     const int n = res.irradiance_samples;
     const double dphi = kPi / n;
     const double dtheta = kPi / n;
-    std::vector<double> cos_t(n / 2), sin_t(n / 2), cos_p(2 * n);
-    for (int it = 0; it < n / 2; ++it) {
-      cos_t[it] = std::cos((it + 0.5) * dtheta);
-      sin_t[it] = std::sin((it + 0.5) * dtheta);
-    }
+    // The zeniths where rows_read_by_second_order() finds them.
+    const std::vector<double> cos_t = zenith_cosines(n / 2, n);
+    std::vector<double> sin_t(n / 2), cos_p(2 * n);
+    for (int it = 0; it < n / 2; ++it) sin_t[it] = std::sin((it + 0.5) * dtheta);
     for (int ip = 0; ip < 2 * n; ++ip) cos_p[ip] = std::cos((ip + 0.5) * dphi);
     for_each(static_cast<std::size_t>(res.irradiance_mu_s) * res.irradiance_r,
              [&](std::size_t texel) {
@@ -722,6 +774,10 @@ struct Builder {
       std::vector<double> mu_s(res.mu_s);
       for (int ms = 0; ms < res.mu_s; ++ms) mu_s[ms] = texel_mu_s(ms, res.mu_s, res.sun);
       std::vector<Axis> mu_s_axes(res.mu_s);
+      // Sun cosines at or below the lookups' clamp all read the axis of the clamp (u_mu_s
+      // clamps before its atan): found once for the row.
+      const Axis clamped_axis =
+          texture_axis(u_mu_s(res.sun.lookup_min_mu_s, res.mu_s, res.sun), res.mu_s);
       // Samples outside, texels inside: each texel still adds its samples in order (the same
       // sums as one texel at a time), and a sample's rows of J are found once for the slice.
       for (int knu = 0; knu < res.nu; ++knu) {
@@ -732,7 +788,9 @@ struct Builder {
           const TransportLookup lookup = transport_lookup(j_table, r_axis[i], mu_axis[i], nu_axis);
           for (int ms = 0; ms < res.mu_s; ++ms) {
             const double mu_s_i = (nu * s.t[i] + mu_s[ms] * r) / radius[i];
-            mu_s_axes[ms] = texture_axis(u_mu_s(mu_s_i, res.mu_s, res.sun), res.mu_s);
+            mu_s_axes[ms] = mu_s_i <= res.sun.lookup_min_mu_s
+                                ? clamped_axis
+                                : texture_axis(u_mu_s(mu_s_i, res.mu_s, res.sun), res.mu_s);
           }
           const float* view = s.transmittance.data() + static_cast<std::size_t>(i) * stride;
           const float weight = static_cast<float>(s.weight[i]);
@@ -807,7 +865,15 @@ Tables precompute_tables(const AtmosphereSpectra& spectra, const Resolution& res
   b.build_transmittance();
   context.check_cancelled();
   FloatTable2D delta_e = b.direct_irradiance();
-  b.build_single_scattering();
+  // With later orders, this pass serves only the second order's density and the first sky
+  // irradiance: the rows they read (second_order_rows.h; the tables are built in full at the
+  // end).
+  if (later_orders > 0) {
+    const std::vector<char> needed = rows_read_by_second_order(resolution, t.geometry);
+    b.build_single_scattering(&needed);
+  } else {
+    b.build_single_scattering();
+  }
 
   Builder::Source source{&t.single_rayleigh, &t.single_mie, nullptr};
   // Sky irradiance: the orders 1 .. max(orders - 1, 1) of light reaching the ground (2008
@@ -847,8 +913,8 @@ Tables precompute_tables(const AtmosphereSpectra& spectra, const Resolution& res
   if (later_orders > 0) {
     density = HalfTable4D{};
     previous = HalfTable4D{};
-    // The same computation as the first time (single scattering reads only the
-    // transmittance): the same tables, bit for bit.
+    // Every row, each computed as in the first pass (single scattering reads only the
+    // transmittance): the rows of the first pass again bit for bit, and the others.
     b.build_single_scattering();
   }
   t.sky_irradiance = std::move(irradiance_sum);

@@ -9,7 +9,7 @@
 // texels x 40 wavelengths take 252 MB instead of 504 MB in float. The intermediate tables of
 // the precomputation (density J, per-order scattering) use the same storage, and at most three
 // 4D tables are held at once (the single-scattering tables are built again after the later
-// orders), so the precomputation peaks near 260 MB (docs/tables-and-memory.md). Geometry and
+// orders), so the precomputation peaks near 273 MB (docs/tables-and-memory.md). Geometry and
 // integration weights are computed in double, spectral arithmetic in float.
 //
 // Immutable once built; thread-safe for concurrent reads.

@@ -494,6 +494,29 @@ TEST(BrunetonPrecomputation, SingleScatteringRebuiltAfterTheLaterOrdersIsTheSame
             single_only->tables().single_mie.row_scale);
 }
 
+// J's columns of every layer run in one loop, a layer stored by whichever worker finishes its
+// last column (models/bruneton/README.md "Our implementation"): the tables do not depend on the
+// number of workers or on the order in which they finish the layers.
+TEST(BrunetonPrecomputation, TablesAreTheSameOnOneAndOnThreeThreads) {
+  PrecomputeContext one;
+  one.reuse_live_tables = false;
+  one.threads = 1;
+  PrecomputeContext three = one;
+  three.threads = 3;
+  const auto serial = make(small_bruneton_config(4), one);
+  const auto parallel = make(small_bruneton_config(4), three);
+  const bruneton::Tables& a = serial->tables();
+  const bruneton::Tables& b = parallel->tables();
+  EXPECT_EQ(a.transmittance.values, b.transmittance.values);
+  EXPECT_EQ(a.sky_irradiance.values, b.sky_irradiance.values);
+  for (const auto member : {&bruneton::Tables::single_rayleigh, &bruneton::Tables::single_mie,
+                            &bruneton::Tables::multiple}) {
+    ASSERT_FALSE((a.*member).empty());
+    EXPECT_EQ((a.*member).values, (b.*member).values);
+    EXPECT_EQ((a.*member).row_scale, (b.*member).row_scale);
+  }
+}
+
 TEST(BrunetonPrecomputation, ReportsProgressAndCancels) {
   std::vector<double> fractions;
   PrecomputeContext context;
