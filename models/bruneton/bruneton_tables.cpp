@@ -146,11 +146,80 @@ void Tables::scattering(double r, double mu, double mu_s, double nu, double mie_
   scattering(coordinates_4d(r, mu, mu_s, nu, resolution, geometry), nu, mie_g, out);
 }
 
+namespace {
+
+bool same_layout(const HalfTable4D& a, const HalfTable4D& b) {
+  return a.res_r == b.res_r && a.res_mu == b.res_mu && a.res_nu == b.res_nu &&
+         a.res_mu_s == b.res_mu_s && a.stride == b.stride;
+}
+
+// gather_4d(*tables[t], c, weights[t], list) for t = 0, 1, ... in turn, for tables of one layout
+// (same_layout): the same rows with the same weights in the same order, so the same sum, with
+// the texels' offsets and the (r, mu) weights computed once for all the tables instead of once
+// per table (a sky view's lookup reads the same texels of its three 4D tables).
+template <std::size_t N, typename List>
+void gather_4d_same_texels(const std::array<const HalfTable4D*, N>& tables,
+                           const std::array<double, N>& weights, const Coord4& c, List& list) {
+  const HalfTable4D& layout = *tables[0];
+  const int r_index[2] = {c.r.i0, c.r.i1};
+  const double r_weight[2] = {1.0 - c.r.f, c.r.f};
+  const int mu_index[2] = {c.mu.i0, c.mu.i1};
+  const double mu_weight[2] = {1.0 - c.mu.f, c.mu.f};
+  const int ms_index[2] = {c.mu_s.i0, c.mu_s.i1};
+  const double ms_weight[2] = {1.0 - c.mu_s.f, c.mu_s.f};
+  const int nu_index[2] = {c.nu.i0, c.nu.i1};
+  const double nu_weight[2] = {1.0 - c.nu.f, c.nu.f};
+  // The (r, mu) rows with a weight, in gather_4d's order, and the offsets of their (nu, mu_s)
+  // texels.
+  std::size_t row_index[4];
+  double w_rmu[4];
+  int rows = 0;
+  for (int a = 0; a < 2; ++a) {
+    if (r_weight[a] == 0.0) continue;
+    for (int b = 0; b < 2; ++b) {
+      const double w = r_weight[a] * mu_weight[b];
+      if (w == 0.0) continue;
+      row_index[rows] = layout.row_index(r_index[a], mu_index[b]);
+      w_rmu[rows++] = w;
+    }
+  }
+  std::size_t texel_offset[2][2];
+  for (int d = 0; d < 2; ++d) {
+    for (int e = 0; e < 2; ++e)
+      texel_offset[d][e] = static_cast<std::size_t>(nu_index[d] * layout.res_mu_s + ms_index[e]);
+  }
+  const std::size_t row_texels = layout.row_texels();
+  const auto stride = static_cast<std::size_t>(layout.stride);
+  for (std::size_t t = 0; t < N; ++t) {
+    const HalfTable4D& table = *tables[t];
+    for (int k = 0; k < rows; ++k) {
+      const double w_row = weights[t] * w_rmu[k] * table.row_scale[row_index[k]];
+      const std::uint16_t* row = table.values.data() + row_index[k] * row_texels * stride;
+      for (int d = 0; d < 2; ++d) {
+        if (nu_weight[d] == 0.0) continue;
+        for (int e = 0; e < 2; ++e) {
+          const double w = w_row * nu_weight[d] * ms_weight[e];
+          if (w != 0.0) list.add(row + texel_offset[d][e] * stride, w);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
 void Tables::scattering(const Coord4& c, double nu, double mie_g, float* out) const {
   FixedRowList<std::uint16_t, 48> list;
-  gather_4d(single_rayleigh, c, rayleigh_phase(nu), list);
-  gather_4d(single_mie, c, cornette_shanks_phase(nu, mie_g), list);
-  if (!multiple.empty()) gather_4d(multiple, c, 1.0, list);
+  const double rayleigh = rayleigh_phase(nu), mie = cornette_shanks_phase(nu, mie_g);
+  if (!multiple.empty() && same_layout(single_rayleigh, single_mie) &&
+      same_layout(single_rayleigh, multiple)) {
+    gather_4d_same_texels<3>({&single_rayleigh, &single_mie, &multiple}, {rayleigh, mie, 1.0}, c,
+                             list);
+  } else {
+    gather_4d(single_rayleigh, c, rayleigh, list);
+    gather_4d(single_mie, c, mie, list);
+    if (!multiple.empty()) gather_4d(multiple, c, 1.0, list);
+  }
   list.sum(stride, out);
 }
 

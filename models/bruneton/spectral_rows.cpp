@@ -108,31 +108,57 @@ __attribute__((target("avx2,fma,f16c"))) inline __m256 load_halves(const std::ui
   return _mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)));
 }
 
+// Columns [offset, offset + 8 V) of the weighted sum, V vectors of 8 wavelengths in V
+// accumulators over one pass through the rows: each lane adds its rows in order k = 0, 1, ...
+// by one fused multiply-add each, so the result does not depend on V, and a spectrum of 40
+// wavelengths (5 vectors) is one chain of `count` multiply-adds deep instead of two (a block of
+// 4 vectors, then one of 1), which is what bounds a lookup's time (each multiply-add waits for
+// the previous one of its lane).
+template <int V>
+__attribute__((target("avx2,fma,f16c"))) inline void sum_rows_f16_block(
+    const std::uint16_t* const* rows, const float* weights, int count, int offset, float* out) {
+  __m256 a[V];
+  for (int v = 0; v < V; ++v) a[v] = _mm256_setzero_ps();
+  for (int k = 0; k < count; ++k) {
+    const __m256 w = _mm256_set1_ps(weights[k]);
+    const std::uint16_t* row = rows[k] + offset;
+    for (int v = 0; v < V; ++v) a[v] = _mm256_fmadd_ps(w, load_halves(row + 8 * v), a[v]);
+  }
+  for (int v = 0; v < V; ++v) _mm256_storeu_ps(out + offset + 8 * v, a[v]);
+}
+
 __attribute__((target("avx2,fma,f16c"))) void sum_rows_f16_avx2(const std::uint16_t* const* rows,
                                                                 const float* weights, int count,
                                                                 int stride, float* out) {
-  int c = 0;
-  for (; c + 32 <= stride; c += 32) {
-    __m256 a0 = _mm256_setzero_ps(), a1 = _mm256_setzero_ps(), a2 = _mm256_setzero_ps(),
-           a3 = _mm256_setzero_ps();
-    for (int k = 0; k < count; ++k) {
-      const __m256 w = _mm256_set1_ps(weights[k]);
-      const std::uint16_t* row = rows[k] + c;
-      a0 = _mm256_fmadd_ps(w, load_halves(row), a0);
-      a1 = _mm256_fmadd_ps(w, load_halves(row + 8), a1);
-      a2 = _mm256_fmadd_ps(w, load_halves(row + 16), a2);
-      a3 = _mm256_fmadd_ps(w, load_halves(row + 24), a3);
+  // Blocks of up to 8 vectors (64 wavelengths): 8 accumulators, the weight and a widened row
+  // fit the 16 vector registers.
+  for (int c = 0; c < stride; c += 64) {
+    switch (std::min(stride - c, 64) / 8) {
+      case 1:
+        sum_rows_f16_block<1>(rows, weights, count, c, out);
+        break;
+      case 2:
+        sum_rows_f16_block<2>(rows, weights, count, c, out);
+        break;
+      case 3:
+        sum_rows_f16_block<3>(rows, weights, count, c, out);
+        break;
+      case 4:
+        sum_rows_f16_block<4>(rows, weights, count, c, out);
+        break;
+      case 5:
+        sum_rows_f16_block<5>(rows, weights, count, c, out);
+        break;
+      case 6:
+        sum_rows_f16_block<6>(rows, weights, count, c, out);
+        break;
+      case 7:
+        sum_rows_f16_block<7>(rows, weights, count, c, out);
+        break;
+      default:
+        sum_rows_f16_block<8>(rows, weights, count, c, out);
+        break;
     }
-    _mm256_storeu_ps(out + c, a0);
-    _mm256_storeu_ps(out + c + 8, a1);
-    _mm256_storeu_ps(out + c + 16, a2);
-    _mm256_storeu_ps(out + c + 24, a3);
-  }
-  for (; c < stride; c += 8) {
-    __m256 a = _mm256_setzero_ps();
-    for (int k = 0; k < count; ++k)
-      a = _mm256_fmadd_ps(_mm256_set1_ps(weights[k]), load_halves(rows[k] + c), a);
-    _mm256_storeu_ps(out + c, a);
   }
 }
 

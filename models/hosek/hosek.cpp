@@ -96,15 +96,28 @@ class HosekSunState final : public SunState {
       : SunState(sun), sun_direction(sun.unit_vector()) {}
   std::size_t memory_bytes() const override {
     return sizeof(*this) + distributions.memory_bytes() +
-           contributions.capacity() * sizeof(Contribution);
+           contributions.capacity() * sizeof(Contribution) +
+           sums.capacity() * sizeof(WavelengthSum);
   }
 
   std::size_t size() const { return distributions.size(); }
   std::uint32_t add(const hosek::Coefficients& c) { return distributions.add(c); }
 
+  // The contributions of one wavelength, which compute_sun_state() adds in turn (one or two):
+  // its radiance is (0 + first_weight f[first]) + second_weight f[second], the order in which
+  // adding each contribution to a zeroed spectrum sums them, kept in registers instead of
+  // stored and reloaded per contribution.
+  struct WavelengthSum {
+    std::uint32_t wavelength;
+    std::uint32_t first, second;
+    double first_weight, second_weight;
+    bool two;
+  };
+
   Vec3 sun_direction;  // once per sun, not per query
   hosek::Distributions distributions;
   std::vector<Contribution> contributions;
+  std::vector<WavelengthSum> sums;
 };
 
 const HosekSunState& as_hosek_state(const SunState& sun) {
@@ -213,6 +226,16 @@ std::shared_ptr<const SunState> HosekModel::compute_sun_state(const SunPosition&
       }
     }
   }
+  for (const auto& c : state->contributions) {
+    auto& sums = state->sums;
+    if (!sums.empty() && sums.back().wavelength == c.wavelength && !sums.back().two) {
+      sums.back().second = c.term;
+      sums.back().second_weight = c.weight;
+      sums.back().two = true;
+    } else {
+      sums.push_back({c.wavelength, c.term, 0, c.weight, 0.0, false});
+    }
+  }
   return state;
 }
 
@@ -242,8 +265,10 @@ void HosekModel::fit_radiance(const SunState& sun, bool clamp_negative,
     state.distributions.evaluate(v, exponents.data(), f.data());
     auto spectrum = out.spectrum(i);
     std::fill(spectrum.begin(), spectrum.end(), 0.0);
-    for (const auto& contribution : state.contributions) {
-      spectrum[contribution.wavelength] += contribution.weight * f[contribution.term];
+    for (const auto& sum : state.sums) {
+      double value = 0.0 + sum.first_weight * f[sum.first];
+      if (sum.two) value += sum.second_weight * f[sum.second];
+      spectrum[sum.wavelength] = value;
     }
     // The fit dips below zero at the horizon when the sun is within a few degrees of it (its
     // constant term C is negative there and the zenith term sqrt(cos theta) vanishes).

@@ -65,6 +65,36 @@ TEST(SpectralRows, WeightedSumOfHalfRows) {
   }
 }
 
+// With AVX2 each lane adds its rows in order by fused multiply-adds, however many vectors a
+// pass holds (spectral_rows.cpp): the same bits as std::fma row after row, for strides of 1 to
+// 17 vectors (blocks of 8 and the remainders) and up to 48 rows (a lookup's three 4D tables).
+TEST(SpectralRows, HalfSumIsEachLanesFusedMultiplyAddsInRowOrder) {
+  if (!using_avx2_kernels()) GTEST_SKIP() << "no AVX2/F16C: the portable sum is not fused";
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> value(0.0f, 3.0f), weight(0.0f, 0.2f);
+  for (int stride = 8; stride <= 136; stride += 8) {
+    for (int count : {0, 1, 7, 24, 48}) {
+      std::vector<std::vector<std::uint16_t>> table(static_cast<std::size_t>(count));
+      std::vector<const std::uint16_t*> rows;
+      std::vector<float> weights;
+      for (auto& row : table) {
+        row.resize(static_cast<std::size_t>(stride));
+        for (auto& h : row) h = float_to_half(value(rng));
+        rows.push_back(row.data());
+        weights.push_back(weight(rng));
+      }
+      std::vector<float> out(static_cast<std::size_t>(stride), -1.0f);
+      sum_rows(rows.data(), weights.data(), count, stride, out.data());
+      for (int i = 0; i < stride; ++i) {
+        float expected = 0.0f;
+        for (int k = 0; k < count; ++k)
+          expected = std::fma(weights[k], half_to_float(rows[k][i]), expected);
+        ASSERT_EQ(out[i], expected) << "stride " << stride << " rows " << count << " lane " << i;
+      }
+    }
+  }
+}
+
 TEST(SpectralRows, WeightedSumOfFloatRows) {
   constexpr int kStride = 16;
   std::vector<float> a(kStride, 1.0f), b(kStride, 3.0f), out(kStride, -1.0f);
