@@ -161,14 +161,9 @@ template <std::size_t N, typename List>
 void gather_4d_same_texels(const std::array<const HalfTable4D*, N>& tables,
                            const std::array<double, N>& weights, const Coord4& c, List& list) {
   const HalfTable4D& layout = *tables[0];
-  const int r_index[2] = {c.r.i0, c.r.i1};
-  const double r_weight[2] = {1.0 - c.r.f, c.r.f};
-  const int mu_index[2] = {c.mu.i0, c.mu.i1};
-  const double mu_weight[2] = {1.0 - c.mu.f, c.mu.f};
-  const int ms_index[2] = {c.mu_s.i0, c.mu_s.i1};
-  const double ms_weight[2] = {1.0 - c.mu_s.f, c.mu_s.f};
-  const int nu_index[2] = {c.nu.i0, c.nu.i1};
-  const double nu_weight[2] = {1.0 - c.nu.f, c.nu.f};
+  const LookupCorners4 corners(c);
+  const auto& [r_index, r_weight, mu_index, mu_weight, ms_index, ms_weight, nu_index, nu_weight] =
+      corners;
   // The (r, mu) rows with a weight, in gather_4d's order, and the offsets of their (nu, mu_s)
   // texels.
   std::size_t row_index[4];

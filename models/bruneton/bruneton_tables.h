@@ -103,6 +103,29 @@ struct FixedRowList {
   void sum(int stride, float* out) const { sum_rows(rows, weights, count, stride, out); }
 };
 
+// The two neighbouring texel indices of each coordinate of a 4D lookup and their linear
+// interpolation weights (1 - f, f), as gather_4d() and its same-texel variant read them.
+struct LookupCorners4 {
+  int r_index[2];
+  double r_weight[2];
+  int mu_index[2];
+  double mu_weight[2];
+  int ms_index[2];
+  double ms_weight[2];
+  int nu_index[2];
+  double nu_weight[2];
+
+  explicit LookupCorners4(const Coord4& c)
+      : r_index{c.r.i0, c.r.i1},
+        r_weight{1.0 - c.r.f, c.r.f},
+        mu_index{c.mu.i0, c.mu.i1},
+        mu_weight{1.0 - c.mu.f, c.mu.f},
+        ms_index{c.mu_s.i0, c.mu_s.i1},
+        ms_weight{1.0 - c.mu_s.f, c.mu_s.f},
+        nu_index{c.nu.i0, c.nu.i1},
+        nu_weight{1.0 - c.nu.f, c.nu.f} {}
+};
+
 // Adds the (up to 16) texels of a 4D lookup at coordinates c, each weighted by its
 // interpolation weight times `weight` times its row scale. The table's sizes and pointers are
 // read into locals first: a row pointer stored into the list may alias them as far as the
@@ -117,14 +140,9 @@ void gather_4d(const HalfTable4D& table, const Coord4& c, double weight, List& l
   const auto res_nu = static_cast<std::size_t>(table.res_nu);
   const auto res_mu_s = static_cast<std::size_t>(table.res_mu_s);
   const auto stride = static_cast<std::size_t>(table.stride);
-  const int r_index[2] = {c.r.i0, c.r.i1};
-  const double r_weight[2] = {1.0 - c.r.f, c.r.f};
-  const int mu_index[2] = {c.mu.i0, c.mu.i1};
-  const double mu_weight[2] = {1.0 - c.mu.f, c.mu.f};
-  const int ms_index[2] = {c.mu_s.i0, c.mu_s.i1};
-  const double ms_weight[2] = {1.0 - c.mu_s.f, c.mu_s.f};
-  const int nu_index[2] = {c.nu.i0, c.nu.i1};
-  const double nu_weight[2] = {1.0 - c.nu.f, c.nu.f};
+  const LookupCorners4 corners(c);
+  const auto& [r_index, r_weight, mu_index, mu_weight, ms_index, ms_weight, nu_index, nu_weight] =
+      corners;
   for (int a = 0; a < 2; ++a) {
     if (r_weight[a] == 0.0) continue;
     for (int b = 0; b < 2; ++b) {
