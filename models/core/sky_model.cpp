@@ -159,10 +159,28 @@ SampleStatus sanitize(std::span<double> values) {
   return SampleStatus::ok;
 }
 
+// The wavelengths a model answers: a contiguous range [first, end) of the increasing grid,
+// found with the descriptor read once (no allocation, no virtual call per wavelength).
+struct AnsweredRange {
+  std::size_t first = 0;
+  std::size_t end = 0;
+};
+
+AnsweredRange answered_range(const ModelDescriptor& d, const WavelengthGrid& grid) {
+  AnsweredRange range{0, grid.size()};
+  while (range.first < range.end && !answers_wavelength(d, grid[range.first])) ++range.first;
+  while (range.end > range.first && !answers_wavelength(d, grid[range.end - 1])) --range.end;
+  return range;
+}
+
+// Values outside the answered range are 0, whatever the model computed there.
+void zero_outside(AnsweredRange range, std::span<double> values) {
+  std::fill(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(range.first), 0.0);
+  std::fill(values.begin() + static_cast<std::ptrdiff_t>(range.end), values.end(), 0.0);
+}
+
 void zero_out_of_range(const SkyModel& model, std::span<double> values) {
-  for (std::size_t w = 0; w < values.size(); ++w) {
-    if (!model.answers_wavelength(w)) values[w] = 0.0;
-  }
+  zero_outside(answered_range(model.descriptor(), model.wavelengths()), values);
 }
 
 }  // namespace
@@ -210,19 +228,11 @@ void SkyModel::sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
       out.status[index[k]] = partial.status[k];
     }
   }
-  // The wavelengths the model answers: a contiguous range [first, end) of the increasing grid,
-  // found with the descriptor read once (no allocation, no virtual call per wavelength). The
-  // others are 0 in every answered view.
-  const WavelengthGrid& grid = wavelengths();
-  std::size_t first = 0, end = n_wavelengths;
-  while (first < end && !clearsky::answers_wavelength(d, grid[first])) ++first;
-  while (end > first && !clearsky::answers_wavelength(d, grid[end - 1])) --end;
-  if (first > 0 || end < n_wavelengths) {
+  // The wavelengths the model does not answer are 0 in every answered view.
+  const AnsweredRange range = answered_range(d, wavelengths());
+  if (range.first > 0 || range.end < n_wavelengths) {
     for (std::size_t i = 0; i < views.size(); ++i) {
-      if (out.status[i] != SampleStatus::ok) continue;
-      auto spectrum = out.spectrum(i);
-      std::fill(spectrum.begin(), spectrum.begin() + static_cast<std::ptrdiff_t>(first), 0.0);
-      std::fill(spectrum.begin() + static_cast<std::ptrdiff_t>(end), spectrum.end(), 0.0);
+      if (out.status[i] == SampleStatus::ok) zero_outside(range, out.spectrum(i));
     }
   }
   // The usual batch: every value of every view finite and not negative, found by one pass over

@@ -86,27 +86,18 @@ ModelDescriptor make_descriptor() {
 // once per view, then accumulated into the grid wavelengths.
 class HosekSunState final : public SunState {
  public:
-  struct Contribution {
-    std::uint32_t term;
-    std::uint32_t wavelength;
-    double weight;
-  };
-
   explicit HosekSunState(const SunPosition& sun)
       : SunState(sun), sun_direction(sun.unit_vector()) {}
   std::size_t memory_bytes() const override {
-    return sizeof(*this) + distributions.memory_bytes() +
-           contributions.capacity() * sizeof(Contribution) +
-           sums.capacity() * sizeof(WavelengthSum);
+    return sizeof(*this) + distributions.memory_bytes() + sums.capacity() * sizeof(WavelengthSum);
   }
 
   std::size_t size() const { return distributions.size(); }
   std::uint32_t add(const hosek::Coefficients& c) { return distributions.add(c); }
 
-  // The contributions of one wavelength, which compute_sun_state() adds in turn (one or two):
-  // its radiance is (0 + first_weight f[first]) + second_weight f[second], the order in which
-  // adding each contribution to a zeroed spectrum sums them, kept in registers instead of
-  // stored and reloaded per contribution.
+  // The distributions one wavelength adds (one band, or two with their weights): its radiance is
+  // (0 + first_weight f[first]) + second_weight f[second], the order in which adding each band
+  // to a zeroed spectrum sums them, kept in registers instead of stored and reloaded per band.
   struct WavelengthSum {
     std::uint32_t wavelength;
     std::uint32_t first, second;
@@ -116,7 +107,6 @@ class HosekSunState final : public SunState {
 
   Vec3 sun_direction;  // once per sun, not per query
   hosek::Distributions distributions;
-  std::vector<Contribution> contributions;
   std::vector<WavelengthSum> sums;
 };
 
@@ -204,36 +194,36 @@ std::shared_ptr<const SunState> HosekModel::compute_sun_state(const SunPosition&
     return std::pair{state->add(config.coefficients), config.radiance_scale};
   };
   std::array<double, hosek::kBandCount> band_scale{};
+  auto& sums = state->sums;
   for (std::size_t i = 0; i < terms_.size(); ++i) {
     const WavelengthTerms& w = terms_[i];
     if (!w.in_range) continue;
-    const auto wavelength = static_cast<std::uint32_t>(i);
     for (int k = 0; k < 2; ++k) {
       const int band = w.band + k;
       const double weight = k == 0 ? 1.0 - w.fraction : w.fraction;
       if (k == 1 && !(w.fraction >= kSingleBand)) break;
+      std::uint32_t term = 0;
+      double term_weight = 0.0;
       if (native_bands_) {
         if (band_term[band] < 0) {
-          const auto [term, scale] = add_term(band, band_albedo_[band]);
-          band_term[band] = static_cast<int>(term);
+          const auto [added, scale] = add_term(band, band_albedo_[band]);
+          band_term[band] = static_cast<int>(added);
           band_scale[band] = scale;
         }
-        state->contributions.push_back({static_cast<std::uint32_t>(band_term[band]), wavelength,
-                                        weight * band_scale[band] * w.sky_correction});
+        term = static_cast<std::uint32_t>(band_term[band]);
+        term_weight = weight * band_scale[band] * w.sky_correction;
       } else {
-        const auto [term, scale] = add_term(band, w.albedo);
-        state->contributions.push_back({term, wavelength, weight * scale * w.sky_correction});
+        const auto [added, scale] = add_term(band, w.albedo);
+        term = added;
+        term_weight = weight * scale * w.sky_correction;
       }
-    }
-  }
-  for (const auto& c : state->contributions) {
-    auto& sums = state->sums;
-    if (!sums.empty() && sums.back().wavelength == c.wavelength && !sums.back().two) {
-      sums.back().second = c.term;
-      sums.back().second_weight = c.weight;
-      sums.back().two = true;
-    } else {
-      sums.push_back({c.wavelength, c.term, 0, c.weight, 0.0, false});
+      if (k == 0) {
+        sums.push_back({static_cast<std::uint32_t>(i), term, 0, term_weight, 0.0, false});
+      } else {
+        sums.back().second = term;
+        sums.back().second_weight = term_weight;
+        sums.back().two = true;
+      }
     }
   }
   return state;
