@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -33,42 +33,54 @@ void append_json_number(std::string& out, double value) {
   // round-trip (Dragonbox; fmt's public formatting lays them out unlike dump(), so its digit
   // generator is called directly: Debian's libfmt 9 exports it).
   const auto decimal = fmt::detail::dragonbox::to_decimal(value);
-  // Two digits a step (fmt::format_int: about a quarter fewer instructions than std::to_chars).
-  const fmt::format_int significand(decimal.significand);
-  const char* const digits = significand.data();
-  const char* const digits_end = digits + significand.size();
-  const int k = static_cast<int>(significand.size());
+  const std::uint64_t significand = decimal.significand;
+  const int k = fmt::detail::count_digits(significand);
   // The decimal point's position after the first digit: value = 0.d1d2...dk * 10^n.
   const int n = k + decimal.exponent;
+  // The digits are written two at a time straight to their place in the buffer (no copy of
+  // them afterwards): these numbers are most of a radiance answer's bytes.
+  const auto write_digits = [&](char* at) {
+    fmt::detail::format_decimal<char>(at, significand, k);
+  };
   // dump()'s layout (nlohmann's dtoa_impl::format_buffer, min_exp -4, max_exp 15).
   constexpr int min_exp = -4;
   constexpr int max_exp = 15;
   if (k <= n && n <= max_exp) {  // digits[000].0
-    p = std::copy(digits, digits_end, p);
-    p = std::fill_n(p, n - k, '0');
+    write_digits(p);
+    p += k;
+    for (int i = k; i < n; ++i) *p++ = '0';
     *p++ = '.';
     *p++ = '0';
-  } else if (0 < n && n <= max_exp) {  // dig.its
-    p = std::copy(digits, digits + n, p);
-    *p++ = '.';
-    p = std::copy(digits + n, digits_end, p);
+  } else if (0 < n && n <= max_exp) {  // dig.its: the first n digits move left for the point
+    write_digits(p + 1);
+    for (int i = 0; i < n; ++i) p[i] = p[i + 1];
+    p[n] = '.';
+    p += k + 1;
   } else if (min_exp < n && n <= 0) {  // 0.[000]digits
     *p++ = '0';
     *p++ = '.';
-    p = std::fill_n(p, -n, '0');
-    p = std::copy(digits, digits_end, p);
+    for (int i = 0; i < -n; ++i) *p++ = '0';
+    write_digits(p);
+    p += k;
   } else {  // d[.igits]e+XX, the exponent with at least two digits
-    *p++ = digits[0];
+    write_digits(p + 1);
+    p[0] = p[1];
     if (k > 1) {
-      *p++ = '.';
-      p = std::copy(digits + 1, digits_end, p);
+      p[1] = '.';
+      p += k + 1;
+    } else {
+      p += 1;
     }
     *p++ = 'e';
     int e = n - 1;
     *p++ = e < 0 ? '-' : '+';
     if (e < 0) e = -e;
-    if (e < 10) *p++ = '0';
-    p = std::to_chars(p, buffer.data() + buffer.size(), e).ptr;
+    if (e >= 100) {
+      *p++ = static_cast<char>('0' + e / 100);
+      e %= 100;
+    }
+    *p++ = static_cast<char>('0' + e / 10);
+    *p++ = static_cast<char>('0' + e % 10);
   }
   out.append(buffer.data(), p);
 }

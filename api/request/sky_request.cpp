@@ -236,9 +236,8 @@ ModelOnGrid model_on_wavelengths(const ModelProvider& provider, const ModelFacto
   if (wavelengths) {
     for (double w : *wavelengths) out.indices.push_back(grid.index_of(w));
   } else {
-    for (std::size_t i = 0; i < grid.size(); ++i) {
-      if (out.model->answers_wavelength(i)) out.indices.push_back(i);
-    }
+    const SkyModel::WavelengthRange answered = out.model->answered_wavelengths();
+    for (std::size_t i = answered.first; i < answered.end; ++i) out.indices.push_back(i);
   }
   if (out.indices.empty())
     throw cannot_answer("wavelengths", d.id, "no wavelength of the grid is in its spectral range");

@@ -159,13 +159,10 @@ SampleStatus sanitize(std::span<double> values) {
   return SampleStatus::ok;
 }
 
+using AnsweredRange = SkyModel::WavelengthRange;
+
 // The wavelengths a model answers: a contiguous range [first, end) of the increasing grid,
 // found with the descriptor read once (no allocation, no virtual call per wavelength).
-struct AnsweredRange {
-  std::size_t first = 0;
-  std::size_t end = 0;
-};
-
 AnsweredRange answered_range(const ModelDescriptor& d, const WavelengthGrid& grid) {
   AnsweredRange range{0, grid.size()};
   while (range.first < range.end && !answers_wavelength(d, grid[range.first])) ++range.first;
@@ -180,10 +177,14 @@ void zero_outside(AnsweredRange range, std::span<double> values) {
 }
 
 void zero_out_of_range(const SkyModel& model, std::span<double> values) {
-  zero_outside(answered_range(model.descriptor(), model.wavelengths()), values);
+  zero_outside(model.answered_wavelengths(), values);
 }
 
 }  // namespace
+
+SkyModel::WavelengthRange SkyModel::answered_wavelengths() const {
+  return answered_range(descriptor(), wavelengths());
+}
 
 void SkyModel::sky_radiance(const SunState& sun, const Viewpoint& viewpoint,
                             std::span<const ViewDirection> views, SpectralBatch& out) const {

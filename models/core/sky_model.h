@@ -105,6 +105,13 @@ class SkyModel {
   // Whether wavelength i of wavelengths() lies in the descriptor's spectral range. Values at
   // other wavelengths are 0 and must be reported as wavelength_out_of_range by callers.
   bool answers_wavelength(std::size_t i) const;
+  // The wavelengths answered, as indices [first, end) of wavelengths(): contiguous, since the
+  // grid increases (empty when none is in range).
+  struct WavelengthRange {
+    std::size_t first = 0;
+    std::size_t end = 0;
+  };
+  WavelengthRange answered_wavelengths() const;
   // Bytes held by the precomputed tables.
   virtual std::size_t table_bytes() const { return 0; }
 

@@ -9,7 +9,11 @@
 
 namespace clearsky {
 
-WavelengthGrid WavelengthGrid::paper_bins() { return bins(360.0, 11.75, 40); }
+WavelengthGrid WavelengthGrid::paper_bins() {
+  // Every default ModelConfig starts from this grid (one per request): made once, copied after.
+  static const WavelengthGrid grid = bins(360.0, 11.75, 40);
+  return grid;
+}
 
 WavelengthGrid WavelengthGrid::bins(double start_nm, double width_nm, std::size_t count) {
   if (!(std::isfinite(start_nm) && start_nm > 0.0)) {

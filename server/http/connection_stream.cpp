@@ -219,17 +219,27 @@ bool ConnectionStream::is_writable() const {
 }
 
 void ConnectionStream::get_remote_ip_and_port(std::string& ip, int& port) const {
-  sockaddr_storage address{};
-  socklen_t length = sizeof address;
-  if (::getpeername(sock_, reinterpret_cast<sockaddr*>(&address), &length) == 0)
-    ip_and_port(address, length, ip, port);
+  if (!remote_.known) {
+    sockaddr_storage address{};
+    socklen_t length = sizeof address;
+    if (::getpeername(sock_, reinterpret_cast<sockaddr*>(&address), &length) == 0)
+      ip_and_port(address, length, remote_.ip, remote_.port);
+    remote_.known = true;
+  }
+  ip = remote_.ip;
+  port = remote_.port;
 }
 
 void ConnectionStream::get_local_ip_and_port(std::string& ip, int& port) const {
-  sockaddr_storage address{};
-  socklen_t length = sizeof address;
-  if (::getsockname(sock_, reinterpret_cast<sockaddr*>(&address), &length) == 0)
-    ip_and_port(address, length, ip, port);
+  if (!local_.known) {
+    sockaddr_storage address{};
+    socklen_t length = sizeof address;
+    if (::getsockname(sock_, reinterpret_cast<sockaddr*>(&address), &length) == 0)
+      ip_and_port(address, length, local_.ip, local_.port);
+    local_.known = true;
+  }
+  ip = local_.ip;
+  port = local_.port;
 }
 
 socket_t ConnectionStream::socket() const { return sock_; }

@@ -96,6 +96,14 @@ class ConnectionStream final : public httplib::Stream {
   std::size_t answer_bytes_ = 0;
   // The answer's head, not sent yet (see the class comment).
   std::string held_head_;
+  // The connection's two addresses, asked of the kernel once: cpp-httplib asks for both on every
+  // request, two system calls and two getnameinfo(3) each time on a keep-alive connection.
+  struct Address {
+    bool known = false;
+    std::string ip;
+    int port = 0;
+  };
+  mutable Address remote_, local_;
 };
 
 }  // namespace clearsky::server
