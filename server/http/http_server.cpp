@@ -2,6 +2,7 @@
 // routes, error handling, access log and metrics of the HTTP server.
 #include "server/http/http_server.h"
 
+#include <fmt/compile.h>
 #include <httplib.h>
 #include <spdlog/sinks/stdout_sinks.h>
 #include <spdlog/spdlog.h>
@@ -177,7 +178,7 @@ void answer_last_resort(httplib::Response& res) noexcept {
   }
 }
 
-std::shared_ptr<spdlog::logger> access_logger() {
+const std::shared_ptr<spdlog::logger>& access_logger() {
   static std::shared_ptr<spdlog::logger> logger = [] {
     auto existing = spdlog::get("access");
     if (existing) return existing;
@@ -514,10 +515,18 @@ void HttpServer::install() {
         std::chrono::duration<double>(Clock::now() - current_request.start).count();
     const std::string endpoint(current_request.endpoint);
     metrics_.observe_request(endpoint, current_request.model, res.status, seconds);
-    access_logger()->info(
-        R"({{"remote":"{}","method":"{}","path":"{}","status":{},"bytes":{},"ms":{:.3f},"model":"{}","endpoint":"{}"}})",
-        req.remote_addr, req.method, req.path, res.status, res.body.size(), seconds * 1e3,
-        current_request.model, endpoint);
+    const std::shared_ptr<spdlog::logger>& log = access_logger();
+    if (log->should_log(spdlog::level::info)) {
+      // The line's layout compiled (FMT_COMPILE) rather than parsed on every request.
+      fmt::memory_buffer line;
+      fmt::format_to(
+          std::back_inserter(line),
+          FMT_COMPILE(
+              R"({{"remote":"{}","method":"{}","path":"{}","status":{},"bytes":{},"ms":{:.3f},"model":"{}","endpoint":"{}"}})"),
+          req.remote_addr, req.method, req.path, res.status, res.body.size(), seconds * 1e3,
+          current_request.model, endpoint);
+      log->info(std::string_view(line.data(), line.size()));
+    }
     // A request that never reaches pre-routing (a bad request line) must not inherit this one.
     current_request = {Clock::now(), {}, {}, "other", false, false};
   });
