@@ -13,6 +13,7 @@
 #include "models/oneal/oneal_functions.h"
 #include "models/registry.h"
 #include "tests/models/support/sky_properties.h"
+#include "tests/support/sanitizers.h"
 
 namespace clearsky {
 namespace {
@@ -102,6 +103,7 @@ TEST(ONeal, ContinuousAcrossTheHorizon) {
 }
 
 TEST(ONeal, ConvergesTowardsTheReferenceWithMoreSamples) {
+  CLEARSKY_SKIP_REFINEMENT_UNDER_SANITIZERS();
   // 4 samples miss the dense lowest kilometres (the first is 7.5 km up a zenith view): the
   // radiance is far too low, as the paper reports ("underestimates by a factor of about 3"
   // with respect to the measurements); with many samples only the Chapman approximation's

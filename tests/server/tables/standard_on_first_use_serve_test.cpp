@@ -13,6 +13,7 @@
 
 #include "tests/server/http/hostile_clients.h"
 #include "tests/server/http/watched_serve_process.h"
+#include "tests/support/sanitizers.h"
 
 namespace clearsky::server {
 namespace {
@@ -51,6 +52,10 @@ TEST(StandardOnFirstUseServe, MeasuredAerosolsIsAnsweredFromItsDraftThenFromItsS
   const std::string standard = nlohmann::json::parse(
       building->body)["models"]["measured_aerosols"]["levels"]["standard"]["status"];
   EXPECT_NE(standard, "not_built") << building->body;
+  // In the sanitizer tree the standard build (Bruneton's engine at the paper's resolution, every
+  // load instrumented, -O1) took over ten minutes of the 2-core run: there the test ends once the
+  // build has started, and the Release pass waits for its answer below.
+  if (clearsky::testing::kAddressSanitizer) return;
 
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(800);
   std::string served = "draft";
