@@ -218,28 +218,25 @@ bool ConnectionStream::is_writable() const {
   return true;
 }
 
-void ConnectionStream::get_remote_ip_and_port(std::string& ip, int& port) const {
-  if (!remote_.known) {
-    sockaddr_storage address{};
-    socklen_t length = sizeof address;
-    if (::getpeername(sock_, reinterpret_cast<sockaddr*>(&address), &length) == 0)
-      ip_and_port(address, length, remote_.ip, remote_.port);
-    remote_.known = true;
+void ConnectionStream::known_address(Address& address, AskAddress ask, std::string& ip,
+                                     int& port) const {
+  if (!address.known) {
+    sockaddr_storage storage{};
+    socklen_t length = sizeof storage;
+    if (ask(sock_, reinterpret_cast<sockaddr*>(&storage), &length) == 0)
+      ip_and_port(storage, length, address.ip, address.port);
+    address.known = true;
   }
-  ip = remote_.ip;
-  port = remote_.port;
+  ip = address.ip;
+  port = address.port;
+}
+
+void ConnectionStream::get_remote_ip_and_port(std::string& ip, int& port) const {
+  known_address(remote_, ::getpeername, ip, port);
 }
 
 void ConnectionStream::get_local_ip_and_port(std::string& ip, int& port) const {
-  if (!local_.known) {
-    sockaddr_storage address{};
-    socklen_t length = sizeof address;
-    if (::getsockname(sock_, reinterpret_cast<sockaddr*>(&address), &length) == 0)
-      ip_and_port(address, length, local_.ip, local_.port);
-    local_.known = true;
-  }
-  ip = local_.ip;
-  port = local_.port;
+  known_address(local_, ::getsockname, ip, port);
 }
 
 socket_t ConnectionStream::socket() const { return sock_; }

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <httplib.h>
+#include <sys/socket.h>
 #include <sys/uio.h>
 
 #include <chrono>
@@ -104,6 +105,10 @@ class ConnectionStream final : public httplib::Stream {
     int port = 0;
   };
   mutable Address remote_, local_;
+  // getpeername(2) or getsockname(2).
+  using AskAddress = int (*)(int, sockaddr*, socklen_t*);
+  // The address, asked of the kernel with ask on the first call.
+  void known_address(Address& address, AskAddress ask, std::string& ip, int& port) const;
 };
 
 }  // namespace clearsky::server
