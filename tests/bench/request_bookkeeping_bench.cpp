@@ -8,8 +8,12 @@
 #include <prometheus/counter.h>
 #include <prometheus/registry.h>
 
+#include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
+#include "api/encode/json_text.h"
 #include "api/handlers/handlers.h"
 #include "api/http/cache_policy.h"
 #include "api/routes/route_match.h"
@@ -57,6 +61,43 @@ void BM_Metrics_FamilyAddEveryRequest_Baseline(benchmark::State& state) {
         .Increment();
 }
 BENCHMARK(BM_Metrics_FamilyAddEveryRequest_Baseline);
+
+// The 31 radiance values of a Hosek answer (W/(m2.sr.nm), 17 significant digits as most are),
+// written as JSON numbers: the answer's text writer (api/encode/json_text.h) against
+// nlohmann-json's dump() of the same array, the DOM path it replaced.
+const std::vector<double>& radiance_like_values() {
+  static const std::vector<double> values = {
+      0.11102259823667522,  0.09957851136712426,  0.08858210001615695,  0.11865449378731069,
+      0.13220523888205976,  0.11731941379877553,  0.11241662357336954,  0.12112001627587615,
+      0.11557380254563465,  0.10541053884078566,  0.09500530134525775,  0.08892103447891254,
+      0.081765132529082,    0.07186786504074857,  0.06988328278328704,  0.06555209663433992,
+      0.06145173151295879,  0.05620683346761806,  0.05272055610000907,  0.047299443147099024,
+      0.043210762372330846, 0.039169021032813216, 0.036442255872816506, 0.033425870021094414,
+      0.03050255962723888,  0.027434850537733417, 0.02580709268588639,  0.023380546114338104,
+      0.02193121036292181,  0.021100465819618233, 0.02050840965035823};
+  return values;
+}
+
+void BM_JsonNumbers_RadianceSpectrum(benchmark::State& state) {
+  std::string out;
+  out.reserve(1024);
+  for (auto _ : state) {
+    out.clear();
+    api::append_json_number_array(out, radiance_like_values());
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() *
+                          static_cast<std::int64_t>(radiance_like_values().size()));
+}
+BENCHMARK(BM_JsonNumbers_RadianceSpectrum);
+
+void BM_JsonNumbers_RadianceSpectrum_NlohmannDump_Baseline(benchmark::State& state) {
+  const nlohmann::json array = radiance_like_values();
+  for (auto _ : state) benchmark::DoNotOptimize(array.dump());
+  state.SetItemsProcessed(state.iterations() *
+                          static_cast<std::int64_t>(radiance_like_values().size()));
+}
+BENCHMARK(BM_JsonNumbers_RadianceSpectrum_NlohmannDump_Baseline);
 
 // GET /v1/radiance of one view on Preetham's 40 bins, as a server answers it (the HTTP
 // transport aside). Whether a standard answer could come from the draft tables was decided by
